@@ -1,0 +1,47 @@
+// cdref/book/common.hpp - small helpers shared by the chapter's algorithms.
+#pragma once
+
+#include "../number_traits.hpp"
+#include "../primitives.hpp"
+#include "../results.hpp"
+#include "../vec.hpp"
+
+namespace cdref::book::detail {
+
+template <class S>
+S max_of(const S& a, const S& b) {
+  return a < b ? b : a;
+}
+
+template <class S>
+S min_of(const S& a, const S& b) {
+  return b < a ? b : a;
+}
+
+// v / k component-wise, v over T lifted to S.
+template <class S, class T>
+Vec3<S> divided(const Vec3<T>& v, const S& k) {
+  return Vec3<S>(S(v[0]) / k, S(v[1]) / k, S(v[2]) / k);
+}
+
+// The index of the coordinate of v with the smallest absolute value (first on ties).
+template <class T>
+int smallest_abs_axis(const Vec3<T>& v) {
+  int best = 0;
+  T best_abs = v[0] < T(0) ? T(-v[0]) : T(v[0]);
+  for (int i = 1; i < 3; ++i) {
+    T a = v[i] < T(0) ? T(-v[i]) : T(v[i]);
+    if (a < best_abs) {
+      best = i;
+      best_abs = a;
+    }
+  }
+  return best;
+}
+
+template <class T>
+bool is_zero(const Vec3<T>& v) {
+  return v[0] == T(0) && v[1] == T(0) && v[2] == T(0);
+}
+
+}  // namespace cdref::book::detail

@@ -1,0 +1,144 @@
+// cdref/primitives.hpp - the chapter's primitives as plain structs over a number type T,
+// and the checks that reject input outside a query's domain.
+//
+//   Sphere<T>      centre c, radius rho >= 0 (rho = 0 is a point).
+//   Box<T>         axis-aligned, centre-extent: [c - h, c + h], h >= 0 (a zero extent is a
+//                  flat box).
+//   MinMaxBox<T>   axis-aligned, min-max: [p, q], p <= q. to_min_max / to_center_extent
+//                  convert (exactly at exact types; with rounding at float types).
+//   Segment<T>     the chapter's "ray" s->t: points s + lambda (t - s), lambda in [0, 1].
+//                  s = t is allowed (a point).
+//   Ray<T>         the infinite ray: points s + lambda d, lambda >= 0, d != 0. The chapter
+//                  takes d of unit length; cdref accepts any nonzero d, and lambda is then
+//                  measured in units of |d|.
+//
+// The algorithms follow the chapter in working in the local coordinates of the sphere
+// or box (its centre at the origin); the structs place it anywhere in space, and a
+// query subtracts the centre first.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "error.hpp"
+#include "number_traits.hpp"
+#include "vec.hpp"
+
+namespace cdref {
+
+template <class T>
+struct Sphere {
+  Vec3<T> center;
+  T radius;
+};
+
+template <class T>
+struct Box {
+  Vec3<T> center;
+  Vec3<T> extent;
+};
+
+template <class T>
+struct MinMaxBox {
+  Vec3<T> min;
+  Vec3<T> max;
+};
+
+template <class T>
+struct Segment {
+  Vec3<T> source;
+  Vec3<T> target;
+};
+
+template <class T>
+struct Ray {
+  Vec3<T> source;
+  Vec3<T> direction;
+};
+
+template <class T>
+MinMaxBox<T> to_min_max(const Box<T>& b) {
+  return {Vec3<T>(b.center - b.extent), Vec3<T>(b.center + b.extent)};
+}
+
+template <class T>
+Box<T> to_center_extent(const MinMaxBox<T>& b) {
+  Vec3<T> c, h;
+  for (int i = 0; i < 3; ++i) {
+    c[i] = (b.min[i] + b.max[i]) / T(2);
+    h[i] = (b.max[i] - b.min[i]) / T(2);
+  }
+  return {c, h};
+}
+
+// ---------------------------------------------------------------------------
+// Input checks. Each throws cdref::invalid_input naming the argument, the field
+// and the offending value.
+namespace detail {
+
+template <class T>
+std::string show(const T& x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", number_traits<T>::to_double(x));
+  return buf;
+}
+
+inline const char* axis_name(int i) { return i == 0 ? "x" : (i == 1 ? "y" : "z"); }
+
+template <class T>
+void check_finite(const T& x, const std::string& what) {
+  if (!number_traits<T>::is_finite(x))
+    throw invalid_input(what + " is not finite (" + show(x) + ")");
+}
+
+template <class T>
+void check_finite(const Vec3<T>& v, const std::string& what) {
+  for (int i = 0; i < 3; ++i)
+    if (!number_traits<T>::is_finite(v[i]))
+      throw invalid_input(what + " has a non-finite " + axis_name(i) + " coordinate (" + show(v[i]) + ")");
+}
+
+}  // namespace detail
+
+template <class T>
+void check(const Sphere<T>& s, const std::string& name = "sphere") {
+  detail::check_finite(s.center, name + " centre");
+  detail::check_finite(s.radius, name + " radius");
+  if (s.radius < T(0)) throw invalid_input(name + " radius is negative (" + detail::show(s.radius) + ")");
+}
+
+template <class T>
+void check(const Box<T>& b, const std::string& name = "box") {
+  detail::check_finite(b.center, name + " centre");
+  detail::check_finite(b.extent, name + " extent");
+  for (int i = 0; i < 3; ++i)
+    if (b.extent[i] < T(0))
+      throw invalid_input(name + " extent is negative along " + detail::axis_name(i) + " (" +
+                          detail::show(b.extent[i]) + ")");
+}
+
+template <class T>
+void check(const MinMaxBox<T>& b, const std::string& name = "box") {
+  detail::check_finite(b.min, name + " min corner");
+  detail::check_finite(b.max, name + " max corner");
+  for (int i = 0; i < 3; ++i)
+    if (b.max[i] < b.min[i])
+      throw invalid_input(name + " is inverted along " + detail::axis_name(i) + " (min " +
+                          detail::show(b.min[i]) + " > max " + detail::show(b.max[i]) + ")");
+}
+
+template <class T>
+void check(const Segment<T>& s, const std::string& name = "segment") {
+  detail::check_finite(s.source, name + " source");
+  detail::check_finite(s.target, name + " target");
+}
+
+template <class T>
+void check(const Ray<T>& r, const std::string& name = "ray") {
+  detail::check_finite(r.source, name + " source");
+  detail::check_finite(r.direction, name + " direction");
+  if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0))
+    throw invalid_input(name + " direction is the zero vector");
+}
+
+}  // namespace cdref

@@ -1,0 +1,69 @@
+// cdref/results.hpp - what the queries return, and how a caller asks for only part of it.
+//
+// S is the type of a value that may contain a square root: sqrt_t<T> for the sphere
+// queries, T itself for the box queries (they need only divisions).
+#pragma once
+
+#include <cstdint>
+
+#include "vec.hpp"
+
+namespace cdref {
+
+// Which quantities a query computes. A field that is not asked for is left at zero;
+// `hit` / `intersect` is always computed.
+enum want : std::uint32_t {
+  want_lambda_enter = 1u << 0,
+  want_lambda_exit = 1u << 1,
+  want_point = 1u << 2,
+  want_normal = 1u << 3,
+  want_distance = 1u << 4,
+  want_depth = 1u << 5,
+  want_witnesses = 1u << 6,
+  want_closest = 1u << 7,
+  want_cast = want_lambda_enter | want_lambda_exit | want_point | want_normal,
+  want_proximity = want_distance | want_depth | want_witnesses | want_closest,
+  want_all = 0xffu,
+};
+
+// A ray cast (segment s->t, lambda in [0,1]; or infinite ray, lambda >= 0).
+//   hit          the cast meets the closed solid;
+//   enters       the cast crosses the boundary into the solid at `point` (false when the
+//                source already lies in the solid: then lambda_enter = 0, point = source
+//                and normal = 0);
+//   lambda_enter smallest lambda in the solid;
+//   lambda_exit  largest lambda in the solid (for an infinite ray that leaves the box
+//                nowhere it stays `unbounded_exit`);
+//   point        source + lambda_enter * direction, in world coordinates;
+//   normal       outward unit normal of the boundary at `point` when `enters`, else 0.
+template <class S>
+struct Cast {
+  bool hit = false;
+  bool enters = false;
+  bool unbounded_exit = false;
+  S lambda_enter = S(0);
+  S lambda_exit = S(0);
+  Vec3<S> point = zero_vec<S>();
+  Vec3<S> normal = zero_vec<S>();
+};
+
+// A proximity query on a pair (A, B).
+//   intersect    A and B share a point (closed sets);
+//   distance     max(min |a - b|, 0) over a in A, b in B;
+//   depth        penetration depth: the length of the shortest translation that
+//                separates them (0 when they do not intersect);
+//   on_a, on_b   witness points: for a nonzero distance the closest pair, for a nonzero
+//                depth the pair whose difference is the penetration vector;
+//   closest      (segment-sphere, sphere-box) the point of the segment / box closest to
+//                the sphere's centre, which the chapter's test is built on.
+template <class S>
+struct Proximity {
+  bool intersect = false;
+  S distance = S(0);
+  S depth = S(0);
+  Vec3<S> on_a = zero_vec<S>();
+  Vec3<S> on_b = zero_vec<S>();
+  Vec3<S> closest = zero_vec<S>();
+};
+
+}  // namespace cdref
