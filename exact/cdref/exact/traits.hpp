@@ -13,6 +13,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Lazy_exact_nt.h>
+#include <gmpxx.h>
 #include <mpfr.h>
 
 #include <boost/multiprecision/gmp.hpp>
@@ -30,14 +31,20 @@ using Rational = CGAL::Gmpq;
 using LazyRational = CGAL::Epeck::FT;
 using Real = CORE::Expr;
 
-// Exact copies of rationals into MPFR (rounded to the target's precision, nearest).
-inline void set_mpfr(mpfr_t out, const CGAL::Gmpq& q) { mpfr_set_q(out, q.mpq(), MPFR_RNDN); }
-inline void set_mpfr(mpfr_t out, const boost::multiprecision::mpq_rational& q) {
-  mpfr_set_q(out, q.backend().data(), MPFR_RNDN);
-}
+// The GMP rational behind each exact rational type (Epeck::FT's exact type is gmpxx's
+// mpq_class when CGAL is built with gmpxx, Boost's mpq_rational otherwise).
+inline mpq_srcptr mpq_of(const CGAL::Gmpq& q) { return q.mpq(); }
+inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
+inline mpq_srcptr mpq_of(const boost::multiprecision::mpq_rational& q) { return q.backend().data(); }
 template <class ET>
-void set_mpfr(mpfr_t out, const CGAL::Lazy_exact_nt<ET>& q) {
-  set_mpfr(out, q.exact());
+mpq_srcptr mpq_of(const CGAL::Lazy_exact_nt<ET>& q) {
+  return mpq_of(q.exact());
+}
+
+// A rational into MPFR, rounded to nearest at the target's precision.
+template <class T>
+void set_mpfr(mpfr_t out, const T& q) {
+  mpfr_set_q(out, mpq_of(q), MPFR_RNDN);
 }
 
 // A guess for a + b sqrt(d), from a 256-bit MPFR evaluation.

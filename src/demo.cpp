@@ -1,0 +1,1 @@
+int run_demo() { return 0; }
