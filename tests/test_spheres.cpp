@@ -73,8 +73,8 @@ std::vector<SphereCast> ray_sphere_cases() {
   add(unit, {"target on the sphere", {-3, 0, 0}, {-1, 0, 0}, false, true, true, Q(1), Q(1), D3{-1, 0, 0}});
   add(unit, {"segment too short", {-3, 0, 0}, {-2, 0, 0}, false, false});
   add(unit, {"segment pointing away", {2, 0, 0}, {3, 0, 0}, false, false});
-  add(unit, {"zero-length segment inside", {0.5, 0, 0}, {0.5, 0, 0}, false, true, false, Q(0), Q(0)});
-  add(unit, {"zero-length segment on the sphere", {0, 1, 0}, {0, 1, 0}, false, true, false, Q(0), Q(0)});
+  add(unit, {"zero-length segment inside", {0.5, 0, 0}, {0.5, 0, 0}, false, true, false, Q(0), Q(1)});
+  add(unit, {"zero-length segment on the sphere", {0, 1, 0}, {0, 1, 0}, false, true, false, Q(0), Q(1)});
   add(unit, {"zero-length segment outside", {0, 1, 1}, {0, 1, 1}, false, false});
   add(sph(0, 0, 0, 0), {"point sphere on the line", {-1, 0, 0}, {1, 0, 0}, false, true, true, "1/2", "1/2",
                         D3{0, 0, 0}});

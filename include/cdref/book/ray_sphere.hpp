@@ -29,7 +29,8 @@
 //     lambda_enter = lambda_exit = 0 and enters = false;
 //   - tangent line: lambda_1 = lambda_2, a touching hit when it lies in range;
 //   - zero-length segment (s = t, where the listing would divide by 0): a point test,
-//     hit iff |s| <= rho, lambda_enter = lambda_exit = 0, enters = false;
+//     hit iff |s| <= rho; then every lambda in [0,1] gives that point, so
+//     lambda_enter = 0, lambda_exit = 1 (as Algorithm 3.3 gives for a box), enters = false;
 //   - rho = 0: the sphere is a point; the normal is left at 0.
 #pragma once
 
@@ -66,6 +67,7 @@ Cast<sqrt_t<T>> cast_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const Sphe
   const T rho2 = rho * rho;
   if (rr == T(0)) {  // a zero-length segment: a point
     res.hit = ss <= rho2;
+    if (res.hit && (w & want_lambda_exit)) res.lambda_exit = S(1);
     if (res.hit && (w & want_point)) res.point = lift<S>(Vec3<T>(s + sp.center));
     return res;
   }
