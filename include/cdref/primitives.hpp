@@ -78,8 +78,10 @@ namespace detail {
 
 template <class T>
 std::string show(const T& x) {
+  const double d = number_traits<T>::to_double(x);
+  if (d != d) return "nan";  // whatever the sign bit of the NaN
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", number_traits<T>::to_double(x));
+  std::snprintf(buf, sizeof buf, "%.17g", d);
   return buf;
 }
 
