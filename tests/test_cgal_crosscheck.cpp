@@ -310,6 +310,19 @@ D3 far_from(Rng& r, const D3& c) {
   const D3 u = unit_dir(r);
   return c + dist * u;
 }
+
+// The far end of a segment from s aimed at `aim`: ending there, running on past it by
+// its own length, or stopping a hair (1e-12 to 1e-9 of its length) beyond it.
+D3 end_near_aim(Rng& r, const D3& s, const D3& aim) {
+  switch (irand(r, 0, 2)) {
+    case 0:
+      return aim;
+    case 1:
+      return aim + (aim - s);
+    default:
+      return aim + uni(r, 1e-12, 1e-9) * (aim - s);
+  }
+}
 // c + g rho u with g in [0.9, 1.1]: a point near the sphere (c, rho).
 D3 near_surface(Rng& r, const D3& c, double rho) {
   const double g = uni(r, 0.9, 1.1);
@@ -563,18 +576,7 @@ std::vector<Family<SegS>> segment_sphere_families() {
          const double rho = uni(r, 0.5, 2);
          const D3 s = far_from(r, c);
          const D3 aim = near_surface(r, c, rho);
-         D3 t;
-         switch (irand(r, 0, 2)) {
-           case 0:
-             t = aim;
-             break;
-           case 1:
-             t = aim + (aim - s);
-             break;
-           default:
-             t = aim + uni(r, 1e-12, 1e-9) * (aim - s);
-             break;
-         }
+         const D3 t = end_near_aim(r, s, aim);
          return one_in(r, 2) ? SegS{{s, t}, {c, rho}} : SegS{{t, s}, {c, rho}};
        }},
   };
@@ -735,18 +737,7 @@ std::vector<Family<SegB>> segment_box_families() {
          const D3 h = uvec(r, 0.1, 2);
          const D3 s = far_from(r, c);
          const D3 aim = c + D3(uvec(r, -1.2, 1.2).cwiseProduct(h));
-         D3 t;
-         switch (irand(r, 0, 2)) {
-           case 0:
-             t = aim;
-             break;
-           case 1:
-             t = aim + (aim - s);
-             break;
-           default:
-             t = aim + uni(r, 1e-12, 1e-9) * (aim - s);
-             break;
-         }
+         const D3 t = end_near_aim(r, s, aim);
          return one_in(r, 2) ? SegB{{s, t}, {c, h}} : SegB{{t, s}, {c, h}};
        }},
   };
