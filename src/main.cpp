@@ -1,14 +1,274 @@
 // src/main.cpp - the cdref command line.
+//
+//   cdref                       the default campaign (every query, book at float and double)
+//   cdref campaign [options]    a campaign; see `cdref help`
+//   cdref merge FILE...         merge shard results into the unsharded result
+//   cdref describe              queries, their columns, families and scales
+//   cdref demo                  a few hard cases side by side with the exact answer
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "report.hpp"
 
 int run_demo();
 
-int main() {
+namespace {
+
+using namespace cdref;
+using namespace cdref::fuzz;
+
+const char* usage = R"(usage:
+  cdref                          run the default campaign and print the findings
+  cdref campaign [options]       run a campaign
+      --query Q        a query (repeatable; default: all; see `cdref describe`)
+      --family F       a family (repeatable; default: all of each query)
+      --scale K        a scale of the family (repeatable; default: all)
+      --impl I         book-float, book-double (repeatable; default: both)
+      --n N            cases per (query, family, scale) cell (default 1000)
+      --seed S         the campaign seed (default 1)
+      --threads T      worker threads (default: hardware threads)
+      --shard k/N      run only the cases with index % N == k
+      --checkpoint F   write the results so far to F as the campaign goes
+      --resume         continue the campaign saved in --checkpoint F
+      --out F          write the results (mergeable text form) to F
+      --json F         write the results as JSON to F ("-" for standard output)
+      --csv F          write the results as CSV to F ("-" for standard output)
+      --quiet          no table
+  cdref merge [--out F] [--json F] [--csv F] FILE...
+                                 merge complete shard files of one campaign
+  cdref describe                 list queries, input and output columns, families and scales
+  cdref demo                     the chapter's algorithms beside the exact answer on hard cases
+)";
+
+struct Args {
+  std::vector<std::string> v;
+  std::size_t i = 0;
+  bool more() const { return i < v.size(); }
+  std::string next(const std::string& opt) {
+    if (i >= v.size()) throw std::invalid_argument(opt + " needs a value");
+    return v[i++];
+  }
+};
+
+std::uint64_t to_u64(const std::string& s, const std::string& opt) {
+  std::size_t pos = 0;
+  unsigned long long x = 0;
   try {
-    return run_demo();
+    x = std::stoull(s, &pos);
+  } catch (const std::exception&) {
+    pos = 0;
+  }
+  if (pos != s.size() || s.empty() || s[0] == '-')
+    throw std::invalid_argument(opt + " wants a nonnegative whole number, not '" + s + "'");
+  return x;
+}
+
+int to_int(const std::string& s, const std::string& opt) {
+  std::size_t pos = 0;
+  int x = 0;
+  try {
+    x = std::stoi(s, &pos);
+  } catch (const std::exception&) {
+    pos = 0;
+  }
+  if (pos != s.size() || s.empty()) throw std::invalid_argument(opt + " wants a whole number, not '" + s + "'");
+  return x;
+}
+
+void write_to(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+// A progress bar with rate and ETA on a terminal; nothing otherwise.
+struct Progress {
+  bool tty = isatty(2);
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  void operator()(double done, double total) const {
+    if (!tty) return;
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double frac = total > 0 ? done / total : 1;
+    const int width = 30, filled = int(frac * width);
+    const double eta = frac > 0 ? secs * (1 - frac) / frac : 0;
+    std::fprintf(stderr, "\r[%.*s%*s] %3.0f%%  %.0f blocks/s  ETA %.0fs ", filled,
+                 "##############################", width - filled, "", 100 * frac, secs > 0 ? done / secs : 0,
+                 eta);
+    if (done >= total) std::fprintf(stderr, "\n");
+  }
+};
+
+void emit(const Results& r, std::uint64_t seed, const std::string& out, const std::string& json,
+          const std::string& csv, bool quiet, const Spec* spec) {
+  if (!out.empty() && spec) write_to(out, serialize(*spec, r, total_items(*spec)));
+  if (!json.empty()) {
+    std::ostringstream s;
+    cli::write_json(s, r, seed);
+    write_to(json, s.str());
+  }
+  if (!csv.empty()) {
+    std::ostringstream s;
+    cli::write_csv(s, r);
+    write_to(csv, s.str());
+  }
+  if (!quiet) cli::print_table(std::cout, r, seed);
+}
+
+int campaign(Args& a, bool defaults) {
+  Spec spec;
+  spec.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::string out, json, csv;
+  bool quiet = false;
+  if (defaults) spec.n = 2500;  // about a minute on 2 cores
+  while (a.more()) {
+    const std::string opt = a.next("");
+    if (opt == "--query")
+      spec.queries.push_back(query_by_name(a.next(opt)));
+    else if (opt == "--family")
+      spec.families.push_back(a.next(opt));
+    else if (opt == "--scale")
+      spec.scales.push_back(to_int(a.next(opt), opt));
+    else if (opt == "--impl") {
+      spec.impls.push_back(a.next(opt));
+      implementation_by_name(spec.impls.back());
+    } else if (opt == "--n")
+      spec.n = to_u64(a.next(opt), opt);
+    else if (opt == "--seed")
+      spec.seed = to_u64(a.next(opt), opt);
+    else if (opt == "--threads")
+      spec.threads = int(to_u64(a.next(opt), opt));
+    else if (opt == "--shard") {
+      const std::string s = a.next(opt);
+      const auto slash = s.find('/');
+      if (slash == std::string::npos) throw std::invalid_argument("--shard wants k/N, not '" + s + "'");
+      spec.shard = to_int(s.substr(0, slash), opt);
+      spec.shards = to_int(s.substr(slash + 1), opt);
+    } else if (opt == "--checkpoint")
+      spec.checkpoint = a.next(opt);
+    else if (opt == "--resume")
+      spec.resume = true;
+    else if (opt == "--out")
+      out = a.next(opt);
+    else if (opt == "--json")
+      json = a.next(opt);
+    else if (opt == "--csv")
+      csv = a.next(opt);
+    else if (opt == "--quiet")
+      quiet = true;
+    else
+      throw std::invalid_argument("unknown option '" + opt + "' (see `cdref help`)");
+  }
+  if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
+  if (spec.queries.empty()) spec.queries = all_queries();
+  if (spec.impls.empty()) spec.impls = {"book-float", "book-double"};
+  Progress bar;
+  spec.progress = [&bar](double d, double t) { bar(d, t); };
+  if (defaults)
+    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms at float and\n"
+                 "double against the exact answer, "
+              << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  const Results r = run(spec);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  emit(r, spec.seed, out, json, csv, quiet, &spec);
+  std::uint64_t cases = 0;
+  for (const auto& [k, st] : r.cells) cases += st.n;
+  if (!quiet)
+    std::cout << "\n" << cases << " evaluations in " << secs << " s on " << spec.threads << " threads.\n";
+  return 0;
+}
+
+int merge(Args& a) {
+  std::string out, json, csv;
+  std::vector<Saved> shards;
+  while (a.more()) {
+    const std::string opt = a.next("");
+    if (opt == "--out")
+      out = a.next(opt);
+    else if (opt == "--json")
+      json = a.next(opt);
+    else if (opt == "--csv")
+      csv = a.next(opt);
+    else {
+      std::ifstream f(opt, std::ios::binary);
+      if (!f) throw std::runtime_error("cannot read " + opt);
+      std::stringstream ss;
+      ss << f.rdbuf();
+      shards.push_back(deserialize(ss.str(), opt));
+    }
+  }
+  const Results r = merge_shards(shards);
+  if (!out.empty()) {
+    // the merged result is the unsharded campaign's: shard 0 of 1, complete
+    std::string text;
+    {
+      std::ostringstream o;
+      o << "cdref-results 1\nfingerprint " << shards.front().fingerprint << "\nshard 0 1\nitems "
+        << shards.front().items_total << " " << shards.front().items_total << "\n";
+      text = o.str();
+    }
+    // reuse the cell records of serialize() by serialising through a spec-free path
+    Spec dummy;
+    std::string body = serialize(dummy, r, 0);
+    body = body.substr(body.find("\ncell ") == std::string::npos ? body.find("end\n") : body.find("\ncell ") + 1);
+    write_to(out, text + body);
+  }
+  emit(r, 0, "", json, csv, false, nullptr);
+  return 0;
+}
+
+int describe() {
+  for (Query q : all_queries()) {
+    const QueryInfo& qi = info(q);
+    std::cout << qi.name << ": " << qi.describe << "\n  inputs:";
+    for (const auto& c : qi.inputs) std::cout << " " << c;
+    std::cout << "\n  outputs: " << qi.cls_name << " (full query), " << qi.pred_name << " (predicate)";
+    for (std::size_t g = 0; g < qi.outputs.size(); ++g)
+      std::cout << ", " << qi.outputs[g] << (qi.widths[g] == 3 ? "[xyz]" : "");
+    std::cout << "\n  families:\n";
+    for (const Family& f : families(q)) {
+      std::cout << "    " << f.name << " (scales";
+      for (int k : f.scales) std::cout << " " << k;
+      std::cout << "): " << f.describe << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  Args a;
+  for (int i = 1; i < argc; ++i) a.v.push_back(argv[i]);
+  try {
+    if (!a.more()) return campaign(a, true);
+    const std::string cmd = a.next("");
+    if (cmd == "campaign") return campaign(a, false);
+    if (cmd == "merge") return merge(a);
+    if (cmd == "describe") return describe();
+    if (cmd == "demo") return run_demo();
+    if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+      std::cout << usage;
+      return 0;
+    }
+    throw std::invalid_argument("unknown command '" + cmd + "'");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "cdref: %s\n", e.what());
-    return 1;
+    std::fprintf(stderr, "cdref: %s\n%s", e.what(), std::strstr(e.what(), "unknown command") ? usage : "");
+    return 2;
   }
 }

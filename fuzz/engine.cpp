@@ -1,0 +1,480 @@
+// fuzz/engine.cpp - running a campaign: cells, work items, threads, statistics, shards,
+// checkpoints and their text form.
+#include <atomic>
+#include <bit>
+#include <cdref/error.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace cdref::fuzz {
+
+// ---- histogram ----
+int Histogram::bin_of(std::uint64_t d) {
+  if (d < 16) return int(d);
+  const int j = 63 - std::countl_zero(d);  // 4..63
+  const int sub = int((d >> (j - 3)) & 7);
+  return 16 + (j - 4) * 8 + sub;
+}
+std::uint64_t Histogram::lower_edge(int bin) {
+  if (bin < 16) return std::uint64_t(bin);
+  const int j = (bin - 16) / 8 + 4, sub = (bin - 16) % 8;
+  return std::uint64_t(8 + sub) << (j - 3);
+}
+std::uint64_t Histogram::total() const {
+  std::uint64_t t = 0;
+  for (auto c : count) t += c;
+  return t;
+}
+std::uint64_t Histogram::quantile(double q) const {
+  const std::uint64_t t = total();
+  if (t == 0) return 0;
+  // the smallest bin whose cumulative count reaches ceil(q t)
+  const std::uint64_t rank = std::max<std::uint64_t>(1, std::uint64_t(std::ceil(q * double(t))));
+  std::uint64_t cum = 0;
+  for (int b = 0; b < bins; ++b) {
+    cum += count[b];
+    if (cum >= rank) return lower_edge(b);
+  }
+  return lower_edge(bins - 1);
+}
+
+void Exemplar::offer(std::uint64_t m, std::uint64_t i, const Inputs& in, double g, double w) {
+  if (set && (m < metric || (m == metric && i >= index))) return;
+  set = true;
+  metric = m;
+  index = i;
+  inputs = in;
+  got = g;
+  want = w;
+}
+
+void CellStats::merge(const CellStats& o) {
+  n += o.n;
+  refused += o.refused;
+  cls_fp += o.cls_fp;
+  cls_fn += o.cls_fn;
+  pred_fp += o.pred_fp;
+  pred_fn += o.pred_fn;
+  cls_example.merge(o.cls_example);
+  pred_example.merge(o.pred_example);
+  for (int k = 0; k < max_values; ++k) {
+    for (int b = 0; b < Histogram::bins; ++b) out[k].hist.count[b] += o.out[k].hist.count[b];
+    out[k].nonfinite += o.out[k].nonfinite;
+    out[k].worst.merge(o.out[k].worst);
+  }
+}
+
+void Results::merge(const Results& o) {
+  for (const auto& [k, v] : o.cells) cells[k].merge(v);
+}
+
+namespace {
+bool same(const Exemplar& a, const Exemplar& b) {
+  if (a.set != b.set) return false;
+  if (!a.set) return true;
+  return a.metric == b.metric && a.index == b.index && a.inputs == b.inputs &&
+         std::bit_cast<std::uint64_t>(a.got) == std::bit_cast<std::uint64_t>(b.got) &&
+         std::bit_cast<std::uint64_t>(a.want) == std::bit_cast<std::uint64_t>(b.want);
+}
+}  // namespace
+
+bool Results::operator==(const Results& o) const {
+  if (cells.size() != o.cells.size()) return false;
+  for (auto a = cells.begin(), b = o.cells.begin(); a != cells.end(); ++a, ++b) {
+    if (!(a->first == b->first)) return false;
+    const CellStats &x = a->second, &y = b->second;
+    if (x.n != y.n || x.refused != y.refused || x.cls_fp != y.cls_fp || x.cls_fn != y.cls_fn ||
+        x.pred_fp != y.pred_fp || x.pred_fn != y.pred_fn || !same(x.cls_example, y.cls_example) ||
+        !same(x.pred_example, y.pred_example))
+      return false;
+    for (int k = 0; k < max_values; ++k)
+      if (x.out[k].hist.count != y.out[k].hist.count || x.out[k].nonfinite != y.out[k].nonfinite ||
+          !same(x.out[k].worst, y.out[k].worst))
+        return false;
+  }
+  return true;
+}
+
+std::uint64_t ulp_distance(double a, double b, int precision) {
+  if (a == 0) a = 0;  // -0 and +0 are one value
+  if (b == 0) b = 0;
+  std::uint64_t ka, kb;
+  if (precision == 24) {
+    const std::uint32_t ua = std::bit_cast<std::uint32_t>(float(a)), ub = std::bit_cast<std::uint32_t>(float(b));
+    ka = (ua >> 31) ? ~ua & 0xffffffffu : ua | 0x80000000u;
+    kb = (ub >> 31) ? ~ub & 0xffffffffu : ub | 0x80000000u;
+  } else {
+    const std::uint64_t ua = std::bit_cast<std::uint64_t>(a), ub = std::bit_cast<std::uint64_t>(b);
+    ka = (ua >> 63) ? ~ua : ua | (1ull << 63);
+    kb = (ub >> 63) ? ~ub : ub | (1ull << 63);
+  }
+  return ka > kb ? ka - kb : kb - ka;
+}
+
+// ---- the work ----
+namespace {
+
+constexpr std::uint64_t block = 256;  // cases per work item
+
+struct Cell {
+  Query q;
+  const Family* family;
+  int scale;
+};
+
+std::vector<Cell> cells_of(const Spec& spec) {
+  std::vector<Cell> cells;
+  for (Query q : spec.queries) {
+    std::vector<const Family*> fams;
+    if (spec.families.empty()) {
+      for (const Family& f : families(q)) fams.push_back(&f);
+    } else {
+      for (const std::string& name : spec.families)
+        for (const Family& f : families(q))
+          if (f.name == name) fams.push_back(&f);
+      if (fams.empty()) family_by_name(q, spec.families.front());  // throws, naming the choices
+    }
+    for (const Family* f : fams)
+      for (int k : f->scales) {
+        bool wanted = spec.scales.empty();
+        for (int s : spec.scales) wanted = wanted || s == k;
+        if (wanted) cells.push_back({q, f, k});
+      }
+  }
+  if (cells.empty()) throw std::invalid_argument("the campaign selects no (query, family, scale) cell");
+  return cells;
+}
+
+bool all_finite(const Inputs& in, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(in[i])) return false;
+  return true;
+}
+
+void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::vector<const Implementation*>& impls,
+              Results& res) {
+  const QueryInfo& qi = info(cell.q);
+  const Inputs in = make_case(seed, cell.q, *cell.family, cell.scale, i);
+  const Inputs in_f = float_inputs(cell.q, in);
+  bool need53 = false, need24 = false;
+  for (const Implementation* im : impls) (im->precision == 24 ? need24 : need53) = true;
+  // The truth on the double inputs, and on their float rounding. Inputs outside a query's
+  // domain in a type (overflow to infinity, a ray direction that underflows to zero in
+  // float) are refused for the implementations of that type and counted as such.
+  Answer t53, t24;
+  bool valid53 = need53, valid24 = need24 && all_finite(in_f, qi.inputs.size());
+  try {
+    if (valid53) t53 = truth(cell.q, in, 53);
+  } catch (const invalid_input&) {
+    valid53 = false;
+  }
+  try {
+    if (valid24) t24 = truth(cell.q, in_f, 24);
+  } catch (const invalid_input&) {
+    valid24 = false;
+  }
+  const bool is_cast = qi.outputs.size() == 4 && qi.outputs[0] == "lambda_enter";
+
+  for (const Implementation* im : impls) {
+    CellStats& st = res.cells[{cell.q, im->name, cell.family->name, cell.scale}];
+    ++st.n;
+    const bool f24 = im->precision == 24;
+    if (!(f24 ? valid24 : valid53)) {
+      ++st.refused;
+      continue;
+    }
+    const Inputs& seen = f24 ? in_f : in;
+    Answer a;
+    try {
+      a = im->run(cell.q, seen);
+    } catch (const invalid_input&) {
+      ++st.refused;
+      continue;
+    }
+    const Answer& t = f24 ? t24 : t53;
+    if (a.cls != t.cls) {
+      ++(a.cls ? st.cls_fp : st.cls_fn);
+      st.cls_example.offer(0, i, seen, a.cls, t.cls);
+    }
+    if (a.pred != t.pred) {
+      ++(a.pred ? st.pred_fp : st.pred_fn);
+      st.pred_example.offer(0, i, seen, a.pred, t.pred);
+    }
+    if (is_cast && !(a.cls && t.cls)) continue;  // lambdas and points exist only on a hit
+    int c = 0;
+    for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
+      const int w = qi.widths[g];
+      OutputStats& os = st.out[g];
+      bool nonfinite = false;
+      std::uint64_t worst = 0;
+      int at = c;
+      for (int k = c; k < c + w; ++k) {
+        if (!std::isfinite(a.v[k]) && std::isfinite(t.v[k])) nonfinite = true;
+        const std::uint64_t d = ulp_distance(a.v[k], t.v[k], im->precision);
+        if (d > worst) worst = d, at = k;
+      }
+      if (nonfinite)
+        ++os.nonfinite;
+      else {
+        os.hist.add(worst);
+        os.worst.offer(worst, i, seen, a.v[at], t.v[at]);
+      }
+      c += w;
+    }
+  }
+}
+
+struct Item {
+  std::size_t cell;
+  std::uint64_t first;  // first case index of the block
+};
+
+std::vector<Item> items_of(const Spec& spec, const std::vector<Cell>& cells) {
+  std::vector<Item> items;
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (std::uint64_t first = 0; first < spec.n; first += block) items.push_back({c, first});
+  return items;
+}
+
+void write_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
+    f << text;
+    f.flush();
+    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot replace checkpoint " + path);
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot read " + path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+std::string Spec::fingerprint() const {
+  std::ostringstream o;
+  o << "seed=" << seed << ";n=" << n << ";queries=";
+  for (Query q : queries) o << info(q).name << ",";
+  o << ";impls=";
+  for (const auto& i : impls) o << i << ",";
+  o << ";families=";
+  for (const auto& f : families) o << f << ",";
+  o << ";scales=";
+  for (int s : scales) o << s << ",";
+  return o.str();
+}
+
+std::uint64_t total_items(const Spec& spec) { return items_of(spec, cells_of(spec)).size(); }
+
+Results run(const Spec& spec) {
+  if (spec.shards < 1 || spec.shard < 0 || spec.shard >= spec.shards)
+    throw std::invalid_argument("shard must be k/N with 0 <= k < N");
+  const std::vector<Cell> cells = cells_of(spec);
+  const std::vector<Item> items = items_of(spec, cells);
+  std::vector<const Implementation*> impls;
+  for (const auto& name : spec.impls) impls.push_back(&implementation_by_name(name));
+  if (impls.empty()) throw std::invalid_argument("the campaign names no implementation");
+
+  Results total;
+  std::uint64_t done = 0;
+  if (spec.resume) {
+    const Saved saved = deserialize(read_file(spec.checkpoint), spec.checkpoint);
+    if (saved.fingerprint != spec.fingerprint() || saved.shard != spec.shard || saved.shards != spec.shards)
+      throw std::runtime_error("checkpoint " + spec.checkpoint + " belongs to another campaign (" + saved.fingerprint +
+                               ", shard " + std::to_string(saved.shard) + "/" + std::to_string(saved.shards) + ")");
+    total = saved.results;
+    done = saved.items_done;
+  }
+  const int threads = std::max(1, spec.threads);
+  const std::uint64_t round = std::uint64_t(threads) * 8;
+  while (done < items.size()) {
+    const std::uint64_t end = std::min<std::uint64_t>(items.size(), done + round);
+    std::atomic<std::uint64_t> next{done};
+    std::vector<Results> local(threads);
+    std::vector<std::exception_ptr> errors(threads);
+    auto work = [&](int t) {
+      try {
+        for (std::uint64_t k; (k = next++) < end;) {
+          const Item& it = items[k];
+          const std::uint64_t last = std::min(spec.n, it.first + block);
+          for (std::uint64_t i = it.first; i < last; ++i)
+            if (i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard))
+              run_case(cells[it.cell], spec.seed, i, impls, local[t]);
+        }
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
+    for (auto& e : errors)
+      if (e) std::rethrow_exception(e);
+    for (const Results& r : local) total.merge(r);
+    done = end;
+    if (!spec.checkpoint.empty()) write_atomically(spec.checkpoint, serialize(spec, total, done));
+    if (spec.progress) spec.progress(double(done), double(items.size()));
+  }
+  return total;
+}
+
+// ---- text form ----
+namespace {
+
+void put_ex(std::ostream& o, const char* tag, const Exemplar& e, std::size_t n_in) {
+  if (!e.set) return;
+  o << "ex " << tag << " " << e.metric << " " << e.index << " " << hexfloat(e.got) << " " << hexfloat(e.want);
+  for (std::size_t i = 0; i < n_in; ++i) o << " " << hexfloat(e.inputs[i]);
+  o << "\n";
+}
+
+}  // namespace
+
+std::string serialize(const Spec& spec, const Results& r, std::uint64_t items_done) {
+  std::ostringstream o;
+  o << "cdref-results 1\n";
+  o << "fingerprint " << spec.fingerprint() << "\n";
+  o << "shard " << spec.shard << " " << spec.shards << "\n";
+  o << "items " << items_done << " " << total_items(spec) << "\n";
+  for (const auto& [k, st] : r.cells) {
+    const QueryInfo& qi = info(k.query);
+    const std::size_t n_in = qi.inputs.size();
+    o << "cell " << qi.name << " " << k.impl << " " << k.family << " " << k.scale << " " << st.n << " " << st.refused
+      << " " << st.cls_fp << " " << st.cls_fn << " " << st.pred_fp << " " << st.pred_fn << "\n";
+    put_ex(o, "cls", st.cls_example, n_in);
+    put_ex(o, "pred", st.pred_example, n_in);
+    for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
+      const OutputStats& os = st.out[g];
+      o << "out " << g << " " << os.nonfinite;
+      for (int b = 0; b < Histogram::bins; ++b)
+        if (os.hist.count[b]) o << " " << b << ":" << os.hist.count[b];
+      o << "\n";
+      put_ex(o, ("out" + std::to_string(g)).c_str(), os.worst, n_in);
+    }
+  }
+  o << "end\n";
+  return o.str();
+}
+
+Saved deserialize(const std::string& text, const std::string& source) {
+  Saved s;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  CellStats* cur = nullptr;
+  std::size_t n_in = 0;
+  bool header = false, ended = false;
+  auto fail = [&](const std::string& why) {
+    throw std::runtime_error(source + ":" + std::to_string(lineno) + ": " + why);
+  };
+  auto read_ex = [&](std::istringstream& ls, Exemplar& e) {
+    std::string got, want;
+    if (!(ls >> e.metric >> e.index >> got >> want)) fail("malformed example record");
+    e.got = std::strtod(got.c_str(), nullptr);
+    e.want = std::strtod(want.c_str(), nullptr);
+    for (std::size_t i = 0; i < n_in; ++i) {
+      std::string x;
+      if (!(ls >> x)) fail("example record has too few inputs");
+      e.inputs[i] = std::strtod(x.c_str(), nullptr);
+    }
+    e.set = true;
+  };
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    if (!header) {
+      if (tag != "cdref-results") fail("not a cdref results file");
+      header = true;
+    } else if (tag == "fingerprint") {
+      std::getline(ls >> std::ws, s.fingerprint);
+    } else if (tag == "shard") {
+      if (!(ls >> s.shard >> s.shards)) fail("malformed shard record");
+    } else if (tag == "items") {
+      if (!(ls >> s.items_done >> s.items_total)) fail("malformed items record");
+    } else if (tag == "cell") {
+      std::string q, impl, fam;
+      int scale;
+      CellStats st;
+      if (!(ls >> q >> impl >> fam >> scale >> st.n >> st.refused >> st.cls_fp >> st.cls_fn >> st.pred_fp >>
+            st.pred_fn))
+        fail("malformed cell record");
+      Query query;
+      try {
+        query = query_by_name(q);
+      } catch (const std::exception& e) {
+        fail(e.what());
+      }
+      n_in = info(query).inputs.size();
+      cur = &s.results.cells[{query, impl, fam, scale}];
+      *cur = st;
+    } else if (tag == "ex" || tag == "out") {
+      if (!cur) fail("record before any cell");
+      if (tag == "ex") {
+        std::string which;
+        ls >> which;
+        if (which == "cls")
+          read_ex(ls, cur->cls_example);
+        else if (which == "pred")
+          read_ex(ls, cur->pred_example);
+        else if (which.rfind("out", 0) == 0 && which.size() > 3 && std::stoul(which.substr(3)) < max_values)
+          read_ex(ls, cur->out[std::stoul(which.substr(3))].worst);
+        else
+          fail("unknown example kind '" + which + "'");
+      } else {
+        std::size_t g;
+        if (!(ls >> g >> cur->out.at(g < max_values ? g : 0).nonfinite) || g >= max_values) fail("malformed out record");
+        std::string bc;
+        while (ls >> bc) {
+          const auto colon = bc.find(':');
+          if (colon == std::string::npos) fail("malformed histogram bin '" + bc + "'");
+          const int b = std::stoi(bc.substr(0, colon));
+          if (b < 0 || b >= Histogram::bins) fail("histogram bin out of range");
+          cur->out[g].hist.count[b] = std::stoull(bc.substr(colon + 1));
+        }
+      }
+    } else if (tag == "end") {
+      ended = true;
+    } else if (!tag.empty()) {
+      fail("unknown record '" + tag + "'");
+    }
+  }
+  if (!header) throw std::runtime_error(source + ": empty file");
+  if (!ended) throw std::runtime_error(source + ": truncated (no end record)");
+  return s;
+}
+
+Results merge_shards(const std::vector<Saved>& shards) {
+  if (shards.empty()) throw std::runtime_error("nothing to merge");
+  const int n = shards.front().shards;
+  std::vector<int> seen(n, 0);
+  Results total;
+  for (const Saved& s : shards) {
+    if (s.fingerprint != shards.front().fingerprint) throw std::runtime_error("shards of different campaigns");
+    if (s.shards != n || s.shard < 0 || s.shard >= n) throw std::runtime_error("shard numbering differs");
+    if (s.items_done != s.items_total)
+      throw std::runtime_error("shard " + std::to_string(s.shard) + " is incomplete (resume it first)");
+    if (seen[s.shard]++) throw std::runtime_error("shard " + std::to_string(s.shard) + " given twice");
+    total.merge(s.results);
+  }
+  for (int k = 0; k < n; ++k)
+    if (!seen[k]) throw std::runtime_error("shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+  return total;
+}
+
+}  // namespace cdref::fuzz

@@ -1,0 +1,439 @@
+// fuzz/families.cpp - the case families of every query.
+//
+// Each family makes cases from a stream of random words and an integer scale k. The
+// families aim at where float code goes wrong: long range (10^k radii away), near
+// tangency and near touching (2^-k), grazing box edges and corners, rays parallel to or
+// lying in face planes, degenerate placements, and magnitudes from 1e-300 to 1e300 (10^k
+// applied to a uniform case: squares overflow past 1e154 and underflow below 1e-154).
+#include <cdref/fuzz/campaign.hpp>
+#include <cmath>
+#include <stdexcept>
+
+namespace cdref::fuzz {
+
+namespace {
+
+using Next = std::function<std::uint64_t()>;
+
+struct V {
+  double x, y, z;
+};
+V operator+(V a, V b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V operator-(V a, V b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+V operator*(double k, V a) { return {k * a.x, k * a.y, k * a.z}; }
+double dot(V a, V b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V cross(V a, V b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+V normalized(V a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
+
+double uni(Next& next, double a, double b) { return a + (b - a) * double(next() >> 11) * 0x1p-53; }
+int pick(Next& next, int n) { return int(next() % std::uint64_t(n)); }
+double sign(Next& next) { return (next() & 1) ? 1.0 : -1.0; }
+V uvec(Next& next, double a, double b) { return {uni(next, a, b), uni(next, a, b), uni(next, a, b)}; }
+V unit(Next& next) {
+  for (;;) {
+    const V v = uvec(next, -1, 1);
+    const double n = dot(v, v);
+    if (n > 1e-4 && n <= 1) return normalized(v);
+  }
+}
+// A unit vector orthogonal to u.
+V perp(Next& next, V u) {
+  for (;;) {
+    const V w = cross(u, unit(next));
+    if (dot(w, w) > 1e-4) return normalized(w);
+  }
+}
+V axis(int i, double s = 1) { return i == 0 ? V{s, 0, 0} : (i == 1 ? V{0, s, 0} : V{0, 0, s}); }
+
+void put(Inputs& in, int k, V v) {
+  in[k] = v.x;
+  in[k + 1] = v.y;
+  in[k + 2] = v.z;
+}
+
+std::vector<int> range(int a, int b, int step = 1) {
+  std::vector<int> v;
+  for (int k = a; k <= b; k += step) v.push_back(k);
+  return v;
+}
+const std::vector<int> tangency_scales = {1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52};
+const std::vector<int> decades = range(0, 12);
+const std::vector<int> magnitudes = range(-300, 300, 50);
+
+// Scales every coordinate and length of a case by 10^k.
+Inputs scaled(Inputs in, int n, int k) {
+  const double f = std::pow(10.0, k);
+  for (int i = 0; i < n; ++i) in[i] *= f;
+  return in;
+}
+
+// ---- a segment or ray against a sphere: inputs s, t (or d), c, rho ----
+struct SphereShot {
+  bool ray;
+  Inputs make(V s, V t, V c, double rho) const {
+    Inputs in{};
+    put(in, 0, s);
+    put(in, 3, ray ? t - s : t);
+    put(in, 6, c);
+    in[9] = rho;
+    return in;
+  }
+  // From R radii away, passing at b radii from the centre, ending `over` past the aim point.
+  Inputs aimed(Next& next, double R, double b) const {
+    const V c = uvec(next, -1, 1);
+    const double rho = uni(next, 0.5, 2);
+    const V u = unit(next), w = perp(next, u);
+    const V p = c + (b * rho) * w;
+    const V s = p - (R * rho) * u;
+    const V t = p + uni(next, 0.01, 1.0) * (p - s);
+    return make(s, t, c, rho);
+  }
+};
+
+std::vector<Family> sphere_shot_families(bool ray, bool cast) {
+  const SphereShot S{ray};
+  std::vector<Family> f;
+  f.push_back({"uniform", "centre in [-1,1]^3, radius in [0.25,2], endpoints in [-4,4]^3", {0},
+               [S](Next& next, int) {
+                 const V c = uvec(next, -1, 1);
+                 const double rho = uni(next, 0.25, 2);
+                 return S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho);
+               }});
+  f.push_back({"long-range", "source 10^k radii away, passing 0 to 1.25 radii from the centre", decades,
+               [S](Next& next, int k) { return S.aimed(next, std::pow(10.0, k), uni(next, 0, 1.25)); }});
+  f.push_back({"near-tangent", "from 4 radii, passing at rho (1 +- 2^-k) from the centre", tangency_scales,
+               [S](Next& next, int k) { return S.aimed(next, 4, 1 + sign(next) * std::ldexp(1.0, -k)); }});
+  f.push_back({"tangent-at-range", "from 10^k radii, passing within 1e-9 radii of tangency", decades,
+               [S](Next& next, int k) { return S.aimed(next, std::pow(10.0, k), 1 + uni(next, -1e-9, 1e-9)); }});
+  f.push_back({"degenerate",
+               "through the centre, zero length, source inside, source on the sphere, radius 0",
+               {0},
+               [S, ray](Next& next, int) {
+                 const V c = uvec(next, -1, 1);
+                 const double rho = uni(next, 0.5, 2);
+                 const int i = pick(next, 3);
+                 const double sg = sign(next);
+                 switch (pick(next, ray ? 4 : 5)) {
+                   case 0: return S.aimed(next, uni(next, 1.5, 10), 0);  // through the centre
+                   case 1: {  // source inside
+                     const V s = c + uvec(next, -0.5, 0.5);
+                     return S.make(s, s + uvec(next, -4, 4), c, rho);
+                   }
+                   case 2: {  // source exactly on the sphere, along an axis, in or out
+                     const V s = c + axis(i, sg * rho);
+                     const V t = s + axis(i, (pick(next, 2) ? 1 : -1) * uni(next, 0.5, 4));
+                     return S.make(s, t, c, rho);
+                   }
+                   case 3: {  // radius 0, line through the point or not
+                     const V s = uvec(next, -4, 4);
+                     const V t = pick(next, 2) ? c + (c - s) : uvec(next, -4, 4);
+                     return S.make(s, t, c, 0.0);
+                   }
+                   default: {  // zero-length segment, inside, on or outside
+                     const V s = c + (uni(next, 0, 2) * rho) * unit(next);
+                     return S.make(s, s, c, rho);
+                   }
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [S](Next& next, int k) {
+                 const V c = uvec(next, -1, 1);
+                 const double rho = uni(next, 0.25, 2);
+                 return scaled(S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho), 10, k);
+               }});
+  (void)cast;
+  return f;
+}
+
+// ---- two spheres: cA, rhoA, cB, rhoB ----
+Inputs two_spheres(V a, double ra, V b, double rb) {
+  Inputs in{};
+  put(in, 0, a);
+  in[3] = ra;
+  put(in, 4, b);
+  in[7] = rb;
+  return in;
+}
+Inputs touching_spheres(Next& next, double rel, V offset) {
+  const double ra = uni(next, 0.5, 2), rb = uni(next, 0.5, 2);
+  const V a = offset + uvec(next, -1, 1);
+  return two_spheres(a, ra, a + ((ra + rb) * (1 + rel)) * unit(next), rb);
+}
+std::vector<Family> sphere_sphere_families() {
+  std::vector<Family> f;
+  f.push_back({"uniform", "centres in [-2,2]^3, radii in [0.1,2]", {0}, [](Next& next, int) {
+                 return two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2));
+               }});
+  f.push_back({"near-touching", "centres (rhoA + rhoB)(1 +- 2^-k) apart", tangency_scales, [](Next& next, int k) {
+                 return touching_spheres(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
+               }});
+  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades,
+               [](Next& next, int k) {
+                 return touching_spheres(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+               }});
+  f.push_back({"degenerate", "concentric, internally tangent along an axis, radius 0", {0}, [](Next& next, int) {
+                 const V a = uvec(next, -1, 1);
+                 const double ra = uni(next, 0.5, 2), rb = uni(next, 0.5, 2);
+                 switch (pick(next, 3)) {
+                   case 0: return two_spheres(a, ra, a, rb);
+                   case 1: return two_spheres(a, ra, a + axis(pick(next, 3), sign(next) * std::fabs(ra - rb)), rb);
+                   default: return two_spheres(a, 0.0, uvec(next, -2, 2), pick(next, 2) ? 0.0 : rb);
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+                 return scaled(two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2)),
+                               8, k);
+               }});
+  return f;
+}
+
+// ---- sphere and box: c, rho, box centre, box extent ----
+Inputs sphere_box(V c, double rho, V bc, V bh) {
+  Inputs in{};
+  put(in, 0, c);
+  in[3] = rho;
+  put(in, 4, bc);
+  put(in, 7, bh);
+  return in;
+}
+// A sphere touching a face, edge or corner of the box to within `rel` of its radius.
+Inputs touching_sphere_box(Next& next, double rel, V offset) {
+  const V bc = offset + uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
+  const double rho = uni(next, 0.25, 2);
+  const int dims = 1 + pick(next, 3);  // 1 face, 2 edge, 3 corner
+  V p = bc, n{0, 0, 0};
+  const int first = pick(next, 3);
+  for (int j = 0; j < 3; ++j) {
+    const int i = (first + j) % 3;
+    const double h = i == 0 ? bh.x : (i == 1 ? bh.y : bh.z);
+    if (j < dims) {
+      const double sg = sign(next);
+      p = p + axis(i, sg * h);
+      n = n + axis(i, sg * uni(next, 0.2, 1));
+    } else {
+      p = p + axis(i, uni(next, -h, h));
+    }
+  }
+  return sphere_box(p + (rho * (1 + rel)) * normalized(n), rho, bc, bh);
+}
+std::vector<Family> sphere_box_families() {
+  std::vector<Family> f;
+  f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3; sphere centre in [-4,4]^3", {0},
+               [](Next& next, int) {
+                 return sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2));
+               }});
+  f.push_back({"near-touching", "touching a face, edge or corner to within 2^-k radii", tangency_scales,
+               [](Next& next, int k) {
+                 return touching_sphere_box(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
+               }});
+  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades, [](Next& next, int k) {
+                 return touching_sphere_box(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+               }});
+  f.push_back({"degenerate", "centre inside, on a face, at the box centre; zero extent; radius 0", {0},
+               [](Next& next, int) {
+                 const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
+                 const double rho = uni(next, 0.25, 2);
+                 switch (pick(next, 5)) {
+                   case 0: return sphere_box(bc + V{uni(next, -bh.x, bh.x), uni(next, -bh.y, bh.y), uni(next, -bh.z, bh.z)}, rho, bc, bh);
+                   case 1: {
+                     const int i = pick(next, 3);
+                     const double h = i == 0 ? bh.x : (i == 1 ? bh.y : bh.z);
+                     return sphere_box(bc + axis(i, sign(next) * h), rho, bc, bh);
+                   }
+                   case 2: return sphere_box(bc, rho, bc, bh);
+                   case 3: return sphere_box(uvec(next, -3, 3), rho, bc, V{0, 0, 0});
+                   default: return sphere_box(uvec(next, -4, 4), 0.0, bc, bh);
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+                 return scaled(sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2)),
+                               10, k);
+               }});
+  return f;
+}
+
+// ---- two boxes: c1, h1, c2, h2 ----
+Inputs two_boxes(V c1, V h1, V c2, V h2) {
+  Inputs in{};
+  put(in, 0, c1);
+  put(in, 3, h1);
+  put(in, 6, c2);
+  put(in, 9, h2);
+  return in;
+}
+// Box 2 touches box 1 along 1 to 3 axes (face, edge, corner), off by `gap` of the extents.
+Inputs touching_boxes(Next& next, double gap, V offset) {
+  const V c1 = offset + uvec(next, -1, 1), h1 = uvec(next, 0.1, 2), h2 = uvec(next, 0.1, 2);
+  V d{0, 0, 0};
+  const int dims = 1 + pick(next, 3);
+  const double hs[3] = {h1.x + h2.x, h1.y + h2.y, h1.z + h2.z};
+  for (int i = 0; i < 3; ++i)
+    d = d + axis(i, i < dims ? sign(next) * hs[i] * (1 + gap) : uni(next, -hs[i], hs[i]));
+  return two_boxes(c1, h1, c1 + d, h2);
+}
+std::vector<Family> box_box_families() {
+  std::vector<Family> f;
+  f.push_back({"uniform", "centres in [-2,2]^3, extents in [0.1,2]^3", {0}, [](Next& next, int) {
+                 return two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2));
+               }});
+  f.push_back({"near-touching", "faces, edges or corners 2^-k (relative) apart or overlapping", tangency_scales,
+               [](Next& next, int k) { return touching_boxes(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}); }});
+  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades, [](Next& next, int k) {
+                 return touching_boxes(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+               }});
+  f.push_back({"degenerate", "zero extents, identical boxes, exactly touching", {0}, [](Next& next, int) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 switch (pick(next, 3)) {
+                   case 0: return two_boxes(c, V{0, 0, 0}, uvec(next, -2, 2), pick(next, 2) ? V{0, 0, 0} : h);
+                   case 1: return two_boxes(c, h, c, h);
+                   default: return touching_boxes(next, 0, V{0, 0, 0});
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+                 return scaled(two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2)),
+                               12, k);
+               }});
+  return f;
+}
+
+// ---- a segment or ray against a box: s, t (or d), c, h ----
+struct BoxShot {
+  bool ray;
+  Inputs make(V s, V t, V c, V h) const {
+    Inputs in{};
+    put(in, 0, s);
+    put(in, 3, ray ? t - s : t);
+    put(in, 6, c);
+    put(in, 9, h);
+    return in;
+  }
+  // From R box sizes away, aimed at `aim`, ending past it.
+  Inputs aimed(Next& next, V c, V h, V aim, double R) const {
+    const double size = std::sqrt(dot(h, h));
+    const V s = aim - (R * size) * unit(next);
+    const V t = aim + uni(next, 0.01, 1.0) * (aim - s);
+    return make(s, t, c, h);
+  }
+};
+std::vector<Family> box_shot_families(bool ray) {
+  const BoxShot B{ray};
+  std::vector<Family> f;
+  f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3, endpoints in [-4,4]^3", {0},
+               [B](Next& next, int) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 return B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h);
+               }});
+  f.push_back({"long-range", "from 10^k box sizes away, aimed within 1.2 extents of the centre", decades,
+               [B](Next& next, int k) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 const V a = uvec(next, -1.2, 1.2);
+                 return B.aimed(next, c, h, c + V{a.x * h.x, a.y * h.y, a.z * h.z}, std::pow(10.0, k));
+               }});
+  f.push_back({"grazing", "aimed at an edge or corner, off by 2^-k of the extent", tangency_scales,
+               [B](Next& next, int k) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 const int dims = 2 + pick(next, 2);
+                 const int first = pick(next, 3);
+                 V aim = c;
+                 for (int j = 0; j < 3; ++j) {
+                   const int i = (first + j) % 3;
+                   const double hi = i == 0 ? h.x : (i == 1 ? h.y : h.z);
+                   aim = aim + axis(i, j < dims ? sign(next) * hi * (1 + sign(next) * std::ldexp(1.0, -k))
+                                                : uni(next, -hi, hi));
+                 }
+                 return B.aimed(next, c, h, aim, 4);
+               }});
+  f.push_back({"planes", "parallel to a face just outside or inside it, lying in a face plane, ending on a plane",
+               {0}, [B](Next& next, int) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 const int i = pick(next, 3), j = (i + 1 + pick(next, 2)) % 3;
+                 const double hi = i == 0 ? h.x : (i == 1 ? h.y : h.z);
+                 const double sg = sign(next);
+                 V s = c + uvec(next, -4, 4), t = c + uvec(next, -4, 4);
+                 switch (pick(next, 3)) {
+                   case 0: {  // parallel to face i: both endpoints share coordinate i
+                     const double off = hi * (1 + sign(next) * std::ldexp(1.0, -pick(next, 40)));
+                     const double ci = (i == 0 ? c.x : (i == 1 ? c.y : c.z)) + sg * off;
+                     s = s - axis(i, dot(s, axis(i)) - ci);
+                     t = t - axis(i, dot(t, axis(i)) - ci);
+                     break;
+                   }
+                   case 1: {  // in a face plane, exactly
+                     const double ci = (i == 0 ? c.x : (i == 1 ? c.y : c.z)) + sg * hi;
+                     s = s - axis(i, dot(s, axis(i)) - ci);
+                     t = t - axis(i, dot(t, axis(i)) - ci);
+                     break;
+                   }
+                   default: {  // the target exactly on a face plane
+                     const double ci = (i == 0 ? c.x : (i == 1 ? c.y : c.z)) + sg * hi;
+                     t = t - axis(i, dot(t, axis(i)) - ci);
+                     (void)j;
+                     break;
+                   }
+                 }
+                 return B.make(s, t, c, h);
+               }});
+  f.push_back({"degenerate", "zero-length segments, zero-extent boxes, sources inside", {0}, [B, ray](Next& next, int) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 switch (pick(next, ray ? 2 : 3)) {
+                   case 0: {
+                     V hz = h;
+                     if (pick(next, 2)) hz.x = 0; else hz.z = 0;
+                     return B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, hz);
+                   }
+                   case 1: {
+                     const V s = c + V{uni(next, -h.x, h.x), uni(next, -h.y, h.y), uni(next, -h.z, h.z)};
+                     return B.make(s, s + uvec(next, -4, 4), c, h);
+                   }
+                   default: {
+                     const V s = c + uvec(next, -3, 3);
+                     return B.make(s, s, c, h);
+                   }
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [B](Next& next, int k) {
+                 const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
+                 return scaled(B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h), 12, k);
+               }});
+  return f;
+}
+
+}  // namespace
+
+const std::vector<Family>& families(Query q) {
+  static const std::vector<std::vector<Family>> all = {
+      sphere_sphere_families(),         sphere_shot_families(false, true), sphere_shot_families(true, true),
+      sphere_shot_families(false, false), box_box_families(),            box_shot_families(false),
+      box_shot_families(true),          sphere_box_families(),
+  };
+  return all.at(static_cast<std::size_t>(q));
+}
+
+const Family& family_by_name(Query q, const std::string& name) {
+  std::string names;
+  for (const Family& f : families(q)) {
+    if (f.name == name) return f;
+    names += (names.empty() ? "" : ", ") + f.name;
+  }
+  throw std::invalid_argument("no family '" + name + "' for query " + info(q).name + " (families: " + names + ")");
+}
+
+// SplitMix64: the mixing function of a counter-based generator.
+static std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+Inputs make_case(std::uint64_t seed, Query q, const Family& f, int scale, std::uint64_t i) {
+  std::uint64_t key = mix(seed);
+  key = mix(key ^ std::uint64_t(static_cast<int>(q)));
+  for (char ch : f.name) key = mix(key ^ std::uint64_t(static_cast<unsigned char>(ch)));
+  key = mix(key ^ std::uint64_t(std::int64_t(scale)));
+  key = mix(key ^ i);
+  std::uint64_t counter = 0;
+  std::function<std::uint64_t()> next = [&]() { return mix(key + 0x632be59bd9b4e019ull * ++counter); };
+  return f.make(next, scale);
+}
+
+}  // namespace cdref::fuzz

@@ -1,0 +1,217 @@
+// fuzz/queries.cpp - the queries a campaign runs: their input and output columns, and
+// their evaluation by the book at float, double and (the truth) CGAL::Gmpq with exact
+// square roots, rounded correctly. The one translation unit of the campaign engine that
+// instantiates the exact types.
+#include <cdref/exact.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cstdio>
+#include <stdexcept>
+
+namespace cdref::fuzz {
+
+namespace {
+
+const std::vector<std::string> cast_outputs = {"lambda_enter", "lambda_exit", "point", "normal"};
+const std::vector<int> cast_widths = {1, 1, 3, 3};
+const std::vector<std::string> prox_outputs = {"distance", "depth", "witness_a", "witness_b"};
+const std::vector<int> prox_widths = {1, 1, 3, 3};
+
+std::vector<std::string> cols(std::initializer_list<std::pair<const char*, int>> parts) {
+  std::vector<std::string> out;
+  for (const auto& [name, n] : parts) {
+    if (n == 1) {
+      out.push_back(name);
+    } else {
+      for (const char* ax : {"x", "y", "z"}) out.push_back(std::string(name) + "_" + ax);
+    }
+  }
+  return out;
+}
+
+const std::vector<QueryInfo>& table() {
+  static const std::vector<QueryInfo> t = {
+      {Query::sphere_sphere, "sphere-sphere", "intersect", "intersect",
+       cols({{"a_center", 3}, {"a_radius", 1}, {"b_center", 3}, {"b_radius", 1}}), prox_outputs, prox_widths,
+       "Section 3.1.1: book::proximity(A, B) and book::intersect(A, B)"},
+      {Query::segment_sphere_cast, "segment-sphere-cast", "hit", "hit",
+       cols({{"source", 3}, {"target", 3}, {"center", 3}, {"radius", 1}}), cast_outputs, cast_widths,
+       "Algorithm 3.1 on the segment source->target: book::cast and book::hit"},
+      {Query::ray_sphere_cast, "ray-sphere-cast", "hit", "hit",
+       cols({{"source", 3}, {"direction", 3}, {"center", 3}, {"radius", 1}}), cast_outputs, cast_widths,
+       "Algorithm 3.1 on the infinite ray source + lambda direction: book::cast and book::hit"},
+      {Query::segment_sphere, "segment-sphere", "intersect", "intersect",
+       cols({{"source", 3}, {"target", 3}, {"center", 3}, {"radius", 1}}), prox_outputs, prox_widths,
+       "Algorithm 3.2: book::proximity(segment, sphere) and book::intersect (witness_a on the segment)"},
+      {Query::box_box, "box-box", "intersect", "intersect-min-max",
+       cols({{"a_center", 3}, {"a_extent", 3}, {"b_center", 3}, {"b_extent", 3}}), {}, {},
+       "Section 3.2: book::intersect in centre-extent form; the predicate column is the min-max form "
+       "on corners rounded to the implementation's type"},
+      {Query::segment_box_cast, "segment-box-cast", "hit", "hit",
+       cols({{"source", 3}, {"target", 3}, {"center", 3}, {"extent", 3}}), cast_outputs, cast_widths,
+       "Algorithm 3.3 on the segment source->target: book::cast and book::hit"},
+      {Query::ray_box_cast, "ray-box-cast", "hit", "hit",
+       cols({{"source", 3}, {"direction", 3}, {"center", 3}, {"extent", 3}}), cast_outputs, cast_widths,
+       "Algorithm 3.3 on the infinite ray: book::cast and book::hit"},
+      {Query::sphere_box, "sphere-box", "intersect", "intersect",
+       cols({{"center", 3}, {"radius", 1}, {"box_center", 3}, {"box_extent", 3}}), prox_outputs, prox_widths,
+       "Section 3.2.2: book::proximity(sphere, box) and book::intersect (witness_a on the sphere)"},
+  };
+  return t;
+}
+
+template <class T>
+Vec3<T> v3(const Inputs& in, int k) {
+  return Vec3<T>(T(in[k]), T(in[k + 1]), T(in[k + 2]));
+}
+
+// A value of the sqrt type S, as the double the implementation of type F reports.
+template <class F, class S>
+double value(const S& x) {
+  if constexpr (number_traits<S>::is_exact)
+    return double(round_to<F>(x));
+  else
+    return double(x);
+}
+
+template <class F, class S>
+void put_cast(Answer& a, const Cast<S>& c) {
+  a.cls = c.hit;
+  a.v[0] = value<F>(c.lambda_enter);
+  a.v[1] = value<F>(c.lambda_exit);
+  for (int i = 0; i < 3; ++i) {
+    a.v[2 + i] = value<F>(c.point[i]);
+    a.v[5 + i] = value<F>(c.normal[i]);
+  }
+}
+
+template <class F, class S>
+void put_prox(Answer& a, const Proximity<S>& p) {
+  a.cls = p.intersect;
+  a.v[0] = value<F>(p.distance);
+  a.v[1] = value<F>(p.depth);
+  for (int i = 0; i < 3; ++i) {
+    a.v[2 + i] = value<F>(p.on_a[i]);
+    a.v[5 + i] = value<F>(p.on_b[i]);
+  }
+}
+
+// The book at number type T on the inputs (converted to T), values reported as F.
+template <class T, class F>
+Answer eval(Query q, const Inputs& in) {
+  Answer a;
+  switch (q) {
+    case Query::sphere_sphere: {
+      const Sphere<T> A{v3<T>(in, 0), T(in[3])}, B{v3<T>(in, 4), T(in[7])};
+      put_prox<F>(a, book::proximity(A, B));
+      a.pred = book::intersect(A, B);
+      break;
+    }
+    case Query::segment_sphere_cast: {
+      const Segment<T> s{v3<T>(in, 0), v3<T>(in, 3)};
+      const Sphere<T> sp{v3<T>(in, 6), T(in[9])};
+      put_cast<F>(a, book::cast(s, sp));
+      a.pred = book::hit(s, sp);
+      break;
+    }
+    case Query::ray_sphere_cast: {
+      const Ray<T> r{v3<T>(in, 0), v3<T>(in, 3)};
+      const Sphere<T> sp{v3<T>(in, 6), T(in[9])};
+      put_cast<F>(a, book::cast(r, sp));
+      a.pred = book::hit(r, sp);
+      break;
+    }
+    case Query::segment_sphere: {
+      const Segment<T> s{v3<T>(in, 0), v3<T>(in, 3)};
+      const Sphere<T> sp{v3<T>(in, 6), T(in[9])};
+      put_prox<F>(a, book::proximity(s, sp));
+      a.pred = book::intersect(s, sp);
+      break;
+    }
+    case Query::box_box: {
+      const Box<T> A{v3<T>(in, 0), v3<T>(in, 3)}, B{v3<T>(in, 6), v3<T>(in, 9)};
+      a.cls = book::intersect(A, B);
+      a.pred = book::intersect(to_min_max(A), to_min_max(B));
+      break;
+    }
+    case Query::segment_box_cast: {
+      const Segment<T> s{v3<T>(in, 0), v3<T>(in, 3)};
+      const Box<T> b{v3<T>(in, 6), v3<T>(in, 9)};
+      put_cast<F>(a, book::cast(s, b));
+      a.pred = book::hit(s, b);
+      break;
+    }
+    case Query::ray_box_cast: {
+      const Ray<T> r{v3<T>(in, 0), v3<T>(in, 3)};
+      const Box<T> b{v3<T>(in, 6), v3<T>(in, 9)};
+      put_cast<F>(a, book::cast(r, b));
+      a.pred = book::hit(r, b);
+      break;
+    }
+    case Query::sphere_box: {
+      const Sphere<T> sp{v3<T>(in, 0), T(in[3])};
+      const Box<T> b{v3<T>(in, 4), v3<T>(in, 7)};
+      put_prox<F>(a, book::proximity(sp, b));
+      a.pred = book::intersect(sp, b);
+      break;
+    }
+  }
+  return a;
+}
+
+}  // namespace
+
+const QueryInfo& info(Query q) { return table().at(static_cast<std::size_t>(q)); }
+
+const std::vector<Query>& all_queries() {
+  static const std::vector<Query> qs = [] {
+    std::vector<Query> v;
+    for (const QueryInfo& i : table()) v.push_back(i.q);
+    return v;
+  }();
+  return qs;
+}
+
+Query query_by_name(const std::string& name) {
+  std::string names;
+  for (const QueryInfo& i : table()) {
+    if (name == i.name) return i.q;
+    names += (names.empty() ? "" : ", ") + std::string(i.name);
+  }
+  throw std::invalid_argument("unknown query '" + name + "' (queries: " + names + ")");
+}
+
+Answer truth(Query q, const Inputs& in, int precision) {
+  return precision == 24 ? eval<CGAL::Gmpq, float>(q, in) : eval<CGAL::Gmpq, double>(q, in);
+}
+
+Inputs float_inputs(Query q, const Inputs& in) {
+  Inputs out{};
+  const std::size_t n = info(q).inputs.size();
+  for (std::size_t i = 0; i < n; ++i) out[i] = double(float(in[i]));
+  return out;
+}
+
+const std::vector<Implementation>& builtin_implementations() {
+  static const std::vector<Implementation> impls = {
+      {"book-float", 24, [](Query q, const Inputs& in) { return eval<float, float>(q, in); }},
+      {"book-double", 53, [](Query q, const Inputs& in) { return eval<double, double>(q, in); }},
+  };
+  return impls;
+}
+
+const Implementation& implementation_by_name(const std::string& name) {
+  std::string names;
+  for (const Implementation& i : builtin_implementations()) {
+    if (i.name == name) return i;
+    names += (names.empty() ? "" : ", ") + i.name;
+  }
+  throw std::invalid_argument("unknown implementation '" + name + "' (implementations: " + names + ")");
+}
+
+std::string hexfloat(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%a", x);
+  return b;
+}
+
+}  // namespace cdref::fuzz

@@ -1,0 +1,214 @@
+// src/report.cpp - campaign results as a table for people, JSON and CSV.
+#include "report.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cdref::cli {
+
+using namespace cdref::fuzz;
+
+namespace {
+
+std::string num(double x, const char* f = "%.3g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+struct Worst {  // the worst output of a cell
+  int group = -1;
+  std::uint64_t p50 = 0, p99 = 0, max = 0, nonfinite = 0;
+};
+
+Worst worst_output(const CellKey& k, const CellStats& st) {
+  Worst w;
+  const QueryInfo& qi = info(k.query);
+  for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
+    const OutputStats& os = st.out[g];
+    const std::uint64_t mx = os.worst.set ? os.worst.metric : 0;
+    w.nonfinite += os.nonfinite;
+    if (w.group < 0 || mx > w.max) {
+      w.group = int(g);
+      w.max = mx;
+      w.p50 = os.hist.quantile(0.5);
+      w.p99 = os.hist.quantile(0.99);
+    }
+  }
+  return w;
+}
+
+std::string inputs_hex(const Exemplar& e, std::size_t n) {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < n; ++i) s << (i ? " " : "") << hexfloat(e.inputs[i]);
+  return s.str();
+}
+
+std::string json_str(const std::string& s) { return "\"" + s + "\""; }
+
+void json_ex(std::ostream& o, const Exemplar& e, std::size_t n) {
+  if (!e.set) {
+    o << "null";
+    return;
+  }
+  o << "{\"index\": " << e.index << ", \"metric\": " << e.metric << ", \"got\": " << json_str(hexfloat(e.got))
+    << ", \"want\": " << json_str(hexfloat(e.want)) << ", \"inputs\": [";
+  for (std::size_t i = 0; i < n; ++i) o << (i ? ", " : "") << json_str(hexfloat(e.inputs[i]));
+  o << "]}";
+}
+
+}  // namespace
+
+void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int worst_rows) {
+  // per (query, implementation)
+  struct Sum {
+    std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0;
+    std::string max_where;
+  };
+  std::map<std::pair<std::string, std::string>, Sum> sums;
+  for (const auto& [k, st] : r.cells) {
+    Sum& s = sums[{info(k.query).name, k.impl}];
+    s.n += st.n;
+    s.refused += st.refused;
+    s.cls += st.cls_fp + st.cls_fn;
+    s.pred += st.pred_fp + st.pred_fn;
+    const Worst w = worst_output(k, st);
+    s.nonfinite += w.nonfinite;
+    if (w.group >= 0 && w.max >= s.max) {
+      s.max = w.max;
+      s.max_where = info(k.query).outputs[w.group] + " in " + k.family + "/" + std::to_string(k.scale);
+    }
+  }
+  char line[512];
+  o << "Per query and implementation (errors in ulps of the implementation's type, against the correctly\n"
+       "rounded exact answer; misclassified: the full query / the root- and division-free predicate):\n\n";
+  std::snprintf(line, sizeof line, "%-20s %-12s %10s %9s %16s %16s %10s  %s\n", "query", "impl", "cases", "refused",
+                "misclassified", "predicate wrong", "nonfinite", "max error (where)");
+  o << line;
+  for (const auto& [key, s] : sums) {
+    const std::string miss = std::to_string(s.cls) + " (" + num(100.0 * double(s.cls) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
+    const std::string pmiss = std::to_string(s.pred) + " (" + num(100.0 * double(s.pred) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
+    std::snprintf(line, sizeof line, "%-20s %-12s %10llu %9llu %16s %16s %10llu  %s\n", key.first.c_str(),
+                  key.second.c_str(), (unsigned long long)s.n, (unsigned long long)s.refused, miss.c_str(),
+                  pmiss.c_str(), (unsigned long long)s.nonfinite,
+                  s.max_where.empty() ? "-" : (num(double(s.max), "%.3g") + " (" + s.max_where + ")").c_str());
+    o << line;
+  }
+
+  // worst cells first: by misclassification rate, then by max error
+  std::vector<std::pair<CellKey, const CellStats*>> cells;
+  for (const auto& [k, st] : r.cells) cells.push_back({k, &st});
+  auto rate = [](const CellStats& st) {
+    return double(st.cls_fp + st.cls_fn + st.pred_fp + st.pred_fn) / double(std::max<std::uint64_t>(1, st.n));
+  };
+  std::stable_sort(cells.begin(), cells.end(), [&](const auto& a, const auto& b) {
+    const double ra = rate(*a.second), rb = rate(*b.second);
+    if (ra != rb) return ra > rb;
+    return worst_output(a.first, *a.second).max > worst_output(b.first, *b.second).max;
+  });
+  o << "\nWorst cells (family/scale k; see `cdref describe`):\n\n";
+  std::snprintf(line, sizeof line, "%-20s %-12s %-22s %7s %12s %12s   %-12s %8s %8s %10s\n", "query", "impl",
+                "family/scale", "cases", "wrong fp/fn", "pred fp/fn", "output", "p50", "p99", "max");
+  o << line;
+  int shown = 0;
+  for (const auto& [k, st] : cells) {
+    if (shown++ >= worst_rows) break;
+    const Worst w = worst_output(k, *st);
+    const std::string fam = k.family + "/" + std::to_string(k.scale);
+    const std::string c = std::to_string(st->cls_fp) + "/" + std::to_string(st->cls_fn);
+    const std::string p = std::to_string(st->pred_fp) + "/" + std::to_string(st->pred_fn);
+    std::snprintf(line, sizeof line, "%-20s %-12s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
+                  info(k.query).name, k.impl.c_str(), fam.c_str(), (unsigned long long)st->n, c.c_str(), p.c_str(),
+                  w.group < 0 ? "-" : info(k.query).outputs[w.group].c_str(), num(double(w.p50)).c_str(),
+                  num(double(w.p99)).c_str(), num(double(w.max)).c_str());
+    o << line;
+  }
+  // reproducible examples for the very worst
+  o << "\nExamples (seed " << seed << "; inputs in hex-float, as the implementation received them):\n";
+  shown = 0;
+  for (const auto& [k, st] : cells) {
+    if (shown >= 5) break;
+    const std::size_t n = info(k.query).inputs.size();
+    const Exemplar& e = st->cls_example.set ? st->cls_example : st->pred_example;
+    if (e.set) {
+      o << "  " << info(k.query).name << " " << k.impl << " " << k.family << "/" << k.scale << " case " << e.index
+        << ": " << (st->cls_example.set ? "full query" : "predicate") << " says " << (e.got != 0 ? "yes" : "no")
+        << ", truth " << (e.want != 0 ? "yes" : "no") << "\n    " << inputs_hex(e, n) << "\n";
+      ++shown;
+    }
+  }
+}
+
+void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
+  o << "{\n  \"seed\": " << seed << ",\n  \"cells\": [\n";
+  bool first = true;
+  for (const auto& [k, st] : r.cells) {
+    const QueryInfo& qi = info(k.query);
+    const std::size_t n = qi.inputs.size();
+    o << (first ? "" : ",\n") << "    {\"query\": " << json_str(qi.name) << ", \"impl\": " << json_str(k.impl)
+      << ", \"family\": " << json_str(k.family) << ", \"scale\": " << k.scale << ", \"cases\": " << st.n
+      << ", \"refused\": " << st.refused << ", \"false_positives\": " << st.cls_fp
+      << ", \"false_negatives\": " << st.cls_fn << ", \"predicate_false_positives\": " << st.pred_fp
+      << ", \"predicate_false_negatives\": " << st.pred_fn << ",\n     \"misclassified_example\": ";
+    json_ex(o, st.cls_example, n);
+    o << ", \"predicate_example\": ";
+    json_ex(o, st.pred_example, n);
+    o << ",\n     \"outputs\": {";
+    for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
+      const OutputStats& os = st.out[g];
+      o << (g ? ", " : "") << "\n       " << json_str(qi.outputs[g]) << ": {\"count\": " << os.hist.total()
+        << ", \"nonfinite\": " << os.nonfinite << ", \"p50\": " << os.hist.quantile(0.5)
+        << ", \"p99\": " << os.hist.quantile(0.99) << ", \"max\": " << (os.worst.set ? os.worst.metric : 0)
+        << ", \"histogram_pow2\": {";
+      // powers of two: "0" for exact, then "2^j" for [2^j, 2^(j+1))
+      std::map<int, std::uint64_t> pow2;
+      for (int b = 0; b < Histogram::bins; ++b)
+        if (os.hist.count[b]) {
+          const std::uint64_t lo = Histogram::lower_edge(b);
+          pow2[lo == 0 ? -1 : 63 - std::countl_zero(lo)] += os.hist.count[b];
+        }
+      bool f2 = true;
+      for (const auto& [j, c] : pow2) {
+        o << (f2 ? "" : ", ") << json_str(j < 0 ? "0" : "2^" + std::to_string(j)) << ": " << c;
+        f2 = false;
+      }
+      o << "}, \"worst\": ";
+      json_ex(o, os.worst, n);
+      o << "}";
+    }
+    o << "}}";
+    first = false;
+  }
+  o << "\n  ]\n}\n";
+}
+
+void write_csv(std::ostream& o, const Results& r) {
+  o << "query,impl,family,scale,cases,refused,false_positives,false_negatives,predicate_false_positives,"
+       "predicate_false_negatives,output,count,nonfinite,p50_ulps,p99_ulps,max_ulps,worst_index\n";
+  for (const auto& [k, st] : r.cells) {
+    const QueryInfo& qi = info(k.query);
+    auto head = [&] {
+      o << qi.name << "," << k.impl << "," << k.family << "," << k.scale << "," << st.n << "," << st.refused << ","
+        << st.cls_fp << "," << st.cls_fn << "," << st.pred_fp << "," << st.pred_fn << ",";
+    };
+    if (qi.outputs.empty()) {
+      head();
+      o << ",,,,,,\n";
+    }
+    for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
+      const OutputStats& os = st.out[g];
+      head();
+      o << qi.outputs[g] << "," << os.hist.total() << "," << os.nonfinite << "," << os.hist.quantile(0.5) << ","
+        << os.hist.quantile(0.99) << "," << (os.worst.set ? os.worst.metric : 0) << ","
+        << (os.worst.set ? std::to_string(os.worst.index) : "") << "\n";
+    }
+  }
+}
+
+}  // namespace cdref::cli
