@@ -3,6 +3,7 @@
 #include <atomic>
 #include <bit>
 #include <cdref/error.hpp>
+#include <charconv>
 #include <cdref/fuzz/campaign.hpp>
 #include <cmath>
 #include <cstdio>
@@ -102,18 +103,22 @@ bool Results::operator==(const Results& o) const {
 }
 
 std::uint64_t ulp_distance(double a, double b, int precision) {
-  if (a == 0) a = 0;  // -0 and +0 are one value
-  if (b == 0) b = 0;
-  std::uint64_t ka, kb;
-  if (precision == 24) {
-    const std::uint32_t ua = std::bit_cast<std::uint32_t>(float(a)), ub = std::bit_cast<std::uint32_t>(float(b));
-    ka = (ua >> 31) ? ~ua & 0xffffffffu : ua | 0x80000000u;
-    kb = (ub >> 31) ? ~ub & 0xffffffffu : ub | 0x80000000u;
-  } else {
-    const std::uint64_t ua = std::bit_cast<std::uint64_t>(a), ub = std::bit_cast<std::uint64_t>(b);
-    ka = (ua >> 63) ? ~ua : ua | (1ull << 63);
-    kb = (ub >> 63) ? ~ub : ub | (1ull << 63);
-  }
+  // Keys in the order of the values, with -0 and +0 on one key: 2^63 -+ the magnitude's bits.
+  auto key = [precision](double x) -> std::uint64_t {
+    std::uint64_t mag;
+    bool neg;
+    if (precision == 24) {
+      const std::uint32_t u = std::bit_cast<std::uint32_t>(float(x));
+      mag = u & 0x7fffffffu;
+      neg = (u >> 31) != 0;
+    } else {
+      const std::uint64_t u = std::bit_cast<std::uint64_t>(x);
+      mag = u & 0x7fffffffffffffffull;
+      neg = (u >> 63) != 0;
+    }
+    return neg ? (1ull << 63) - mag : (1ull << 63) + mag;
+  };
+  const std::uint64_t ka = key(a), kb = key(b);
   return ka > kb ? ka - kb : kb - ka;
 }
 
@@ -381,15 +386,27 @@ Saved deserialize(const std::string& text, const std::string& source) {
   auto fail = [&](const std::string& why) {
     throw std::runtime_error(source + ":" + std::to_string(lineno) + ": " + why);
   };
+  auto number = [&](const std::string& t) -> std::uint64_t {
+    std::uint64_t x = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+    if (ec != std::errc() || end != t.data() + t.size() || t.empty()) fail("malformed number '" + t + "'");
+    return x;
+  };
+  auto real = [&](const std::string& t) {
+    char* end = nullptr;
+    const double x = std::strtod(t.c_str(), &end);
+    if (t.empty() || end != t.c_str() + t.size()) fail("malformed number '" + t + "'");
+    return x;
+  };
   auto read_ex = [&](std::istringstream& ls, Exemplar& e) {
     std::string got, want;
     if (!(ls >> e.metric >> e.index >> got >> want)) fail("malformed example record");
-    e.got = std::strtod(got.c_str(), nullptr);
-    e.want = std::strtod(want.c_str(), nullptr);
+    e.got = real(got);
+    e.want = real(want);
     for (std::size_t i = 0; i < n_in; ++i) {
       std::string x;
       if (!(ls >> x)) fail("example record has too few inputs");
-      e.inputs[i] = std::strtod(x.c_str(), nullptr);
+      e.inputs[i] = real(x);
     }
     e.set = true;
   };
@@ -432,8 +449,8 @@ Saved deserialize(const std::string& text, const std::string& source) {
           read_ex(ls, cur->cls_example);
         else if (which == "pred")
           read_ex(ls, cur->pred_example);
-        else if (which.rfind("out", 0) == 0 && which.size() > 3 && std::stoul(which.substr(3)) < max_values)
-          read_ex(ls, cur->out[std::stoul(which.substr(3))].worst);
+        else if (which.rfind("out", 0) == 0 && number(which.substr(3)) < max_values)
+          read_ex(ls, cur->out[number(which.substr(3))].worst);
         else
           fail("unknown example kind '" + which + "'");
       } else {
@@ -443,9 +460,9 @@ Saved deserialize(const std::string& text, const std::string& source) {
         while (ls >> bc) {
           const auto colon = bc.find(':');
           if (colon == std::string::npos) fail("malformed histogram bin '" + bc + "'");
-          const int b = std::stoi(bc.substr(0, colon));
-          if (b < 0 || b >= Histogram::bins) fail("histogram bin out of range");
-          cur->out[g].hist.count[b] = std::stoull(bc.substr(colon + 1));
+          const std::uint64_t b = number(bc.substr(0, colon));
+          if (b >= std::uint64_t(Histogram::bins)) fail("histogram bin out of range");
+          cur->out[g].hist.count[b] = number(bc.substr(colon + 1));
         }
       }
     } else if (tag == "end") {

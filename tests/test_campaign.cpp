@@ -1,0 +1,228 @@
+// tests/test_campaign.cpp - the campaign engine: reproducible cases, shards that merge into
+// exactly the unsharded result, resumption after a real kill with exactly the totals of an
+// uninterrupted run, the text form, and the drift the engine must see.
+#include <catch2/catch.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace cdref::fuzz;
+
+namespace {
+
+Spec small_spec() {
+  Spec s;
+  s.queries = {Query::segment_sphere_cast, Query::sphere_box, Query::box_box, Query::ray_box_cast};
+  s.impls = {"book-float", "book-double"};
+  s.families = {"near-tangent", "near-touching", "grazing", "degenerate"};
+  s.scales = {0, 8, 24, 52};
+  s.n = 700;  // not a multiple of the block size: the last block is partial
+  s.seed = 42;
+  s.threads = 2;
+  return s;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("case i of a cell is a pure function of (seed, query, family, scale, i)", "[campaign]") {
+  for (Query q : all_queries())
+    for (const Family& f : families(q)) {
+      const int k = f.scales.back();
+      const Inputs a = make_case(7, q, f, k, 12345), b = make_case(7, q, f, k, 12345);
+      REQUIRE(a == b);
+      REQUIRE_FALSE(a == make_case(7, q, f, k, 12346));
+      REQUIRE_FALSE(a == make_case(8, q, f, k, 12345));
+    }
+}
+
+TEST_CASE("every family of every query makes valid inputs, and all of them run", "[campaign]") {
+  Spec s;
+  s.queries = all_queries();
+  s.impls = {"book-double"};
+  s.n = 40;
+  s.threads = 2;
+  const Results r = run(s);
+  std::size_t cells = 0;
+  for (Query q : all_queries())
+    for (const Family& f : families(q)) cells += f.scales.size();
+  REQUIRE(r.cells.size() == cells);
+  for (const auto& [k, st] : r.cells) {
+    INFO(info(k.query).name << " " << k.family << "/" << k.scale);
+    REQUIRE(st.n == 40);
+    REQUIRE(st.refused == 0);  // double takes every generated input
+  }
+}
+
+TEST_CASE("shards merge into exactly the unsharded result, whatever the thread count", "[campaign]") {
+  const Spec whole = small_spec();
+  const Results all = run(whole);
+  Spec one_thread = whole;
+  one_thread.threads = 1;
+  REQUIRE(run(one_thread) == all);
+
+  std::vector<Saved> parts;
+  for (int k = 0; k < 3; ++k) {
+    Spec s = whole;
+    s.shard = k;
+    s.shards = 3;
+    s.threads = 1 + k % 2;
+    const Results r = run(s);
+    // through the text form, as `cdref merge` reads them
+    parts.push_back(deserialize(serialize(s, r, total_items(s)), "shard" + std::to_string(k)));
+  }
+  REQUIRE_FALSE(parts[0].results == all);
+  const Results merged = merge_shards(parts);
+  REQUIRE(merged == all);
+  std::uint64_t cases = 0, hist = 0;
+  for (const auto& [k, st] : merged.cells) {
+    cases += st.n;
+    for (const auto& o : st.out) hist += o.hist.total();
+  }
+  REQUIRE(cases == 2 * 700 * all.cells.size() / 2);  // every case of every cell, once
+  REQUIRE(hist > 0);
+
+  SECTION("merge refuses what is not one whole campaign") {
+    std::vector<Saved> missing(parts.begin(), parts.begin() + 2);
+    REQUIRE_THROWS_WITH(merge_shards(missing), Catch::Contains("shard 2/3 is missing"));
+    std::vector<Saved> twice = {parts[0], parts[0], parts[1], parts[2]};
+    REQUIRE_THROWS_WITH(merge_shards(twice), Catch::Contains("given twice"));
+    std::vector<Saved> partial = parts;
+    partial[1].items_done -= 1;
+    REQUIRE_THROWS_WITH(merge_shards(partial), Catch::Contains("incomplete"));
+    std::vector<Saved> other = parts;
+    other[2].fingerprint += "x";
+    REQUIRE_THROWS_WITH(merge_shards(other), Catch::Contains("different campaigns"));
+  }
+}
+
+TEST_CASE("the text form round-trips, and a malformed file is refused by line", "[campaign]") {
+  const Spec s = small_spec();
+  const Results r = run(s);
+  const std::string text = serialize(s, r, total_items(s));
+  const Saved back = deserialize(text, "results.txt");
+  REQUIRE(back.results == r);
+  REQUIRE(back.fingerprint == s.fingerprint());
+  REQUIRE(serialize(s, back.results, total_items(s)) == text);
+
+  std::string bad = text;
+  const auto at = bad.find("\ncell ") + 1;
+  bad.insert(at, "cell sphere-sphere book-double uniform 0 x\n");
+  const int line = int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1;
+  REQUIRE_THROWS_WITH(deserialize(bad, "results.txt"),
+                      Catch::Contains("results.txt:" + std::to_string(line) + ": malformed cell record"));
+  REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.rfind("end\n")), "cut.txt"), Catch::Contains("truncated"));
+  REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.size() / 2), "cut.txt"), Catch::Contains("cut.txt:"));
+  REQUIRE_THROWS_WITH(deserialize("hello\n", "x.txt"), Catch::Contains("x.txt:1: not a cdref results file"));
+}
+
+TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterrupted totals", "[campaign][kill]") {
+  // The real thing: the cdref executable runs a campaign with a checkpoint, is killed with
+  // SIGKILL once the checkpoint shows progress, and is resumed.
+  const std::string ck = "kill_test.checkpoint";
+  std::remove(ck.c_str());
+  const std::vector<std::string> args = {CDREF_EXE, "campaign", "--query", "segment-sphere-cast", "--query",
+                                         "sphere-sphere", "--family", "near-tangent", "--family", "near-touching",
+                                         "--scale", "8", "--scale", "24", "--n", "8000", "--seed", "9", "--threads", "2", "--checkpoint", ck,
+                                         "--quiet"};
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(CDREF_EXE, argv.data());
+    _exit(127);
+  }
+  Saved at_kill;
+  bool killed_mid_way = false;
+  for (int tries = 0; tries < 6000; ++tries) {  // up to 60 s
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    try {
+      at_kill = deserialize(slurp(ck), ck);
+    } catch (const std::exception&) {
+      continue;  // not written yet
+    }
+    if (at_kill.items_done > 0) {
+      kill(pid, SIGKILL);
+      killed_mid_way = at_kill.items_done < at_kill.items_total;
+      break;
+    }
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  REQUIRE(WIFSIGNALED(status));
+  REQUIRE(WTERMSIG(status) == SIGKILL);
+  REQUIRE(killed_mid_way);
+
+  Spec s;
+  s.queries = {Query::segment_sphere_cast, Query::sphere_sphere};
+  s.impls = {"book-float", "book-double"};
+  s.families = {"near-tangent", "near-touching"};
+  s.scales = {8, 24};
+  s.n = 8000;
+  s.seed = 9;
+  s.threads = 2;
+  s.checkpoint = ck;
+  s.resume = true;
+  const Saved before = deserialize(slurp(ck), ck);  // whatever the last complete checkpoint holds
+  REQUIRE(before.items_done < before.items_total);
+  const Results resumed = run(s);
+  Spec plain = s;
+  plain.checkpoint.clear();
+  plain.resume = false;
+  REQUIRE(resumed == run(plain));
+  std::remove(ck.c_str());
+
+  Spec other = s;
+  other.seed = 10;
+  std::ofstream(ck) << serialize(plain, Results{}, 0);
+  REQUIRE_THROWS_WITH(run(other), Catch::Contains("belongs to another campaign"));
+  std::remove(ck.c_str());
+}
+
+TEST_CASE("the engine sees the book's long-range failure near tangency", "[campaign][drift]") {
+  // Segments passing within 1e-9 radii of tangency: from 1 radius away double is always
+  // right (its error in sigma is ~1e-16 of the band); from 1e4 radii its error in
+  // sigma, ~R^2 2^-53 = 1e-8 relative, is ten times the band, and a large share flips.
+  Spec s;
+  s.queries = {Query::segment_sphere_cast};
+  s.impls = {"book-double"};
+  s.families = {"tangent-at-range"};
+  s.scales = {0, 4};
+  s.n = 2000;
+  s.threads = 2;
+  const Results r = run(s);
+  const CellStats& near = r.cells.at({Query::segment_sphere_cast, "book-double", "tangent-at-range", 0});
+  const CellStats& far = r.cells.at({Query::segment_sphere_cast, "book-double", "tangent-at-range", 4});
+  REQUIRE(near.cls_fp + near.cls_fn == 0);
+  const double share = double(far.cls_fp + far.cls_fn) / double(far.n);
+  INFO("misclassified at 1e4 radii: " << share);
+  REQUIRE(share > 0.25);
+}
+
+TEST_CASE("histogram quantiles are exact below 16 ulps and within an eighth of a power of two above",
+          "[campaign]") {
+  Histogram h;
+  for (std::uint64_t d = 0; d < 100; ++d) h.add(d);
+  REQUIRE(h.quantile(0.10) == 9);
+  REQUIRE(h.quantile(0.5) == 48);  // 49 falls in [48, 52)
+  REQUIRE(Histogram::bin_of(std::uint64_t(1) << 63) == Histogram::bins - 8);
+  REQUIRE(Histogram::lower_edge(Histogram::bin_of(1000)) == 960);
+  REQUIRE(ulp_distance(1.0, std::nextafter(1.0, 2.0), 53) == 1);
+  REQUIRE(ulp_distance(-0.0, 0.0, 53) == 0);
+  REQUIRE(ulp_distance(1.0, double(std::nextafter(1.0f, 2.0f)), 24) == 1);
+  REQUIRE(ulp_distance(-std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::denorm_min(), 53) ==
+          2);
+}
