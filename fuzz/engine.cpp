@@ -350,12 +350,17 @@ void put_ex(std::ostream& o, const char* tag, const Exemplar& e, std::size_t n_i
 }  // namespace
 
 std::string serialize(const Spec& spec, const Results& r, std::uint64_t items_done) {
+  return serialize(Saved{spec.fingerprint(), spec.shard, spec.shards, items_done, total_items(spec), r, spec.seed});
+}
+
+std::string serialize(const Saved& saved) {
   std::ostringstream o;
   o << "cdref-results 1\n";
-  o << "fingerprint " << spec.fingerprint() << "\n";
-  o << "shard " << spec.shard << " " << spec.shards << "\n";
-  o << "items " << items_done << " " << total_items(spec) << "\n";
-  for (const auto& [k, st] : r.cells) {
+  o << "fingerprint " << saved.fingerprint << "\n";
+  o << "shard " << saved.shard << " " << saved.shards << "\n";
+  o << "items " << saved.items_done << " " << saved.items_total << "\n";
+  o << "seed " << saved.seed << "\n";
+  for (const auto& [k, st] : saved.results.cells) {
     const QueryInfo& qi = info(k.query);
     const std::size_t n_in = qi.inputs.size();
     o << "cell " << qi.name << " " << k.impl << " " << k.family << " " << k.scale << " " << st.n << " " << st.refused
@@ -422,6 +427,8 @@ Saved deserialize(const std::string& text, const std::string& source) {
       std::getline(ls >> std::ws, s.fingerprint);
     } else if (tag == "shard") {
       if (!(ls >> s.shard >> s.shards)) fail("malformed shard record");
+    } else if (tag == "seed") {
+      if (!(ls >> s.seed)) fail("malformed seed record");
     } else if (tag == "items") {
       if (!(ls >> s.items_done >> s.items_total)) fail("malformed items record");
     } else if (tag == "cell") {

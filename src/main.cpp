@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "casefiles.hpp"
 #include "report.hpp"
 
 int run_demo();
@@ -48,6 +49,14 @@ const char* usage = R"(usage:
   cdref merge [--out F] [--json F] [--csv F] FILE...
                                  merge complete shard files of one campaign
   cdref describe                 list queries, input and output columns, families and scales
+  cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
+                                 write case inputs as CSV (hex-float; --decimal: 17 digits)
+  cdref cases --describe Q       the case and answer columns of query Q
+  cdref oracle --query Q [--cases F] [--precision 24|53] [--decimal] [--out F]
+                                 the exact answers to a case file, correctly rounded
+                                 (24: for the inputs rounded to float, as float)
+  cdref score --query Q --cases F --answers A [--precision 24|53]
+                                 grade an answer file (any subset of the answer columns)
   cdref demo                     the chapter's algorithms beside the exact answer on hard cases
 )";
 
@@ -213,22 +222,11 @@ int merge(Args& a) {
     }
   }
   const Results r = merge_shards(shards);
-  if (!out.empty()) {
-    // the merged result is the unsharded campaign's: shard 0 of 1, complete
-    std::string text;
-    {
-      std::ostringstream o;
-      o << "cdref-results 1\nfingerprint " << shards.front().fingerprint << "\nshard 0 1\nitems "
-        << shards.front().items_total << " " << shards.front().items_total << "\n";
-      text = o.str();
-    }
-    // reuse the cell records of serialize() by serialising through a spec-free path
-    Spec dummy;
-    std::string body = serialize(dummy, r, 0);
-    body = body.substr(body.find("\ncell ") == std::string::npos ? body.find("end\n") : body.find("\ncell ") + 1);
-    write_to(out, text + body);
-  }
-  emit(r, 0, "", json, csv, false, nullptr);
+  // the merged result is the unsharded campaign's: shard 0 of 1, complete
+  if (!out.empty())
+    write_to(out, serialize(Saved{shards.front().fingerprint, 0, 1, shards.front().items_total,
+                                  shards.front().items_total, r, shards.front().seed}));
+  emit(r, shards.front().seed, "", json, csv, false, nullptr);
   return 0;
 }
 
@@ -262,6 +260,9 @@ int main(int argc, char* argv[]) {
     if (cmd == "merge") return merge(a);
     if (cmd == "describe") return describe();
     if (cmd == "demo") return run_demo();
+    if (cmd == "cases") return cli::cases_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "oracle") return cli::oracle_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "score") return cli::score_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << usage;
       return 0;

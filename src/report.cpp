@@ -65,6 +65,16 @@ void json_ex(std::ostream& o, const Exemplar& e, std::size_t n) {
 
 }  // namespace
 
+std::map<int, std::uint64_t> by_power_of_two(const Histogram& h) {
+  std::map<int, std::uint64_t> pow2;
+  for (int b = 0; b < Histogram::bins; ++b)
+    if (h.count[b]) {
+      const std::uint64_t lo = Histogram::lower_edge(b);
+      pow2[lo == 0 ? -1 : 63 - std::countl_zero(lo)] += h.count[b];
+    }
+  return pow2;
+}
+
 void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int worst_rows) {
   // per (query, implementation)
   struct Sum {
@@ -167,14 +177,8 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
         << ", \"p99\": " << os.hist.quantile(0.99) << ", \"max\": " << (os.worst.set ? os.worst.metric : 0)
         << ", \"histogram_pow2\": {";
       // powers of two: "0" for exact, then "2^j" for [2^j, 2^(j+1))
-      std::map<int, std::uint64_t> pow2;
-      for (int b = 0; b < Histogram::bins; ++b)
-        if (os.hist.count[b]) {
-          const std::uint64_t lo = Histogram::lower_edge(b);
-          pow2[lo == 0 ? -1 : 63 - std::countl_zero(lo)] += os.hist.count[b];
-        }
       bool f2 = true;
-      for (const auto& [j, c] : pow2) {
+      for (const auto& [j, c] : by_power_of_two(os.hist)) {
         o << (f2 ? "" : ", ") << json_str(j < 0 ? "0" : "2^" + std::to_string(j)) << ": " << c;
         f2 = false;
       }

@@ -182,7 +182,9 @@ struct Saved {
   int shard = 0, shards = 1;
   std::uint64_t items_done = 0, items_total = 0;
   Results results;
+  std::uint64_t seed = 0;
 };
+std::string serialize(const Saved& saved);
 std::string serialize(const Spec& spec, const Results& r, std::uint64_t items_done);
 // Throws std::runtime_error naming the source, the line number and the problem.
 Saved deserialize(const std::string& text, const std::string& source);

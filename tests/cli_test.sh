@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# tests/cli_test.sh CDREF - the command line end to end: case files (cases, oracle, score,
+# partial answer files, malformed lines), shards and merge, errors by name.
+set -euo pipefail
+cdref="$1"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# every query: cases -> oracle -> score grades the oracle as exact
+for q in sphere-sphere segment-sphere-cast ray-sphere-cast segment-sphere box-box segment-box-cast ray-box-cast sphere-box; do
+  "$cdref" cases --query "$q" --family degenerate --n 60 --seed 3 --out c.csv
+  [ "$(wc -l < c.csv)" = 61 ] || fail "$q: cases wrote $(wc -l < c.csv) lines"
+  "$cdref" oracle --query "$q" --cases c.csv --out a.csv
+  "$cdref" score --query "$q" --cases c.csv --answers a.csv > s.txt
+  grep -q "60 answered and graded, 0 unanswered, 0 malformed" s.txt || fail "$q: score: $(head -1 s.txt)"
+  # every graded column exact: p50 = p99 = max = 0 and no misclassification
+  awk 'NR>3 && $1 != "(wrong:" { if ($3 != "-" && $3 != "0/0") bad=1; if ($5 != 0 || $6 != 0 || $7 != 0) bad=1 } END { exit bad }' s.txt \
+    || fail "$q: the oracle does not score as exact: $(cat s.txt)"
+  # decimal cases read back to the same answers
+  "$cdref" cases --query "$q" --family degenerate --n 60 --seed 3 --decimal --out cd.csv
+  "$cdref" oracle --query "$q" --cases cd.csv --out ad.csv
+  cmp -s a.csv ad.csv || fail "$q: decimal case file gives other answers"
+  "$cdref" cases --describe "$q" | grep -q "answer file columns: case," || fail "$q: --describe"
+done
+
+# a partial answer file with a wrong value, a malformed line and a missing answer
+q=segment-sphere-cast
+"$cdref" cases --query $q --family near-tangent --scale 52 --n 50 --seed 5 --out c.csv
+"$cdref" oracle --query $q --cases c.csv --out a.csv
+awk -F, 'BEGIN{OFS=","} NR==1 {print "case","hit","lambda_enter"; next}
+         NR==3 {print $1, 1-$2, $4; next}      # case 1: classification flipped
+         NR==5 {print $1, $2; next}            # case 3: a malformed line (one field short)
+         NR==7 {next}                          # case 5: no answer
+         {print $1, $2, $4}' a.csv > partial.csv
+set +e
+"$cdref" score --query $q --cases c.csv --answers partial.csv > s.txt 2> err.txt
+status=$?
+set -e
+[ $status = 1 ] || fail "score with a malformed line exited $status"
+grep -q "partial.csv:5: expected 3 fields, found 2" err.txt || fail "malformed line not named: $(cat err.txt)"
+grep -q "50 cases, 48 answered and graded, 2 unanswered, 1 malformed" s.txt || fail "partial: $(head -1 s.txt)"
+grep -Eq "^hit +48 +[01]/[01]" s.txt || fail "partial: hit row: $(cat s.txt)"
+! grep -q "^point_x" s.txt || fail "partial: an ungraded column was graded"
+grep -q "^lambda_enter" s.txt || fail "partial: lambda_enter not graded"
+
+# a malformed case line is reported and skipped; the rest still answered
+awk 'NR==4 {print "3,x,0,1,2"; next} {print}' c.csv > badc.csv
+set +e
+"$cdref" oracle --query $q --cases badc.csv --out a2.csv 2> err.txt
+status=$?
+set -e
+[ $status = 1 ] || fail "oracle with a malformed case exited $status"
+grep -q "badc.csv:4: expected 13 fields, found 5" err.txt || fail "malformed case not named: $(cat err.txt)"
+[ "$(wc -l < a2.csv)" = 50 ] || fail "oracle lost the other cases"
+
+# shards merge into exactly the unsharded result
+args=(campaign --query sphere-box --query ray-box-cast --family near-touching --family grazing --n 300 --seed 4 --quiet)
+"$cdref" "${args[@]}" --out whole.txt --json whole.json
+"$cdref" "${args[@]}" --shard 0/2 --out s0.txt
+"$cdref" "${args[@]}" --shard 1/2 --out s1.txt --threads 1
+"$cdref" merge --out merged.txt --json merged.json s1.txt s0.txt > /dev/null
+cmp -s whole.txt merged.txt || fail "merged shards differ from the unsharded run"
+cmp -s whole.json merged.json || fail "merged JSON differs"
+set +e
+"$cdref" merge s0.txt > /dev/null 2> err.txt
+status=$?
+set -e
+[ $status = 2 ] && grep -q "shard 1/2 is missing" err.txt || fail "merge of one shard: $status $(cat err.txt)"
+
+# errors by name
+set +e
+"$cdref" campaign --query sphere-cube 2> err.txt; s1=$?
+"$cdref" campaign --n -5 2>> err.txt; s2=$?
+"$cdref" campaign --query box-box --family grazing 2>> err.txt; s3=$?
+set -e
+[ $s1 = 2 ] && [ $s2 = 2 ] && [ $s3 = 2 ] || fail "bad options did not fail: $s1 $s2 $s3"
+grep -q "unknown query 'sphere-cube'" err.txt || fail "unknown query message"
+grep -q "\-\-n wants a nonnegative whole number, not '-5'" err.txt || fail "bad --n message"
+grep -q "no family 'grazing' for query box-box" err.txt || fail "unknown family message"
+
+# JSON and CSV are produced and well-formed enough to parse
+python3 -c "import json,sys; d=json.load(open('whole.json')); assert len(d['cells'])>0" || fail "JSON does not parse"
+"$cdref" "${args[@]}" --csv out.csv
+head -1 out.csv | grep -q "^query,impl,family,scale,cases" || fail "CSV header"
+echo "cli: all checks passed"
