@@ -2,7 +2,10 @@
 # Installs what cdref needs from Debian 12's packages, only when something is missing
 # (so it is quick on a machine that has them). Runs as root, or through sudo.
 set -euo pipefail
-pkgs=(cmake ninja-build g++ libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libmpfrc++-dev libboost-dev)
+# Extra package names may be given as arguments (the fuzz build adds clang's).
+pkgs=(cmake ninja-build g++ libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libmpfrc++-dev libboost-dev python3
+      gnuplot-nox)
+[ $# -gt 0 ] && pkgs=("$@")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

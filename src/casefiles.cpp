@@ -149,15 +149,9 @@ struct Out {
   }
 };
 
-struct CaseRow {
-  std::uint64_t id;
-  Inputs in{};
-};
+}  // namespace
 
-// Reads a case file; malformed lines are reported and counted, the others kept.
-std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad) {
-  std::ifstream f;
-  std::istream& in = open_in(path, f);
+std::vector<CaseRow> parse_cases(Query q, std::istream& in, const std::string& path, int& bad) {
   const QueryInfo& qi = info(q);
   std::string line;
   int lineno = 0;
@@ -208,6 +202,11 @@ std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad) {
   return rows;
 }
 
+namespace {
+std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad) {
+  std::ifstream f;
+  return parse_cases(q, open_in(path, f), path, bad);
+}
 }  // namespace
 
 int cases_command(std::vector<std::string> args) {

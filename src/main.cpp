@@ -57,6 +57,9 @@ const char* usage = R"(usage:
                                  (24: for the inputs rounded to float, as float)
   cdref score --query Q --cases F --answers A [--precision 24|53]
                                  grade an answer file (any subset of the answer columns)
+  cdref plot --query Q --family F [--output O] [--n N] [--seed S] [--out F.svg]
+                                 drift against scale as SVG (gnuplot): misclassified share
+                                 and p99/max ulps of output O, book-float and book-double
   cdref demo                     the chapter's algorithms beside the exact answer on hard cases
 )";
 
@@ -263,6 +266,7 @@ int main(int argc, char* argv[]) {
     if (cmd == "cases") return cli::cases_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "oracle") return cli::oracle_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "score") return cli::score_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "plot") return cli::plot_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << usage;
       return 0;

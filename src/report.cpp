@@ -195,7 +195,9 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
 void write_csv(std::ostream& o, const Results& r) {
   o << "query,impl,family,scale,cases,refused,false_positives,false_negatives,predicate_false_positives,"
        "predicate_false_negatives,output,count,nonfinite,p50_ulps,p99_ulps,max_ulps,worst_index\n";
-  for (const auto& [k, st] : r.cells) {
+  for (const auto& cell : r.cells) {
+    const CellKey& k = cell.first;
+    const CellStats& st = cell.second;
     const QueryInfo& qi = info(k.query);
     auto head = [&] {
       o << qi.name << "," << k.impl << "," << k.family << "," << k.scale << "," << st.n << "," << st.refused << ","

@@ -1,0 +1,59 @@
+// bench/bench_campaign.cpp - throughput of a ray-sphere campaign (the book at double against
+// the exact truth), in cases per second on one core, and what it is made of: case
+// generation, the book at double, the exact truth. Ratios from one run are the figures to
+// quote; Debian's libbenchmark is a debug build (its own overhead is per iteration, small
+// next to these bodies).
+#include <benchmark/benchmark.h>
+
+#include <cdref/fuzz/campaign.hpp>
+
+using namespace cdref::fuzz;
+
+namespace {
+
+const Family& fam(const char* name) { return family_by_name(Query::segment_sphere_cast, name); }
+
+void campaign(benchmark::State& st, const char* family) {
+  const std::uint64_t n = 4096;
+  Spec s;
+  s.queries = {Query::segment_sphere_cast};
+  s.impls = {"book-double"};
+  s.families = {family};
+  s.scales = {fam(family).scales.front()};
+  s.n = n;
+  s.threads = 1;
+  for (auto _ : st) benchmark::DoNotOptimize(run(s));
+  st.SetItemsProcessed(st.iterations() * std::int64_t(n));
+}
+
+void generate(benchmark::State& st) {
+  std::uint64_t i = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i++));
+  st.SetItemsProcessed(st.iterations());
+}
+
+void book_double(benchmark::State& st) {
+  const Implementation& im = implementation_by_name("book-double");
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  std::size_t k = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(im.run(Query::segment_sphere_cast, cases[k++ & 1023]));
+  st.SetItemsProcessed(st.iterations());
+}
+
+void exact_truth(benchmark::State& st) {
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  std::size_t k = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(truth(Query::segment_sphere_cast, cases[k++ & 1023], 53));
+  st.SetItemsProcessed(st.iterations());
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(campaign, uniform, "uniform")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign, long_range, "long-range")->Unit(benchmark::kMillisecond);
+BENCHMARK(generate);
+BENCHMARK(book_double);
+BENCHMARK(exact_truth);
+BENCHMARK_MAIN();

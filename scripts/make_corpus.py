@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of the fuzz targets (fuzz/corpus/), reproducibly.
+
+usage: scripts/make_corpus.py CDREF
+
+For each query: two cases of every family (from `cdref cases`), encoded as the fuzz
+targets decode them (a mode byte 0xff then 8 raw bytes per input), plus small exact
+cases in the dyadic encoding (a mode byte k < 192, then an int8: the value int8 / 2^(k%8)).
+For the case-file reader: small case files, good and malformed.
+"""
+import os, struct, subprocess, sys
+
+cdref = sys.argv[1]
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus")
+queries = ["sphere-sphere", "segment-sphere-cast", "ray-sphere-cast", "segment-sphere", "box-box",
+           "segment-box-cast", "ray-box-cast", "sphere-box"]
+
+def run(*args):
+    return subprocess.run([cdref, *args], check=True, capture_output=True, text=True).stdout
+
+def families(q):
+    out = run("describe")
+    fams, inside = [], False
+    for line in out.splitlines():
+        if line.startswith(q + ":"):
+            inside = True
+        elif not line.startswith(" ") and inside:
+            break
+        elif inside and line.startswith("    "):
+            fams.append(line.split()[0])
+    return fams
+
+def dyadic(values):
+    return b"".join(bytes([0, v & 0xff]) for v in values)
+
+# small exact cases: inputs as integers (touching, tangent, through the centre, zero sizes)
+exact = {
+    "sphere-sphere": [[0, 0, 0, 1, 2, 0, 0, 1], [1, 2, 3, 1, 1, 2, 3, 2], [0, 0, 0, 0, 0, 0, 0, 0]],
+    "segment-sphere-cast": [[-2, 1, 0, 2, 1, 0, 0, 0, 0, 1], [1, 0, 0, 2, 0, 0, 0, 0, 0, 1], [0, 0, 0, 0, 0, 0, 0, 0, 0, 0]],
+    "ray-sphere-cast": [[-5, 0, 1, 1, 0, 0, 0, 0, 0, 1], [0, 0, 0, 0, 0, 1, 0, 0, 0, 1], [1, 1, 1, 0, 0, 0, 0, 0, 0, 1]],
+    "segment-sphere": [[-1, 0, 0, 1, 0, 0, 0, 0, 0, 1], [0, 0, 0, 0, 0, 0, 0, 0, 0, 1], [-1, 2, 0, 1, 2, 0, 0, 0, 0, 2]],
+    "box-box": [[0, 0, 0, 1, 1, 1, 2, 2, 0, 1, 1, 1], [0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 1, 1]],
+    "segment-box-cast": [[-2, -3, 0, 0, -1, 0, 0, 0, 0, 1, 2, 3], [-3, 0, 3, 3, 0, 3, 0, 0, 0, 1, 2, 3], [1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 2, 3]],
+    "ray-box-cast": [[-3, 2, 0, 1, 0, 0, 0, 0, 0, 1, 2, 3], [0, 0, 3, 0, 0, 1, 0, 0, 0, 1, 2, 3], [0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1]],
+    "sphere-box": [[3, 5, 9, 7, 0, 0, 0, 1, 2, 3], [1, 0, 0, 1, 0, 0, 0, 1, 2, 3], [0, 0, 0, 1, 0, 0, 0, 0, 0, 0]],
+}
+
+for q in queries:
+    d = os.path.join(root, q)
+    os.makedirs(d, exist_ok=True)
+    for fam in families(q):
+        lines = run("cases", "--query", q, "--family", fam, "--n", "2", "--seed", "11").splitlines()
+        header = lines[0].split(",")
+        for row in lines[1:]:
+            cells = row.split(",")
+            data = b"".join(b"\xff" + struct.pack("<d", float.fromhex(c)) for c in cells[3:])
+            with open(os.path.join(d, f"{fam}-{cells[0]}.bin"), "wb") as f:
+                f.write(data)
+    for i, vals in enumerate(exact[q]):
+        with open(os.path.join(d, f"exact-{i}.bin"), "wb") as f:
+            f.write(dyadic(vals))
+    # non-finite inputs, which must be refused
+    with open(os.path.join(d, "nan.bin"), "wb") as f:
+        f.write(b"\xff" + struct.pack("<d", float("nan")) + dyadic(exact[q][0][1:]))
+
+d = os.path.join(root, "casefile")
+os.makedirs(d, exist_ok=True)
+good = run("cases", "--query", "segment-sphere-cast", "--n", "3", "--seed", "2")
+samples = {
+    "good-hex": bytes([1]) + good.encode(),
+    "good-decimal": bytes([1]) + run("cases", "--query", "segment-sphere-cast", "--n", "3", "--decimal").encode(),
+    "short-line": bytes([1]) + (good + "7,uniform,0,1,2\n").encode(),
+    "bad-number": bytes([1]) + (good + "8,uniform,0,x,1,2,3,4,5,6,7,8,9\n").encode(),
+    "no-header": bytes([0]) + b"1,2,3\n",
+    "empty": bytes([2]),
+}
+for name, data in samples.items():
+    with open(os.path.join(d, name + ".txt"), "wb") as f:
+        f.write(data)
