@@ -45,7 +45,7 @@ std::uint64_t Histogram::quantile(double q) const {
   return lower_edge(bins - 1);
 }
 
-void Exemplar::offer(std::uint64_t m, std::uint64_t i, const Inputs& in, double g, double w) {
+void Exemplar::offer(std::uint64_t m, std::uint64_t i, const Inputs& in, long double g, long double w) {
   if (set && (m < metric || (m == metric && i >= index))) return;
   set = true;
   metric = m;
@@ -76,12 +76,14 @@ void Results::merge(const Results& o) {
 }
 
 namespace {
+bool same_value(long double a, long double b) {
+  return (a == b && std::signbit(a) == std::signbit(b)) || (std::isnan(a) && std::isnan(b));
+}
 bool same(const Exemplar& a, const Exemplar& b) {
   if (a.set != b.set) return false;
   if (!a.set) return true;
   return a.metric == b.metric && a.index == b.index && a.inputs == b.inputs &&
-         std::bit_cast<std::uint64_t>(a.got) == std::bit_cast<std::uint64_t>(b.got) &&
-         std::bit_cast<std::uint64_t>(a.want) == std::bit_cast<std::uint64_t>(b.want);
+         same_value(a.got, b.got) && same_value(a.want, b.want);
 }
 }  // namespace
 
@@ -102,8 +104,34 @@ bool Results::operator==(const Results& o) const {
   return true;
 }
 
-std::uint64_t ulp_distance(double a, double b, int precision) {
+std::uint64_t ulp_distance(long double a, long double b, int precision) {
   // Keys in the order of the values, with -0 and +0 on one key: 2^63 -+ the magnitude's bits.
+  if (precision == 64) {
+    // x87 extended: order by (biased exponent, significand); subnormals have exponent 0
+    auto key = [](long double x) -> unsigned __int128 {
+      const bool neg = std::signbit(x);
+      x = std::fabs(x);
+      unsigned __int128 mag;
+      if (std::isinf(x)) {
+        mag = static_cast<unsigned __int128>(32767) << 63;
+      } else if (x == 0) {
+        mag = 0;
+      } else {
+        int e;
+        const long double m = std::frexp(x, &e);  // [0.5, 1)
+        if (e >= -16381) {                        // normal: significand 2^63 + fraction
+          const auto sig = static_cast<std::uint64_t>(std::ldexp(m, 64));
+          mag = (static_cast<unsigned __int128>(e + 16382) << 63) | (sig & 0x7fffffffffffffffull);
+        } else {  // subnormal: the significand alone
+          mag = static_cast<std::uint64_t>(std::ldexp(x, 16382 + 63));
+        }
+      }
+      const unsigned __int128 mid = static_cast<unsigned __int128>(1) << 80;
+      return neg ? mid - mag : mid + mag;
+    };
+    const unsigned __int128 ka = key(a), kb = key(b), d = ka > kb ? ka - kb : kb - ka;
+    return d > ~std::uint64_t(0) ? ~std::uint64_t(0) : static_cast<std::uint64_t>(d);
+  }
   auto key = [precision](double x) -> std::uint64_t {
     std::uint64_t mag;
     bool neg;
@@ -118,7 +146,7 @@ std::uint64_t ulp_distance(double a, double b, int precision) {
     }
     return neg ? (1ull << 63) - mag : (1ull << 63) + mag;
   };
-  const std::uint64_t ka = key(a), kb = key(b);
+  const std::uint64_t ka = key(double(a)), kb = key(double(b));
   return ka > kb ? ka - kb : kb - ka;
 }
 
@@ -167,22 +195,21 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   const QueryInfo& qi = info(cell.q);
   const Inputs in = make_case(seed, cell.q, *cell.family, cell.scale, i);
   const Inputs in_f = float_inputs(cell.q, in);
-  bool need53 = false, need24 = false;
-  for (const Implementation* im : impls) (im->precision == 24 ? need24 : need53) = true;
-  // The truth on the double inputs, and on their float rounding. Inputs outside a query's
-  // domain in a type (overflow to infinity, a ray direction that underflows to zero in
-  // float) are refused for the implementations of that type and counted as such.
-  Answer t53, t24;
-  bool valid53 = need53, valid24 = need24 && all_finite(in_f, qi.inputs.size());
-  try {
-    if (valid53) t53 = truth(cell.q, in, 53);
-  } catch (const invalid_input&) {
-    valid53 = false;
-  }
-  try {
-    if (valid24) t24 = truth(cell.q, in_f, 24);
-  } catch (const invalid_input&) {
-    valid24 = false;
+  // The truth on the double inputs (rounded to double or long double), and on their
+  // float rounding (rounded to float). Inputs outside a query's domain in a type (overflow
+  // to infinity, a ray direction that underflows to zero in float) are refused for the
+  // implementations of that type and counted as such.
+  bool need[3] = {false, false, false};  // precision 24, 53, 64
+  auto slot = [](int precision) { return precision == 24 ? 0 : (precision == 53 ? 1 : 2); };
+  for (const Implementation* im : impls) need[slot(im->precision)] = true;
+  Answer truths[3];
+  bool valid[3] = {need[0] && all_finite(in_f, qi.inputs.size()), need[1], need[2]};
+  for (int k = 0; k < 3; ++k) {
+    try {
+      if (valid[k]) truths[k] = truth(cell.q, k == 0 ? in_f : in, k == 0 ? 24 : (k == 1 ? 53 : 64));
+    } catch (const invalid_input&) {
+      valid[k] = false;
+    }
   }
   const bool is_cast = qi.outputs.size() == 4 && qi.outputs[0] == "lambda_enter";
 
@@ -190,7 +217,7 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
     CellStats& st = res.cells[{cell.q, im->name, cell.family->name, cell.scale}];
     ++st.n;
     const bool f24 = im->precision == 24;
-    if (!(f24 ? valid24 : valid53)) {
+    if (!valid[slot(im->precision)]) {
       ++st.refused;
       continue;
     }
@@ -202,7 +229,7 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       ++st.refused;
       continue;
     }
-    const Answer& t = f24 ? t24 : t53;
+    const Answer& t = truths[slot(im->precision)];
     if (a.cls != t.cls) {
       ++(a.cls ? st.cls_fp : st.cls_fn);
       st.cls_example.offer(0, i, seen, a.cls, t.cls);
@@ -303,6 +330,16 @@ Results run(const Spec& spec) {
     total = saved.results;
     done = saved.items_done;
   }
+  // cases of this shard in each work item, for the progress report
+  auto cases_in = [&](std::uint64_t k) {
+    const std::uint64_t first = items[k].first, last = std::min(spec.n, first + block);
+    std::uint64_t c = 0;
+    for (std::uint64_t i = first; i < last; ++i) c += i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard);
+    return c;
+  };
+  std::uint64_t cases_total = 0, cases_done = 0;
+  for (std::uint64_t k = 0; k < items.size(); ++k) (k < done ? cases_done : cases_total) += cases_in(k);
+  cases_total += cases_done;
   const int threads = std::max(1, spec.threads);
   const std::uint64_t round = std::uint64_t(threads) * 8;
   while (done < items.size()) {
@@ -330,9 +367,10 @@ Results run(const Spec& spec) {
     for (auto& e : errors)
       if (e) std::rethrow_exception(e);
     for (const Results& r : local) total.merge(r);
+    for (std::uint64_t k = done; k < end; ++k) cases_done += cases_in(k);
     done = end;
     if (!spec.checkpoint.empty()) write_atomically(spec.checkpoint, serialize(spec, total, done));
-    if (spec.progress) spec.progress(double(done), double(items.size()));
+    if (spec.progress) spec.progress(double(cases_done), double(cases_total));
   }
   return total;
 }
@@ -399,7 +437,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
   };
   auto real = [&](const std::string& t) {
     char* end = nullptr;
-    const double x = std::strtod(t.c_str(), &end);
+    const long double x = std::strtold(t.c_str(), &end);
     if (t.empty() || end != t.c_str() + t.size()) fail("malformed number '" + t + "'");
     return x;
   };

@@ -83,7 +83,9 @@ Query query_by_name(const std::string& name) {
 }
 
 Answer truth(Query q, const Inputs& in, int precision) {
-  return precision == 24 ? eval<CGAL::Gmpq, float>(q, in) : eval<CGAL::Gmpq, double>(q, in);
+  if (precision == 24) return eval<CGAL::Gmpq, float>(q, in);
+  if (precision == 64) return eval<CGAL::Gmpq, long double>(q, in);
+  return eval<CGAL::Gmpq, double>(q, in);
 }
 
 Inputs float_inputs(Query q, const Inputs& in) {
@@ -97,6 +99,7 @@ const std::vector<Implementation>& builtin_implementations() {
   static const std::vector<Implementation> impls = {
       {"book-float", 24, [](Query q, const Inputs& in) { return eval<float, float>(q, in); }},
       {"book-double", 53, [](Query q, const Inputs& in) { return eval<double, double>(q, in); }},
+      {"book-long-double", 64, [](Query q, const Inputs& in) { return eval<long double, long double>(q, in); }},
   };
   return impls;
 }
@@ -113,6 +116,12 @@ const Implementation& implementation_by_name(const std::string& name) {
 std::string hexfloat(double x) {
   char b[40];
   std::snprintf(b, sizeof b, "%a", x);
+  return b;
+}
+
+std::string hexfloat(long double x) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%La", x);
   return b;
 }
 

@@ -55,6 +55,13 @@ bool parse_real(const std::string& t, double& x) {
   return end == t.c_str() + t.size();
 }
 
+bool parse_real(const std::string& t, long double& x) {
+  if (t.empty()) return false;
+  char* end = nullptr;
+  x = std::strtold(t.c_str(), &end);
+  return end == t.c_str() + t.size();
+}
+
 bool parse_id(const std::string& t, std::uint64_t& x) {
   if (t.empty() || t[0] == '-') return false;
   char* end = nullptr;
@@ -66,6 +73,19 @@ std::string fmt_real(double x, bool decimal) {
   char b[64];
   std::snprintf(b, sizeof b, decimal ? "%.17g" : "%a", x);
   return b;
+}
+
+// An answer value of the given precision: long double needs 21 significant digits.
+std::string fmt_answer(long double x, bool decimal, int precision) {
+  if (precision != 64) return fmt_real(double(x), decimal);
+  char b[64];
+  std::snprintf(b, sizeof b, decimal ? "%.21Lg" : "%La", x);
+  return b;
+}
+
+int parse_precision(const std::string& p) {
+  if (p == "24" || p == "53" || p == "64") return std::stoi(p);
+  throw std::invalid_argument("--precision is 24 (float), 53 (double) or 64 (long double), not '" + p + "'");
 }
 
 // The answer columns of a query: classification, predicate, then output components.
@@ -253,8 +273,7 @@ int cases_command(std::vector<std::string> args) {
 int oracle_command(std::vector<std::string> args) {
   const Opts o = parse(args, {"--query", "--cases", "--out", "--precision"}, {"--decimal"});
   const Query q = query_by_name(o.need("--query"));
-  const int precision = std::stoi(o.get("--precision", "53"));
-  if (precision != 24 && precision != 53) throw std::invalid_argument("--precision is 24 (float) or 53 (double)");
+  const int precision = parse_precision(o.get("--precision", "53"));
   int bad = 0;
   const auto rows = read_cases(q, o.get("--cases", "-"), bad);
   Out out(o.get("--out"));
@@ -277,7 +296,7 @@ int oracle_command(std::vector<std::string> args) {
     *out.o << r.id;
     for (const auto& c : cols)
       *out.o << "," << (c.kind == 0 ? std::to_string(int(t.cls)) : c.kind == 1 ? std::to_string(int(t.pred))
-                                                                                 : fmt_real(t.v[c.index], o.has("--decimal")));
+                                                                                 : fmt_answer(t.v[c.index], o.has("--decimal"), precision));
     *out.o << "\n";
   }
   return bad ? 1 : 0;
@@ -286,8 +305,7 @@ int oracle_command(std::vector<std::string> args) {
 int score_command(std::vector<std::string> args) {
   const Opts o = parse(args, {"--query", "--cases", "--answers", "--precision", "--json", "--csv"}, {});
   const Query q = query_by_name(o.need("--query"));
-  const int precision = std::stoi(o.get("--precision", "53"));
-  if (precision != 24 && precision != 53) throw std::invalid_argument("--precision is 24 (float) or 53 (double)");
+  const int precision = parse_precision(o.get("--precision", "53"));
   int bad = 0;
   const auto rows = read_cases(q, o.need("--cases"), bad);
   // the answers
@@ -366,7 +384,7 @@ int score_command(std::vector<std::string> args) {
     // their classification, if given, gates the values of a cast
     std::optional<bool> their_hit;
     bool row_ok = true;
-    std::vector<double> vals(it->second.size());
+    std::vector<long double> vals(it->second.size());
     for (std::size_t c = 0; c < given.size(); ++c) {
       if (given[c] < 0) continue;
       const std::string& cell = it->second[c];
@@ -401,7 +419,7 @@ int score_command(std::vector<std::string> args) {
       }
       if (is_cast(q) && !(t.cls && their_hit.value_or(true))) continue;  // values exist only on a hit
       ++cs.graded;
-      const double want = t.v[col.index];
+      const long double want = t.v[col.index];
       if (!std::isfinite(vals[c]) && std::isfinite(want)) {
         ++cs.s.nonfinite;
         continue;
@@ -415,7 +433,8 @@ int score_command(std::vector<std::string> args) {
   const QueryInfo& qi = info(q);
   std::cout << "cdref score: " << qi.name << ", " << rows.size() << " cases, " << graded_cases << " answered and graded, "
             << unanswered << " unanswered, " << bad << " malformed or refused; errors in ulps of "
-            << (precision == 24 ? "float" : "double") << " against the correctly rounded exact answer\n\n";
+            << (precision == 24 ? "float" : (precision == 53 ? "double" : "long double"))
+            << " against the correctly rounded exact answer\n\n";
   char buf[256];
   std::snprintf(buf, sizeof buf, "%-16s %8s %8s %8s %10s %10s %10s %10s  %s\n", "column", "graded", "wrong",
                 "nonfin", "p50", "p99", "max", "worst case", "histogram (ulps: count)");

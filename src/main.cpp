@@ -35,7 +35,7 @@ const char* usage = R"(usage:
       --query Q        a query (repeatable; default: all; see `cdref describe`)
       --family F       a family (repeatable; default: all of each query)
       --scale K        a scale of the family (repeatable; default: all)
-      --impl I         book-float, book-double (repeatable; default: both)
+      --impl I         book-float, book-double, book-long-double (repeatable; default: all)
       --n N            cases per (query, family, scale) cell (default 1000)
       --seed S         the campaign seed (default 1)
       --threads T      worker threads (default: hardware threads)
@@ -52,10 +52,10 @@ const char* usage = R"(usage:
   cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
                                  write case inputs as CSV (hex-float; --decimal: 17 digits)
   cdref cases --describe Q       the case and answer columns of query Q
-  cdref oracle --query Q [--cases F] [--precision 24|53] [--decimal] [--out F]
+  cdref oracle --query Q [--cases F] [--precision 24|53|64] [--decimal] [--out F]
                                  the exact answers to a case file, correctly rounded
-                                 (24: for the inputs rounded to float, as float)
-  cdref score --query Q --cases F --answers A [--precision 24|53]
+                                 (24: for the inputs rounded to float, as float; 64: as long double)
+  cdref score --query Q --cases F --answers A [--precision 24|53|64]
                                  grade an answer file (any subset of the answer columns)
   cdref plot --query Q --family F [--output O] [--n N] [--seed S] [--out F.svg]
                                  drift against scale as SVG (gnuplot): misclassified share
@@ -118,7 +118,7 @@ struct Progress {
     const double frac = total > 0 ? done / total : 1;
     const int width = 30, filled = int(frac * width);
     const double eta = frac > 0 ? secs * (1 - frac) / frac : 0;
-    std::fprintf(stderr, "\r[%.*s%*s] %3.0f%%  %.0f blocks/s  ETA %.0fs ", filled,
+    std::fprintf(stderr, "\r[%.*s%*s] %3.0f%%  %.0f cases/s  ETA %.0fs ", filled,
                  "##############################", width - filled, "", 100 * frac, secs > 0 ? done / secs : 0,
                  eta);
     if (done >= total) std::fprintf(stderr, "\n");
@@ -146,7 +146,7 @@ int campaign(Args& a, bool defaults) {
   spec.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   std::string out, json, csv;
   bool quiet = false;
-  if (defaults) spec.n = 2500;  // about a minute on 2 cores
+  if (defaults) spec.n = 1500;  // about a minute on 2 cores
   while (a.more()) {
     const std::string opt = a.next("");
     if (opt == "--query")
@@ -187,12 +187,12 @@ int campaign(Args& a, bool defaults) {
   }
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
   if (spec.queries.empty()) spec.queries = all_queries();
-  if (spec.impls.empty()) spec.impls = {"book-float", "book-double"};
+  if (spec.impls.empty()) spec.impls = {"book-float", "book-double", "book-long-double"};
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms at float and\n"
-                 "double against the exact answer, "
+    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms at float,\n"
+                 "double and long double against the exact answer, "
               << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);

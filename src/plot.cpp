@@ -52,7 +52,7 @@ int plot_command(std::vector<std::string> args) {
   Spec spec;
   spec.queries = {q};
   spec.families = {family};
-  spec.impls = {"book-float", "book-double"};
+  spec.impls = {"book-float", "book-double", "book-long-double"};
   spec.n = n;
   spec.seed = seed;
   spec.threads = threads;
@@ -85,21 +85,27 @@ int plot_command(std::vector<std::string> args) {
   FILE* gp = popen("gnuplot", "w");
   if (!gp) throw std::runtime_error("cannot run gnuplot (install gnuplot-nox)");
   const std::string what = group >= 0 ? qi.outputs[group] : "";
+  // columns: 1 scale, then per implementation i: 2+4i misclassified, 3+4i predicate, 4+4i p99, 5+4i max
+  std::string miss_plot, err_plot;
+  for (std::size_t i = 0; i < spec.impls.size(); ++i) {
+    const std::string im = spec.impls[i], c = std::to_string(2 + 4 * i), lc = std::to_string(i + 1);
+    miss_plot += std::string(i ? ", " : "") + "'" + dat + "' u 1:" + c + " w lp lc " + lc + " t '" + im + "', '' u 1:" +
+                 std::to_string(3 + 4 * i) + " w lp dt 2 lc " + lc + " t '" + im + " predicate'";
+    err_plot += std::string(i ? ", " : "") + "'" + dat + "' u 1:" + std::to_string(4 + 4 * i) + " w lp lc " + lc +
+                " t '" + im + " p99', '' u 1:" + std::to_string(5 + 4 * i) + " w lp dt 2 lc " + lc + " t '" + im + " max'";
+  }
   std::fprintf(gp,
-               "set terminal svg size 1000,420 dynamic font 'sans,11'\nset output '%s'\n"
+               "set terminal svg size 1100,440 dynamic font 'sans,11'\nset output '%s'\n"
                "set multiplot layout 1,2 title '%s, family %s (%llu cases per point, seed %llu): %s'\n"
                "set xlabel 'scale k'\nset key top left\nset grid\nset logscale y\n"
-               "set ylabel 'misclassified share (0 drawn at 1e-5)'\nset yrange [1e-5:1]\n"
-               "plot '%s' u 1:2 w lp t 'book-float', '' u 1:3 w lp dt 2 t 'book-float predicate', "
-               "'' u 1:6 w lp t 'book-double', '' u 1:7 w lp dt 2 t 'book-double predicate'\n",
+               "set ylabel 'misclassified share (0 drawn at 1e-5)'\nset yrange [1e-5:1]\nplot %s\n",
                out.c_str(), query.c_str(), family.c_str(), (unsigned long long)n, (unsigned long long)seed,
-               fam.describe.c_str(), dat.c_str());
+               fam.describe.c_str(), miss_plot.c_str());
   if (group >= 0)
     std::fprintf(gp,
-                 "set ylabel '%s error, ulps of its type (0 drawn at 0.5)'\nset yrange [0.5:*]\nset format y '10^{%%L}'\n"
-                 "plot '%s' u 1:4 w lp t 'book-float p99', '' u 1:5 w lp dt 2 t 'book-float max', "
-                 "'' u 1:8 w lp t 'book-double p99', '' u 1:9 w lp dt 2 t 'book-double max'\n",
-                 what.c_str(), dat.c_str());
+                 "set ylabel '%s error, ulps of its type (0 drawn at 0.5)'\nset yrange [0.5:*]\n"
+                 "set format y '10^{%%L}'\nplot %s\n",
+                 what.c_str(), err_plot.c_str());
   std::fprintf(gp, "unset multiplot\n");
   if (pclose(gp) != 0) throw std::runtime_error("gnuplot failed drawing " + out);
   std::cout << "wrote " << out << " (data in " << dat << ")\n";

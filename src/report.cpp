@@ -98,13 +98,13 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   char line[512];
   o << "Per query and implementation (errors in ulps of the implementation's type, against the correctly\n"
        "rounded exact answer; misclassified: the full query / the root- and division-free predicate):\n\n";
-  std::snprintf(line, sizeof line, "%-20s %-12s %10s %9s %16s %16s %10s  %s\n", "query", "impl", "cases", "refused",
+  std::snprintf(line, sizeof line, "%-20s %-17s %10s %9s %16s %16s %10s  %s\n", "query", "impl", "cases", "refused",
                 "misclassified", "predicate wrong", "nonfinite", "max error (where)");
   o << line;
   for (const auto& [key, s] : sums) {
     const std::string miss = std::to_string(s.cls) + " (" + num(100.0 * double(s.cls) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
     const std::string pmiss = std::to_string(s.pred) + " (" + num(100.0 * double(s.pred) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
-    std::snprintf(line, sizeof line, "%-20s %-12s %10llu %9llu %16s %16s %10llu  %s\n", key.first.c_str(),
+    std::snprintf(line, sizeof line, "%-20s %-17s %10llu %9llu %16s %16s %10llu  %s\n", key.first.c_str(),
                   key.second.c_str(), (unsigned long long)s.n, (unsigned long long)s.refused, miss.c_str(),
                   pmiss.c_str(), (unsigned long long)s.nonfinite,
                   s.max_where.empty() ? "-" : (num(double(s.max), "%.3g") + " (" + s.max_where + ")").c_str());
@@ -123,7 +123,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     return worst_output(a.first, *a.second).max > worst_output(b.first, *b.second).max;
   });
   o << "\nWorst cells (family/scale k; see `cdref describe`):\n\n";
-  std::snprintf(line, sizeof line, "%-20s %-12s %-22s %7s %12s %12s   %-12s %8s %8s %10s\n", "query", "impl",
+  std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7s %12s %12s   %-12s %8s %8s %10s\n", "query", "impl",
                 "family/scale", "cases", "wrong fp/fn", "pred fp/fn", "output", "p50", "p99", "max");
   o << line;
   int shown = 0;
@@ -133,7 +133,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     const std::string fam = k.family + "/" + std::to_string(k.scale);
     const std::string c = std::to_string(st->cls_fp) + "/" + std::to_string(st->cls_fn);
     const std::string p = std::to_string(st->pred_fp) + "/" + std::to_string(st->pred_fn);
-    std::snprintf(line, sizeof line, "%-20s %-12s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
+    std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
                   info(k.query).name, k.impl.c_str(), fam.c_str(), (unsigned long long)st->n, c.c_str(), p.c_str(),
                   w.group < 0 ? "-" : info(k.query).outputs[w.group].c_str(), num(double(w.p50)).c_str(),
                   num(double(w.p99)).c_str(), num(double(w.max)).c_str());

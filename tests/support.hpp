@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 #include <cdref/exact.hpp>
+#include <cdref/exact/long_double.hpp>
 #include <cdref/float/mpfr.hpp>
 #include <cmath>
 #include <limits>

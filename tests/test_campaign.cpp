@@ -18,7 +18,7 @@ namespace {
 Spec small_spec() {
   Spec s;
   s.queries = {Query::segment_sphere_cast, Query::sphere_box, Query::box_box, Query::ray_box_cast};
-  s.impls = {"book-float", "book-double"};
+  s.impls = {"book-float", "book-double", "book-long-double"};
   s.families = {"near-tangent", "near-touching", "grazing", "degenerate"};
   s.scales = {0, 8, 24, 52};
   s.n = 700;  // not a multiple of the block size: the last block is partial
@@ -166,9 +166,9 @@ TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterru
   REQUIRE(WTERMSIG(status) == SIGKILL);
   REQUIRE(killed_mid_way);
 
-  Spec s;
+  Spec s;  // the command line's defaults: every implementation
   s.queries = {Query::segment_sphere_cast, Query::sphere_sphere};
-  s.impls = {"book-float", "book-double"};
+  s.impls = {"book-float", "book-double", "book-long-double"};
   s.families = {"near-tangent", "near-touching"};
   s.scales = {8, 24};
   s.n = 8000;
@@ -225,4 +225,12 @@ TEST_CASE("histogram quantiles are exact below 16 ulps and within an eighth of a
   REQUIRE(ulp_distance(1.0, double(std::nextafter(1.0f, 2.0f)), 24) == 1);
   REQUIRE(ulp_distance(-std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::denorm_min(), 53) ==
           2);
+  // long double: 64-bit significands, across an exponent step, and through zero
+  REQUIRE(ulp_distance(1.0L, std::nextafter(1.0L, 2.0L), 64) == 1);
+  REQUIRE(ulp_distance(2.0L, std::nextafter(2.0L, 0.0L), 64) == 1);
+  REQUIRE(ulp_distance(1.0L, 2.0L, 64) == (std::uint64_t(1) << 63));
+  const long double tiny = std::numeric_limits<long double>::denorm_min();
+  REQUIRE(ulp_distance(-tiny, tiny, 64) == 2);
+  REQUIRE(ulp_distance(std::numeric_limits<long double>::min(), std::nextafter(std::numeric_limits<long double>::min(), 0.0L), 64) == 1);
+  REQUIRE(ulp_distance(1.0L, 1.0L + 0x1p-52L, 64) == 2048);
 }

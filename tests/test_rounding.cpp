@@ -212,3 +212,33 @@ TEST_CASE("the build keeps the rounding of double -> float -> double", "[roundin
   REQUIRE(r.y == 1.0);
   REQUIRE(r.z == 1.0);
 }
+
+TEST_CASE("rationals and a + b sqrt(d) round to the nearest long double", "[rounding]") {
+  // Witnesses: MPFR's mpfr_set_q at 64 bits (an independent correct rounding; the values
+  // stay inside long double's normal range), and for a + b sqrt d the definition, checked
+  // exactly against the midpoints with both neighbours.
+  std::mt19937_64 g(17);
+  mpfr_t m;
+  mpfr_init2(m, 64);
+  for (int i = 0; i < 5000; ++i) {
+    const Q v = Q(random_double(g)) / Q(random_double(g)) + Q(random_double(g)) * Q(random_double(g));
+    mpfr_set_q(m, v.mpq(), MPFR_RNDN);
+    REQUIRE(exact::round_long_double(v) == mpfr_get_ld(m, MPFR_RNDN));
+  }
+  mpfr_clear(m);
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  for (int i = 0; i < 2000; ++i) {
+    const QS v(Q(small(g)) / Q(7), Q(small(g)) / Q(3), Q(std::abs(small(g)) + 1) * p2(int(g() % 40) - 20));
+    const long double r = exact::round_long_double(v);
+    const long double lo = std::nextafter(r, -HUGE_VALL), hi = std::nextafter(r, HUGE_VALL);
+    const Q m_lo = (exact::gmpq_of(lo) + exact::gmpq_of(r)) / Q(2), m_hi = (exact::gmpq_of(r) + exact::gmpq_of(hi)) / Q(2);
+    REQUIRE(v.compare(m_lo) >= 0);
+    REQUIRE(v.compare(m_hi) <= 0);
+  }
+  // a tie between two long doubles goes to the even significand
+  const long double one = 1.0L, up = std::nextafter(one, 2.0L);
+  const Q tie = (exact::gmpq_of(one) + exact::gmpq_of(up)) / Q(2);
+  REQUIRE(exact::round_long_double(tie) == one);
+  const Q tie2 = (exact::gmpq_of(up) + exact::gmpq_of(std::nextafter(up, 2.0L))) / Q(2);
+  REQUIRE(exact::round_long_double(tie2) == std::nextafter(up, 2.0L));
+}

@@ -62,20 +62,20 @@ using Inputs = std::array<double, max_inputs>;
 struct Answer {
   bool cls = false;
   bool pred = false;
-  std::array<double, max_values> v{};
+  std::array<long double, max_values> v{};  // exact for float, double and long double
 };
 
 // ---- implementations under test ----
 struct Implementation {
   std::string name;    // "book-double", ...
-  int precision;       // 24 (float) or 53 (double): the type whose ulps measure its error
+  int precision;       // 24 (float), 53 (double) or 64 (long double): the type whose ulps measure its error
   std::function<Answer(Query, const Inputs&)> run;  // gets double inputs, rounds them itself
 };
 const std::vector<Implementation>& builtin_implementations();
 const Implementation& implementation_by_name(const std::string& name);
 
-// The exact answer on the given inputs, each value rounded correctly to double
-// (precision 53) or float (24).
+// The exact answer on the given inputs, each value rounded correctly to float (precision
+// 24), double (53) or long double (64).
 Answer truth(Query q, const Inputs& in, int precision);
 
 // The inputs as a float implementation sees them (each rounded to float, back in double).
@@ -116,9 +116,9 @@ struct Exemplar {
   std::uint64_t metric = 0;  // ulps (or 0 for a misclassification)
   std::uint64_t index = 0;
   Inputs inputs{};
-  double got = 0, want = 0;  // the implementation's value and the truth (or 0/1 for classes)
+  long double got = 0, want = 0;  // the implementation's value and the truth (or 0/1 for classes)
   // better = larger metric, then smaller index
-  void offer(std::uint64_t m, std::uint64_t i, const Inputs& in, double g, double w);
+  void offer(std::uint64_t m, std::uint64_t i, const Inputs& in, long double g, long double w);
   void merge(const Exemplar& o) {
     if (o.set) offer(o.metric, o.index, o.inputs, o.got, o.want);
   }
@@ -167,7 +167,7 @@ struct Spec {
   int shard = 0, shards = 1;  // this process runs the cases with i % shards == shard
   std::string checkpoint;     // file to write as it goes ("" for none)
   bool resume = false;        // continue from `checkpoint`
-  std::function<void(double done, double total)> progress;  // optional
+  std::function<void(double cases_done, double cases_total)> progress;  // optional, per cell-case
   std::string fingerprint() const;  // identifies the work, for merge and resume checks
 };
 
@@ -193,9 +193,11 @@ Saved deserialize(const std::string& text, const std::string& source);
 // std::runtime_error if they are not the shards 0..N-1 of one campaign, each complete.
 Results merge_shards(const std::vector<Saved>& shards);
 
-// ulps between a and b in the IEEE type of the given precision (24 or 53).
-std::uint64_t ulp_distance(double a, double b, int precision);
+// ulps between a and b in the type of the given precision (24 float, 53 double, 64 long
+// double), both representable in it; saturates at 2^64 - 1.
+std::uint64_t ulp_distance(long double a, long double b, int precision);
 
 std::string hexfloat(double x);
+std::string hexfloat(long double x);
 
 }  // namespace cdref::fuzz

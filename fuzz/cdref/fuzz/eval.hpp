@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cdref/exact.hpp>
+#include <cdref/exact/long_double.hpp>
 #include <cdref/fuzz/campaign.hpp>
 
 namespace cdref::fuzz {
@@ -16,13 +17,16 @@ Vec3<T> v3(const Inputs& in, int k) {
   return Vec3<T>(T(in[k]), T(in[k + 1]), T(in[k + 2]));
 }
 
-// A value of the sqrt type S, as the double the implementation of type F reports.
+// A value of the sqrt type S as the implementation of type F reports it (exact values
+// rounded correctly to F).
 template <class F, class S>
-double value(const S& x) {
-  if constexpr (number_traits<S>::is_exact)
-    return double(round_to<F>(x));
+long double value(const S& x) {
+  if constexpr (!number_traits<S>::is_exact)
+    return static_cast<long double>(x);
+  else if constexpr (std::is_same_v<F, long double>)
+    return exact::round_long_double(x);
   else
-    return double(x);
+    return static_cast<long double>(round_to<F>(x));
 }
 
 template <class F, class S>
