@@ -95,15 +95,15 @@ int plot_command(std::vector<std::string> args) {
                 " t '" + im + " p99', '' u 1:" + std::to_string(5 + 4 * i) + " w lp dt 2 lc " + lc + " t '" + im + " max'";
   }
   std::fprintf(gp,
-               "set terminal svg size 1100,440 dynamic font 'sans,11'\nset output '%s'\n"
+               "set terminal svg size 1100,440 dynamic font 'sans,11' background rgb 'white'\nset output '%s'\n"
                "set multiplot layout 1,2 title '%s, family %s (%llu cases per point, seed %llu): %s'\n"
                "set xlabel 'scale k'\nset key top left\nset grid\nset logscale y\n"
-               "set ylabel 'misclassified share (0 drawn at 1e-5)'\nset yrange [1e-5:1]\nplot %s\n",
+               "set ylabel 'misclassified share (0 drawn at 1e-5)'\nset yrange [1e-5:1]\nset format y '10^{%%L}'\nplot %s\n",
                out.c_str(), query.c_str(), family.c_str(), (unsigned long long)n, (unsigned long long)seed,
                fam.describe.c_str(), miss_plot.c_str());
   if (group >= 0)
     std::fprintf(gp,
-                 "set ylabel '%s error, ulps of its type (0 drawn at 0.5)'\nset yrange [0.5:*]\n"
+                 "set ylabel '%s error, ulps of its type (0 drawn at 0.5)' noenhanced\nset yrange [0.5:*]\n"
                  "set format y '10^{%%L}'\nplot %s\n",
                  what.c_str(), err_plot.c_str());
   std::fprintf(gp, "unset multiplot\n");
