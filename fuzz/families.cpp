@@ -4,7 +4,8 @@
 // families aim at where float code goes wrong: long range (10^k radii away), near
 // tangency and near touching (2^-k), grazing box edges and corners, rays parallel to or
 // lying in face planes, degenerate placements, and magnitudes from 1e-300 to 1e300 (10^k
-// applied to a uniform case: squares overflow past 1e154 and underflow below 1e-154).
+// applied to a uniform case, k = -320..300: squares overflow past 1e154 and underflow below
+// 1e-154, and at k = -310 and -320 the coordinates themselves are subnormal).
 #include <cdref/fuzz/campaign.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -58,7 +59,12 @@ std::vector<int> range(int a, int b, int step = 1) {
 }
 const std::vector<int> tangency_scales = {1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52};
 const std::vector<int> decades = range(0, 12);
-const std::vector<int> magnitudes = range(-300, 300, 50);
+// 10^-320 and 10^-310 put the uniform family's coordinates among the subnormals.
+const std::vector<int> magnitudes = [] {
+  std::vector<int> v = {-320, -310};
+  for (int k : range(-300, 300, 50)) v.push_back(k);
+  return v;
+}();
 
 // Scales every coordinate and length of a case by 10^k.
 Inputs scaled(Inputs in, int n, int k) {
