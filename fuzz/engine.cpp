@@ -201,7 +201,8 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   // implementations of that type and counted as such.
   bool need[3] = {false, false, false};  // precision 24, 53, 64
   auto slot = [](int precision) { return precision == 24 ? 0 : (precision == 53 ? 1 : 2); };
-  for (const Implementation* im : impls) need[slot(im->precision)] = true;
+  for (const Implementation* im : impls)
+    if (im->supports(cell.q)) need[slot(im->precision)] = true;
   Answer truths[3];
   bool valid[3] = {need[0] && all_finite(in_f, qi.inputs.size()), need[1], need[2]};
   for (int k = 0; k < 3; ++k) {
@@ -214,6 +215,7 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   const bool is_cast = qi.outputs.size() == 4 && qi.outputs[0] == "lambda_enter";
 
   for (const Implementation* im : impls) {
+    if (!im->supports(cell.q)) continue;
     CellStats& st = res.cells[{cell.q, im->name, cell.family->name, cell.scale}];
     ++st.n;
     const bool f24 = im->precision == 24;

@@ -5,6 +5,7 @@
 #include <cdref/exact.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/eval.hpp>
+#include <cdref/robust/ray_sphere.hpp>
 #include <cstdio>
 #include <stdexcept>
 
@@ -60,6 +61,22 @@ const std::vector<QueryInfo>& table() {
   return t;
 }
 
+// The robust float formulations (float/cdref/robust), where they exist.
+template <class F>
+Answer eval_robust(Query q, const Inputs& in) {
+  Answer a;
+  const Sphere<F> sp{detail::v3<F>(in, 6), F(in[9])};
+  if (q == Query::segment_sphere_cast) {
+    detail::put_cast<F>(a, robust::cast(Segment<F>{detail::v3<F>(in, 0), detail::v3<F>(in, 3)}, sp));
+  } else if (q == Query::ray_sphere_cast) {
+    detail::put_cast<F>(a, robust::cast(Ray<F>{detail::v3<F>(in, 0), detail::v3<F>(in, 3)}, sp));
+  } else {
+    throw std::logic_error(std::string("no robust formulation of ") + info(q).name + " yet");
+  }
+  a.pred = a.cls;  // robust::hit is the cast's own decision
+  return a;
+}
+
 }  // namespace
 
 const QueryInfo& info(Query q) { return table().at(static_cast<std::size_t>(q)); }
@@ -100,6 +117,9 @@ const std::vector<Implementation>& builtin_implementations() {
       {"book-float", 24, [](Query q, const Inputs& in) { return eval<float, float>(q, in); }},
       {"book-double", 53, [](Query q, const Inputs& in) { return eval<double, double>(q, in); }},
       {"book-long-double", 64, [](Query q, const Inputs& in) { return eval<long double, long double>(q, in); }},
+      {"robust-float", 24, eval_robust<float>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
+      {"robust-double", 53, eval_robust<double>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
+      {"robust-long-double", 64, eval_robust<long double>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
   };
   return impls;
 }

@@ -35,7 +35,8 @@ const char* usage = R"(usage:
       --query Q        a query (repeatable; default: all; see `cdref describe`)
       --family F       a family (repeatable; default: all of each query)
       --scale K        a scale of the family (repeatable; default: all)
-      --impl I         book-float, book-double, book-long-double (repeatable; default: all)
+      --impl I         book-float, book-double, book-long-double; robust-float, robust-double,
+                       robust-long-double (ray-sphere casts only, so far) (repeatable; default: all)
       --n N            cases per (query, family, scale) cell (default 1000)
       --seed S         the campaign seed (default 1)
       --threads T      worker threads (default: hardware threads)
@@ -187,7 +188,8 @@ int campaign(Args& a, bool defaults) {
   }
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
   if (spec.queries.empty()) spec.queries = all_queries();
-  if (spec.impls.empty()) spec.impls = {"book-float", "book-double", "book-long-double"};
+  if (spec.impls.empty())
+    spec.impls = {"book-float", "book-double", "book-long-double", "robust-float", "robust-double", "robust-long-double"};
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)

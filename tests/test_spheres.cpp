@@ -1,6 +1,8 @@
 // tests/test_spheres.cpp - Section 3.1 at every number type: sphere-sphere, the segment and
 // infinite-ray casts of Algorithm 3.1, and the segment-sphere test of Algorithm 3.2.
 // Expected answers are exact, written as rationals or a + b sqrt(d).
+#include <cdref/robust/ray_sphere.hpp>
+
 #include "prox_check.hpp"
 
 using namespace cdref;
@@ -144,6 +146,30 @@ void run_ray_sphere() {
 
 TEMPLATE_TEST_CASE("ray-sphere casts (Algorithm 3.1) on hard cases", "[ray-sphere]", CDREF_ALL_TYPES) {
   run_ray_sphere<TestType>();
+}
+
+TEMPLATE_TEST_CASE("robust ray-sphere casts keep their accuracy on the same hard cases", "[ray-sphere][robust]",
+                   float, double, long double) {
+  // No drift is allowed here: every case must classify as the truth (on the type's own
+  // rounding of the inputs) and give both lambdas within 4 ulps, where the book loses up
+  // to 9e7 ulps, misclassifies near tangency at 1e4 radii, and overflows at 1e160.
+  for (auto sc : ray_sphere_cases()) {
+    sc.c.floats.clear();
+    const Vec3<double> center = sc.sphere.center;
+    check_cast_case<TestType>(
+        sc.c, sc.sphere, center, sc.sphere.radius,
+        [](const auto& s, const auto& t, const auto& sp, bool infinite) {
+          using U = typename std::decay_t<decltype(s)>::Scalar;
+          if constexpr (is_exact_v<U>)  // the reference: the book, exactly
+            return infinite ? book::cast(Ray<U>{s, t}, sp) : book::cast(Segment<U>{s, t}, sp);
+          else
+            return infinite ? robust::cast(Ray<U>{s, t}, sp) : robust::cast(Segment<U>{s, t}, sp);
+        },
+        [](const auto& s, const auto& t, const auto& sp, bool infinite) {
+          using U = typename std::decay_t<decltype(s)>::Scalar;
+          return infinite ? robust::hit(Ray<U>{s, t}, sp) : robust::hit(Segment<U>{s, t}, sp);
+        });
+  }
 }
 
 // ---------------------------------------------------------------------------

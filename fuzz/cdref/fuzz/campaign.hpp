@@ -15,6 +15,7 @@
 // checkpoint ends with exactly the totals of an uninterrupted one.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -70,6 +71,10 @@ struct Implementation {
   std::string name;    // "book-double", ...
   int precision;       // 24 (float), 53 (double) or 64 (long double): the type whose ulps measure its error
   std::function<Answer(Query, const Inputs&)> run;  // gets double inputs, rounds them itself
+  std::vector<Query> queries{};  // the queries it implements (empty: all)
+  bool supports(Query q) const {
+    return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
+  }
 };
 const std::vector<Implementation>& builtin_implementations();
 const Implementation& implementation_by_name(const std::string& name);
