@@ -134,7 +134,8 @@ TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterru
   std::remove(ck.c_str());
   const std::vector<std::string> args = {CDREF_EXE, "campaign", "--query", "segment-sphere-cast", "--query",
                                          "sphere-sphere", "--family", "near-tangent", "--family", "near-touching",
-                                         "--scale", "8", "--scale", "24", "--n", "8000", "--seed", "9", "--threads", "2", "--checkpoint", ck,
+                                         "--scale", "8", "--scale", "24", "--n", "8000", "--impl", "book-float", "--impl", "book-double",
+                                         "--impl", "book-long-double", "--impl", "robust-double", "--seed", "9", "--threads", "2", "--checkpoint", ck,
                                          "--quiet"};
   const pid_t pid = fork();
   REQUIRE(pid >= 0);
@@ -166,9 +167,9 @@ TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterru
   REQUIRE(WTERMSIG(status) == SIGKILL);
   REQUIRE(killed_mid_way);
 
-  Spec s;  // the command line's defaults: every implementation
+  Spec s;  // as the command line above
   s.queries = {Query::segment_sphere_cast, Query::sphere_sphere};
-  s.impls = {"book-float", "book-double", "book-long-double"};
+  s.impls = {"book-float", "book-double", "book-long-double", "robust-double"};
   s.families = {"near-tangent", "near-touching"};
   s.scales = {8, 24};
   s.n = 8000;
