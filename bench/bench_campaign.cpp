@@ -1,11 +1,13 @@
 // bench/bench_campaign.cpp - throughput of a ray-sphere campaign (the book at double against
-// the exact truth), in cases per second on one core, and what it is made of: case
-// generation, the book at double, the exact truth. Ratios from one run are the figures to
+// the truth from the oracle), in cases per second on one core, and what it is made of: case
+// generation, the book at double, the exact truth, the oracle (all outputs, and the
+// classification alone). Ratios from one run are the figures to
 // quote; Debian's libbenchmark is a debug build (its own overhead is per iteration, small
 // next to these bodies).
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/eval.hpp>
 
 using namespace cdref::fuzz;
 
@@ -49,8 +51,36 @@ void exact_truth(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations());
 }
 
+void oracle_all(benchmark::State& st, const char* family) {
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam(family), fam(family).scales.back(), i));
+  std::size_t k = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(oracle_truth(Query::segment_sphere_cast, cases[k++ & 1023], 53));
+  st.SetItemsProcessed(st.iterations());
+}
+
+void oracle_classification(benchmark::State& st, const char* family) {
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam(family), fam(family).scales.back(), i));
+  std::size_t k = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(oracle_classify(Query::segment_sphere_cast, cases[k++ & 1023]));
+  st.SetItemsProcessed(st.iterations());
+}
+
+void book_double_classification(benchmark::State& st) {
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  std::size_t k = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(eval<double, double>(Query::segment_sphere_cast, cases[k++ & 1023], false));
+  st.SetItemsProcessed(st.iterations());
+}
+
 }  // namespace
 
+BENCHMARK(book_double_classification);
+BENCHMARK_CAPTURE(oracle_all, uniform, "uniform");
+BENCHMARK_CAPTURE(oracle_classification, uniform, "uniform");
+BENCHMARK_CAPTURE(oracle_classification, near_tangent_2m52, "near-tangent");
 BENCHMARK_CAPTURE(campaign, uniform, "uniform")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(campaign, long_range, "long-range")->Unit(benchmark::kMillisecond);
 BENCHMARK(generate);

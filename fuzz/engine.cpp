@@ -191,7 +191,7 @@ bool all_finite(const Inputs& in, std::size_t n) {
 }
 
 void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::vector<const Implementation*>& impls,
-              Results& res) {
+              bool exact_truth, Results& res) {
   const QueryInfo& qi = info(cell.q);
   const Inputs in = make_case(seed, cell.q, *cell.family, cell.scale, i);
   const Inputs in_f = float_inputs(cell.q, in);
@@ -207,7 +207,11 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   bool valid[3] = {need[0] && all_finite(in_f, qi.inputs.size()), need[1], need[2]};
   for (int k = 0; k < 3; ++k) {
     try {
-      if (valid[k]) truths[k] = truth(cell.q, k == 0 ? in_f : in, k == 0 ? 24 : (k == 1 ? 53 : 64));
+      if (valid[k]) {
+        const Inputs& x = k == 0 ? in_f : in;
+        const int p = k == 0 ? 24 : (k == 1 ? 53 : 64);
+        truths[k] = exact_truth ? truth(cell.q, x, p) : oracle_truth(cell.q, x, p);
+      }
     } catch (const invalid_input&) {
       valid[k] = false;
     }
@@ -356,7 +360,7 @@ Results run(const Spec& spec) {
           const std::uint64_t last = std::min(spec.n, it.first + block);
           for (std::uint64_t i = it.first; i < last; ++i)
             if (i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard))
-              run_case(cells[it.cell], spec.seed, i, impls, local[t]);
+              run_case(cells[it.cell], spec.seed, i, impls, spec.exact_truth, local[t]);
         }
       } catch (...) {
         errors[t] = std::current_exception();

@@ -105,6 +105,28 @@ Answer truth(Query q, const Inputs& in, int precision) {
   return eval<CGAL::Gmpq, double>(q, in);
 }
 
+Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used) {
+  if (exact_used) *exact_used = false;
+  if (precision != 64) {
+    try {
+      return precision == 24 ? eval<oracle::Bounded, float>(q, in) : eval<oracle::Bounded, double>(q, in);
+    } catch (const oracle::uncertain&) {
+    }
+  }
+  if (exact_used) *exact_used = true;
+  return truth(q, in, precision);
+}
+
+Answer oracle_classify(Query q, const Inputs& in, bool* exact_used) {
+  if (exact_used) *exact_used = false;
+  try {
+    return eval<oracle::Bounded, double>(q, in, false);
+  } catch (const oracle::uncertain&) {
+  }
+  if (exact_used) *exact_used = true;
+  return eval<CGAL::Gmpq, double>(q, in, false);
+}
+
 Inputs float_inputs(Query q, const Inputs& in) {
   Inputs out{};
   const std::size_t n = info(q).inputs.size();

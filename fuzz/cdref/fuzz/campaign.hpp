@@ -83,6 +83,14 @@ const Implementation& implementation_by_name(const std::string& name);
 // 24), double (53) or long double (64).
 Answer truth(Query q, const Inputs& in, int precision);
 
+// The same answer from the fast oracle: the book run on oracle::Bounded (a double with a
+// rigorous error bound), accepted when every comparison and every rounding is certain, and
+// otherwise the exact path above. `exact_used` (if given) tells which path answered.
+Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used = nullptr);
+
+// The oracle for the classifications alone (Answer::cls and Answer::pred; no values).
+Answer oracle_classify(Query q, const Inputs& in, bool* exact_used = nullptr);
+
 // The inputs as a float implementation sees them (each rounded to float, back in double).
 Inputs float_inputs(Query q, const Inputs& in);
 
@@ -170,6 +178,7 @@ struct Spec {
   std::uint64_t seed = 1;
   int threads = 1;
   int shard = 0, shards = 1;  // this process runs the cases with i % shards == shard
+  bool exact_truth = false;   // compute every truth exactly instead of through the oracle
   std::string checkpoint;     // file to write as it goes ("" for none)
   bool resume = false;        // continue from `checkpoint`
   std::function<void(double cases_done, double cases_total)> progress;  // optional, per cell-case

@@ -6,6 +6,7 @@
 
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
+#include <cdref/oracle/bounded.hpp>
 #include <cdref/fuzz/campaign.hpp>
 
 namespace cdref::fuzz {
@@ -21,7 +22,14 @@ Vec3<T> v3(const Inputs& in, int k) {
 // rounded correctly to F).
 template <class F, class S>
 long double value(const S& x) {
-  if constexpr (!number_traits<S>::is_exact)
+  if constexpr (std::is_same_v<S, oracle::Bounded>) {  // the filter: certain, or it throws
+    if constexpr (std::is_same_v<F, float>)
+      return x.rounded_float();
+    else if constexpr (std::is_same_v<F, double>)
+      return x.rounded();
+    else
+      throw oracle::uncertain();  // a double filter cannot certify a long double
+  } else if constexpr (!number_traits<S>::is_exact)
     return static_cast<long double>(x);
   else if constexpr (std::is_same_v<F, long double>)
     return exact::round_long_double(x);
@@ -30,8 +38,9 @@ long double value(const S& x) {
 }
 
 template <class F, class S>
-void put_cast(Answer& a, const Cast<S>& c) {
+void put_cast(Answer& a, const Cast<S>& c, bool values = true) {
   a.cls = c.hit;
+  if (!values) return;
   a.v[0] = value<F>(c.lambda_enter);
   a.v[1] = value<F>(c.lambda_exit);
   for (int i = 0; i < 3; ++i) {
@@ -41,8 +50,9 @@ void put_cast(Answer& a, const Cast<S>& c) {
 }
 
 template <class F, class S>
-void put_prox(Answer& a, const Proximity<S>& p) {
+void put_prox(Answer& a, const Proximity<S>& p, bool values = true) {
   a.cls = p.intersect;
+  if (!values) return;
   a.v[0] = value<F>(p.distance);
   a.v[1] = value<F>(p.depth);
   for (int i = 0; i < 3; ++i) {
@@ -54,34 +64,36 @@ void put_prox(Answer& a, const Proximity<S>& p) {
 }  // namespace detail
 
 // The book at number type T on the inputs (converted to T), values reported as F.
+// With values = false only the two classifications are computed (no root, no rounding).
 template <class T, class F>
-Answer eval(Query q, const Inputs& in) {
+Answer eval(Query q, const Inputs& in, bool values = true) {
+  const unsigned wc = values ? want_cast : 0u, wp = values ? want_proximity : 0u;
   Answer a;
   switch (q) {
     case Query::sphere_sphere: {
       const Sphere<T> A{detail::v3<T>(in, 0), T(in[3])}, B{detail::v3<T>(in, 4), T(in[7])};
-      detail::put_prox<F>(a, book::proximity(A, B));
+      detail::put_prox<F>(a, book::proximity(A, B, wp), values);
       a.pred = book::intersect(A, B);
       break;
     }
     case Query::segment_sphere_cast: {
       const Segment<T> s{detail::v3<T>(in, 0), detail::v3<T>(in, 3)};
       const Sphere<T> sp{detail::v3<T>(in, 6), T(in[9])};
-      detail::put_cast<F>(a, book::cast(s, sp));
+      detail::put_cast<F>(a, book::cast(s, sp, wc), values);
       a.pred = book::hit(s, sp);
       break;
     }
     case Query::ray_sphere_cast: {
       const Ray<T> r{detail::v3<T>(in, 0), detail::v3<T>(in, 3)};
       const Sphere<T> sp{detail::v3<T>(in, 6), T(in[9])};
-      detail::put_cast<F>(a, book::cast(r, sp));
+      detail::put_cast<F>(a, book::cast(r, sp, wc), values);
       a.pred = book::hit(r, sp);
       break;
     }
     case Query::segment_sphere: {
       const Segment<T> s{detail::v3<T>(in, 0), detail::v3<T>(in, 3)};
       const Sphere<T> sp{detail::v3<T>(in, 6), T(in[9])};
-      detail::put_prox<F>(a, book::proximity(s, sp));
+      detail::put_prox<F>(a, book::proximity(s, sp, wp), values);
       a.pred = book::intersect(s, sp);
       break;
     }
@@ -94,21 +106,21 @@ Answer eval(Query q, const Inputs& in) {
     case Query::segment_box_cast: {
       const Segment<T> s{detail::v3<T>(in, 0), detail::v3<T>(in, 3)};
       const Box<T> b{detail::v3<T>(in, 6), detail::v3<T>(in, 9)};
-      detail::put_cast<F>(a, book::cast(s, b));
+      detail::put_cast<F>(a, book::cast(s, b, wc), values);
       a.pred = book::hit(s, b);
       break;
     }
     case Query::ray_box_cast: {
       const Ray<T> r{detail::v3<T>(in, 0), detail::v3<T>(in, 3)};
       const Box<T> b{detail::v3<T>(in, 6), detail::v3<T>(in, 9)};
-      detail::put_cast<F>(a, book::cast(r, b));
+      detail::put_cast<F>(a, book::cast(r, b, wc), values);
       a.pred = book::hit(r, b);
       break;
     }
     case Query::sphere_box: {
       const Sphere<T> sp{detail::v3<T>(in, 0), T(in[3])};
       const Box<T> b{detail::v3<T>(in, 4), detail::v3<T>(in, 7)};
-      detail::put_prox<F>(a, book::proximity(sp, b));
+      detail::put_prox<F>(a, book::proximity(sp, b, wp), values);
       a.pred = book::intersect(sp, b);
       break;
     }

@@ -1,0 +1,169 @@
+// cdref/oracle/bounded.hpp - a double with a rigorous bound on its error: the filter of the
+// fast exact oracle.
+//
+// A Bounded value (v, e) says: the exact value x of this quantity satisfies |x - v| <= e.
+// Inputs are exact (e = 0). Each operation computes v in double, round to nearest, and a
+// bound e' >= the propagated error plus the rounding error of v:
+//   a + b:  |x - v| <= ea + eb + u |v| / (1 - u)
+//   a * b:  |x - v| <= |a| eb + |b| ea + ea eb + u |v| / (1 - u) + eta
+//   a / b:  needs |b| > eb;  <= (ea |b| + eb |a|) / (|b| (|b| - eb)) + u |v| / (1 - u) + eta
+//   sqrt a: if a - ea > 0: <= ea / (sqrt(a - ea) + sqrt(a)) + u |v| / (1 - u)  (the root is
+//           monotone, and its derivative at the lower end bounds the slope)
+//           else (x may be 0): x lies in [0, sqrt(a + ea)], so |x - v| <= sqrt(a + ea)
+// with u = 2^-53 and eta = 2^-1074 (the absolute error of an underflowing product or
+// quotient). The bound itself is evaluated in double, so each is multiplied by (1 + 8u)
+// (at most four nonnegative terms, each rounded once or twice: their relative error is
+// below 6u) and its terms are nonnegative, so no cancellation can make it too small.
+// A non-finite v or e makes every comparison uncertain.
+//
+// A comparison is certain when the sign of the difference is: d = a - b (a Bounded), and
+// d.v - d.e > 0, d.v + d.e < 0, or d.v = d.e = 0 (both exact and equal). Otherwise it
+// throws oracle::uncertain, and the caller runs the same code on an exact type. A value is
+// known correctly rounded to double when e is below half the gap to both neighbours of v.
+#pragma once
+
+#include <Eigen/Core>
+#include <cdref/number_traits.hpp>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <string>
+
+namespace cdref::oracle {
+
+struct uncertain : std::exception {
+  const char* what() const noexcept override { return "cdref::oracle: the filter cannot decide"; }
+};
+
+class Bounded {
+ public:
+  static constexpr double u = 0x1p-53;
+  static constexpr double eta = 0x1p-1074;
+  static constexpr double grow = 1 + 8 * u;
+
+  Bounded() = default;
+  Bounded(double x) : v_(x), e_(0) {}  // NOLINT: an exact input
+  Bounded(int x) : v_(x), e_(0) {}     // NOLINT
+  Bounded(double v, double e) : v_(v), e_(e) {}
+
+  double value() const { return v_; }
+  double bound() const { return e_; }
+  bool finite() const { return std::isfinite(v_) && std::isfinite(e_); }
+
+  friend Bounded operator-(const Bounded& a) { return {-a.v_, a.e_}; }
+  friend Bounded operator+(const Bounded& a, const Bounded& b) {
+    const double s = a.v_ + b.v_;
+    return {s, (a.e_ + b.e_ + rounding(s)) * grow};
+  }
+  friend Bounded operator-(const Bounded& a, const Bounded& b) { return a + (-b); }
+  friend Bounded operator*(const Bounded& a, const Bounded& b) {
+    const double p = a.v_ * b.v_;
+    if (a.e_ == 0 && b.e_ == 0) return {p, (rounding(p) + eta) * grow};
+    return {p, (std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + rounding(p) + eta) * grow};
+  }
+  friend Bounded operator/(const Bounded& a, const Bounded& b) {
+    const double ab = std::fabs(b.v_);
+    if (!(ab > b.e_)) throw uncertain();  // the divisor may be zero
+    const double q = a.v_ / b.v_;
+    const double prop = (a.e_ * ab + b.e_ * std::fabs(a.v_)) / (ab * (ab - b.e_));
+    return {q, (prop * grow + rounding(q) + eta) * grow};
+  }
+  Bounded& operator+=(const Bounded& b) { return *this = *this + b; }
+  Bounded& operator-=(const Bounded& b) { return *this = *this - b; }
+  Bounded& operator*=(const Bounded& b) { return *this = *this * b; }
+  Bounded& operator/=(const Bounded& b) { return *this = *this / b; }
+
+  friend Bounded sqrt(const Bounded& a) { return root(a); }
+  static Bounded root(const Bounded& a) {
+    if (!a.finite()) throw uncertain();
+    const double lo = a.v_ - a.e_;
+    if (lo > 0) {
+      const double r = std::sqrt(a.v_);
+      // the lower end is computed with a rounding error: shrink it by a relative 2u
+      const double prop = a.e_ / (std::sqrt(lo * (1 - 2 * u)) + r);
+      return {r, (prop * grow + rounding(r)) * grow};
+    }
+    const double hi = (a.v_ + a.e_) * grow;
+    if (hi < 0) throw uncertain();  // not a square root of a nonnegative quantity
+    const double r = std::sqrt(std::max(a.v_, 0.0));
+    return {r, std::sqrt(hi) * grow};
+  }
+
+  // The sign of the exact value, or uncertain.
+  int sign() const {
+    if (!finite()) throw uncertain();
+    if (v_ - e_ > 0) return 1;
+    if (v_ + e_ < 0) return -1;
+    if (v_ == 0 && e_ == 0) return 0;
+    throw uncertain();
+  }
+  friend bool operator<(const Bounded& a, const Bounded& b) { return (a - b).sign() < 0; }
+  friend bool operator>(const Bounded& a, const Bounded& b) { return (a - b).sign() > 0; }
+  friend bool operator<=(const Bounded& a, const Bounded& b) { return (a - b).sign() <= 0; }
+  friend bool operator>=(const Bounded& a, const Bounded& b) { return (a - b).sign() >= 0; }
+  friend bool operator==(const Bounded& a, const Bounded& b) {
+    if (a.e_ == 0 && b.e_ == 0 && a.finite() && b.finite()) return a.v_ == b.v_;
+    return (a - b).sign() == 0;
+  }
+  friend bool operator!=(const Bounded& a, const Bounded& b) { return !(a == b); }
+
+  // The exact value rounded to nearest double, or uncertain.
+  double rounded() const {
+    if (!finite()) throw uncertain();
+    if (e_ == 0) return v_;
+    const double inf = std::numeric_limits<double>::infinity();
+    const double below = v_ - std::nextafter(v_, -inf), above = std::nextafter(v_, inf) - v_;
+    if (e_ < 0.5 * std::min(below, above)) return v_;  // both gaps are powers of two: exact
+    throw uncertain();
+  }
+  // The exact value rounded to nearest float, or uncertain.
+  float rounded_float() const {
+    if (!finite()) throw uncertain();
+    const float f = static_cast<float>(v_);
+    if (!std::isfinite(f)) throw uncertain();
+    const float inf = std::numeric_limits<float>::infinity();
+    // the float rounding interval of f, as doubles (a float midpoint has 25 bits: exact)
+    // next to +-max the missing neighbour is max +- ulp: the overflow threshold
+    const float dn = std::nextafter(f, -inf), up = std::nextafter(f, inf);
+    const double lo = std::isinf(dn) ? double(f) - (double(up) - double(f)) / 2 : (double(f) + double(dn)) / 2;
+    const double hi = std::isinf(up) ? double(f) + (double(f) - double(dn)) / 2 : (double(f) + double(up)) / 2;
+    // v - lo and hi - v are differences of nearby doubles; shrink them by 2u to be safe
+    const double room = std::min(v_ - lo, hi - v_) * (1 - 2 * u);
+    if (e_ < room) return f;
+    throw uncertain();
+  }
+
+ private:
+  static double rounding(double v) { return std::fabs(v) * (u / (1 - u)); }
+  double v_ = 0, e_ = 0;
+};
+
+}  // namespace cdref::oracle
+
+namespace cdref {
+template <>
+struct number_traits<oracle::Bounded> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws oracle::uncertain
+  static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
+  using sqrt_type = oracle::Bounded;
+  static oracle::Bounded sqrt(const oracle::Bounded& x) { return oracle::Bounded::root(x); }
+  static bool is_finite(const oracle::Bounded& x) { return x.finite(); }
+  static double to_double(const oracle::Bounded& x) { return x.rounded(); }
+  static float to_float(const oracle::Bounded& x) { return x.rounded_float(); }
+  static std::string name() { return "Bounded"; }
+};
+}  // namespace cdref
+
+namespace Eigen {
+template <>
+struct NumTraits<cdref::oracle::Bounded> {
+  using Real = cdref::oracle::Bounded;
+  using NonInteger = cdref::oracle::Bounded;
+  using Nested = cdref::oracle::Bounded;
+  using Literal = cdref::oracle::Bounded;
+  static inline Real epsilon() { return Real(0); }
+  static inline Real dummy_precision() { return Real(0); }
+  static inline int digits10() { return 15; }
+  enum { IsInteger = 0, IsSigned = 1, IsComplex = 0, RequireInitialization = 1, ReadCost = 2, AddCost = 4, MulCost = 6 };
+};
+}  // namespace Eigen
