@@ -96,7 +96,7 @@ struct SphereShot {
   }
 };
 
-std::vector<Family> sphere_shot_families(bool ray, bool cast) {
+std::vector<Family> sphere_shot_families(bool ray) {
   const SphereShot S{ray};
   std::vector<Family> f;
   f.push_back({"uniform", "centre in [-1,1]^3, radius in [0.25,2], endpoints in [-4,4]^3", {0},
@@ -146,7 +146,6 @@ std::vector<Family> sphere_shot_families(bool ray, bool cast) {
                  const double rho = uni(next, 0.25, 2);
                  return scaled(S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho), 10, k);
                }});
-  (void)cast;
   return f;
 }
 
@@ -351,7 +350,7 @@ std::vector<Family> box_shot_families(bool ray) {
   f.push_back({"planes", "parallel to a face just outside or inside it, lying in a face plane, ending on a plane",
                {0}, [B](Next& next, int) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
-                 const int i = pick(next, 3), j = (i + 1 + pick(next, 2)) % 3;
+                 const int i = pick(next, 3);
                  const double hi = i == 0 ? h.x : (i == 1 ? h.y : h.z);
                  const double sg = sign(next);
                  V s = c + uvec(next, -4, 4), t = c + uvec(next, -4, 4);
@@ -372,7 +371,6 @@ std::vector<Family> box_shot_families(bool ray) {
                    default: {  // the target exactly on a face plane
                      const double ci = (i == 0 ? c.x : (i == 1 ? c.y : c.z)) + sg * hi;
                      t = t - axis(i, dot(t, axis(i)) - ci);
-                     (void)j;
                      break;
                    }
                  }
@@ -407,9 +405,9 @@ std::vector<Family> box_shot_families(bool ray) {
 
 const std::vector<Family>& families(Query q) {
   static const std::vector<std::vector<Family>> all = {
-      sphere_sphere_families(),         sphere_shot_families(false, true), sphere_shot_families(true, true),
-      sphere_shot_families(false, false), box_box_families(),            box_shot_families(false),
-      box_shot_families(true),          sphere_box_families(),
+      sphere_sphere_families(), sphere_shot_families(false), sphere_shot_families(true),
+      sphere_shot_families(false), box_box_families(), box_shot_families(false),
+      box_shot_families(true), sphere_box_families(),
   };
   return all.at(static_cast<std::size_t>(q));
 }

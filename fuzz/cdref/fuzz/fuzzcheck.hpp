@@ -8,7 +8,8 @@
 //   - the book at CGAL::Gmpq and at CGAL::Epeck::FT: both must refuse the same inputs, and
 //     otherwise agree exactly, every output rounded correctly to double; and at exact types
 //     the root- and division-free predicate must agree with the full query, and
-//     Algorithm 3.1 with Algorithm 3.2 for segments and spheres.
+//     Algorithm 3.1 with Algorithm 3.2 for segments and spheres;
+//   - the oracle (filter first, then exact) must give exactly the Gmpq answer.
 // A violated check prints the inputs in hex-float and aborts.
 // check_case_reader feeds bytes as a case file to the case-file parser.
 #pragma once
