@@ -25,5 +25,6 @@ int cases_command(std::vector<std::string> args);
 int oracle_command(std::vector<std::string> args);
 int score_command(std::vector<std::string> args);
 int plot_command(std::vector<std::string> args);
+int report_command(std::vector<std::string> args);
 
 }  // namespace cdref::cli

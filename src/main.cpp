@@ -49,6 +49,9 @@ const char* usage = R"(usage:
       --quiet          no table
   cdref merge [--out F] [--json F] [--csv F] FILE...
                                  merge complete shard files of one campaign
+  cdref report [--n N] [--reps R] [--family F] [--error-n N] [--csv F]
+                                 what accuracy costs in time, side by side in one run (the
+                                 segment cast on a sphere, so far)
   cdref describe                 list queries, input and output columns, families and scales
   cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
                                  write case inputs as CSV (hex-float; --decimal: 17 digits)
@@ -269,6 +272,7 @@ int main(int argc, char* argv[]) {
     if (cmd == "oracle") return cli::oracle_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "score") return cli::score_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "plot") return cli::plot_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "report") return cli::report_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << usage;
       return 0;

@@ -84,4 +84,8 @@ grep -q "no family 'grazing' for query box-box" err.txt || fail "unknown family 
 python3 -c "import json,sys; d=json.load(open('whole.json')); assert len(d['cells'])>0" || fail "JSON does not parse"
 "$cdref" "${args[@]}" --csv out.csv
 head -1 out.csv | grep -q "^query,impl,family,scale,cases" || fail "CSV header"
+# the cost report: every row measured, in one run
+"$cdref" report --n 40 --reps 1 --error-n 20 --csv report.csv > report.txt
+[ "$(tail -n +2 report.csv | wc -l)" = 15 ] || fail "report rows: $(cat report.txt)"
+grep -q "^book double .* 1.00 " report.txt || fail "report: no book double baseline row"
 echo "cli: all checks passed"
