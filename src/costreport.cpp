@@ -15,12 +15,16 @@
 // is not measured here.
 // GCC 12 reports a "maybe uninitialized" copy inside CGAL's static filter for spheres (a
 // default-constructed Sphere_3 returned next to `false` and never read): off for CGAL only.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Intersections_3/Segment_3_Sphere_3.h>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include <algorithm>
 #include <cdref/exact.hpp>
@@ -123,7 +127,7 @@ int report_command(std::vector<std::string> args) {
   rows.push_back({"book double", "book-double", "", [&](std::size_t k) { return book::cast(pd.seg[k], pd.sph[k]).hit; }});
   rows.push_back({"book long double", "book-long-double", "",
                   [&](std::size_t k) { return book::cast(pl.seg[k], pl.sph[k]).hit; }});
-  const mpfr_precision restore(int(mpfr::mpreal::get_default_prec()));
+  const mpfr_precision restore{static_cast<int>(mpfr::mpreal::get_default_prec())};
   for (int bits : {128, 256}) {
     mpfr::mpreal::set_default_prec(bits);  // inputs made at this precision
     auto pm = std::make_shared<Prepared<mpfr::mpreal>>(cases);
