@@ -13,18 +13,7 @@
 // uniform, long-range and near-tangent families. The exact rows and the oracle have no
 // error by construction (the oracle's equality with the exact path is tested); MPFR's error
 // is not measured here.
-// GCC 12 reports a "maybe uninitialized" copy inside CGAL's static filter for spheres (a
-// default-constructed Sphere_3 returned next to `false` and never read): off for CGAL only.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Intersections_3/Segment_3_Sphere_3.h>
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include <cdref/exact/cgal_kernels.hpp>
 
 #include <algorithm>
 #include <cdref/exact.hpp>
