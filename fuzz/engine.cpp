@@ -302,6 +302,8 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
+// exact_truth is left out: the oracle and the exact path give identical results (tested),
+// so a campaign may be resumed or merged across the two.
 std::string Spec::fingerprint() const {
   std::ostringstream o;
   o << "seed=" << seed << ";n=" << n << ";queries=";

@@ -133,7 +133,8 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   return detail::cast_local(Vec3<F>(ray.source - sp.center), ray.direction, sp, false, w);
 }
 
-// The decision alone (no division of the lambdas, one square root fewer).
+// The decision alone: the same computation as cast() (the range tests need the roots),
+// with none of the outputs assembled.
 template <class F>
 bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
   return cast(seg, sp, 0).hit;
