@@ -109,7 +109,7 @@ Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used) 
   if (exact_used) *exact_used = false;
   if (precision != 64) {
     try {
-      return precision == 24 ? eval<oracle::Bounded, float>(q, in) : eval<oracle::Bounded, double>(q, in);
+      return precision == 24 ? eval<oracle::Bounded2, float>(q, in) : eval<oracle::Bounded2, double>(q, in);
     } catch (const oracle::uncertain&) {
     }
   }

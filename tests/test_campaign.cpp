@@ -279,15 +279,17 @@ TEST_CASE("the oracle gives exactly the exact answer, on every family of every q
             if (f.name == "uniform") ++uniform_cases, uniform_filtered += !used_exact;
           }
         }
-  // A double filter certifies the decisions and the values that come out exact or nearly
-  // (misses, box casts); a rounded square root rarely lands within half an ulp, so for the
-  // sphere queries the values usually take the exact path (a double-double filter is the
-  // next step). Both paths must be exercised here.
+  // The double-word filter (oracle::Bounded2) certifies the decisions and the values,
+  // square roots included, unless a sign or a rounding is within ~2^-100 relative of its
+  // boundary or the book's own cancellation eats the extra 53 bits (long range past ~1e6
+  // radii): measured 36,785 of 44,280 cases and 912 of 960 uniform ones. Both paths must
+  // be exercised here, and the filter must carry most of the load.
   std::printf("oracle (all outputs): the filter answered %llu of %llu cases, %llu of %llu uniform\n",
               (unsigned long long)filtered, (unsigned long long)cases, (unsigned long long)uniform_filtered,
               (unsigned long long)uniform_cases);
   REQUIRE(cases > 40000);
-  REQUIRE(filtered > cases / 4);
+  REQUIRE(filtered > cases * 3 / 4);
+  REQUIRE(uniform_filtered > uniform_cases * 9 / 10);
   REQUIRE(filtered < cases);
 }
 

@@ -242,3 +242,109 @@ TEST_CASE("rationals and a + b sqrt(d) round to the nearest long double", "[roun
   const Q tie2 = (exact::gmpq_of(up) + exact::gmpq_of(std::nextafter(up, 2.0L))) / Q(2);
   REQUIRE(exact::round_long_double(tie2) == std::nextafter(up, 2.0L));
 }
+
+// ---- oracle::Bounded2: every operation's bound holds, checked exactly ----
+#include <cdref/oracle/bounded2.hpp>
+
+namespace {
+
+using oracle::Bounded2;
+
+// Exact value hi + lo of a Bounded2, and the check |X - (hi + lo)| <= e for an exact X.
+Q dw_value(const Bounded2& b) { return Q(b.hi()) + Q(b.lo()); }
+bool dw_encloses(const Bounded2& b, const Q& x) {
+  const Q d = x - dw_value(b);
+  return (d < 0 ? Q(-d) : d) <= Q(b.bound());
+}
+// sqrt(X) within [v - e, v + e], X >= 0, decided by squaring.
+bool dw_encloses_root(const Bounded2& b, const Q& x) {
+  const Q lo = dw_value(b) - Q(b.bound()), hi = dw_value(b) + Q(b.bound());
+  return (lo <= 0 || lo * lo <= x) && hi >= 0 && hi * hi >= x;
+}
+
+struct Tracked {
+  Bounded2 b;
+  Q x;  // the exact value b stands for
+};
+
+}  // namespace
+
+TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[rounding][oracle]") {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> mant(-1, 1);
+  std::uniform_int_distribution<int> expo(-60, 60), pick(0, 5);
+  auto draw = [&] { return std::ldexp(mant(rng), expo(rng)); };
+  int checked = 0, roots = 0, quotients = 0, exact_ties = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    // a chain of operations with cancellation on purpose: values near one another
+    std::vector<Tracked> pool;
+    for (int k = 0; k < 4; ++k) {
+      const double d = draw();
+      pool.push_back({Bounded2(d), Q(d)});
+    }
+    for (int step = 0; step < 12; ++step) {
+      const Tracked& a = pool[rng() % pool.size()];
+      const Tracked& b = pool[rng() % pool.size()];
+      Tracked r;
+      try {
+        switch (pick(rng)) {
+          case 0: r = {a.b + b.b, a.x + b.x}; break;
+          case 1: r = {a.b - b.b, a.x - b.x}; break;
+          case 2: r = {a.b * b.b, a.x * b.x}; break;
+          case 3: r = {a.b / b.b, a.x / b.x}; ++quotients; break;
+          case 4: {  // near-cancellation: a - (a + tiny)
+            const double t = std::ldexp(mant(rng), expo(rng) - 80);
+            r = {a.b - (a.b + Bounded2(t)), Q(-t)};
+            break;
+          }
+          default: {
+            const Tracked& s = a.x >= 0 ? a : b;
+            if (s.x < 0) continue;
+            const Bounded2 root = Bounded2::root(s.b);
+            REQUIRE(dw_encloses_root(root, s.x));
+            ++roots;
+            continue;  // the root is not rational: not kept in the pool
+          }
+        }
+      } catch (const oracle::uncertain&) {
+        continue;  // a divisor that may be zero, a root of a maybe-negative value
+      }
+      if (!r.b.finite()) continue;
+      REQUIRE(dw_encloses(r.b, r.x));
+      REQUIRE(r.b.hi() == r.b.hi() + r.b.lo());  // normalized
+      ++checked;
+      // a certain sign is the exact sign; a certain rounding is the exact rounding
+      // (each evaluated outside the assertion: uncertain is a fine answer)
+      auto certain = [](auto f) -> std::optional<decltype(f())> {
+        try {
+          return f();
+        } catch (const oracle::uncertain&) {
+          return std::nullopt;
+        }
+      };
+      if (const auto s = certain([&] { return r.b.sign(); })) {
+        REQUIRE(*s == CGAL::sign(r.x));
+        exact_ties += *s == 0;
+      }
+      if (const auto d = certain([&] { return r.b.rounded(); })) REQUIRE(*d == round_double(r.x));
+      if (const auto f = certain([&] { return r.b.rounded_float(); })) REQUIRE(*f == round_float(r.x));
+      pool.push_back(r);
+    }
+  }
+  CHECK(checked > 30000);
+  CHECK(roots > 3000);
+  CHECK(quotients > 3000);
+  CHECK(exact_ties > 100);
+}
+
+TEST_CASE("oracle::Bounded2 certifies square roots that the double filter cannot", "[rounding][oracle]") {
+  // sqrt(2): the double filter's bound is an ulp or so, too wide to round; the double word
+  // is 2^-100 close and rounds it.
+  CHECK_THROWS_AS(oracle::Bounded::root(oracle::Bounded(2.0)).rounded(), oracle::uncertain);
+  CHECK(Bounded2::root(Bounded2(2.0)).rounded() == std::sqrt(2.0));
+  // a square root exactly between two floats is a tie: uncertain, never guessed
+  const double mid = 1.0 + std::ldexp(1.0, -24);  // halfway between 1 and 1 + 2^-23
+  CHECK((Bounded2(mid) * Bounded2(mid)).rounded() == mid * mid);  // 49 bits: exact
+  CHECK_THROWS_AS(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded_float(), oracle::uncertain);
+  CHECK(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded() == mid);
+}

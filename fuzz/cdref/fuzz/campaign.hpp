@@ -83,9 +83,11 @@ const Implementation& implementation_by_name(const std::string& name);
 // 24), double (53) or long double (64).
 Answer truth(Query q, const Inputs& in, int precision);
 
-// The same answer from the fast oracle: the book run on oracle::Bounded (a double with a
-// rigorous error bound), accepted when every comparison and every rounding is certain, and
-// otherwise the exact path above. `exact_used` (if given) tells which path answered.
+// The same answer from the fast oracle: the book run on oracle::Bounded2 (a double word
+// with a rigorous error bound, exact/cdref/oracle/bounded2.hpp), accepted when every
+// comparison and every rounding is certain, and otherwise the exact path above (always at
+// precision 64: a double word cannot certify a long double rounding of long double
+// inputs). `exact_used` (if given) tells which path answered.
 Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used = nullptr);
 
 // The oracle for the classifications alone (Answer::cls and Answer::pred; no values).

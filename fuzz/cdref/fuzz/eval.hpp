@@ -7,6 +7,7 @@
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
 #include <cdref/oracle/bounded.hpp>
+#include <cdref/oracle/bounded2.hpp>
 #include <cdref/fuzz/campaign.hpp>
 
 namespace cdref::fuzz {
@@ -22,7 +23,8 @@ Vec3<T> v3(const Inputs& in, int k) {
 // rounded correctly to F).
 template <class F, class S>
 long double value(const S& x) {
-  if constexpr (std::is_same_v<S, oracle::Bounded>) {  // the filter: certain, or it throws
+  if constexpr (std::is_same_v<S, oracle::Bounded> || std::is_same_v<S, oracle::Bounded2>) {
+    // the filters: certain, or they throw
     if constexpr (std::is_same_v<F, float>)
       return x.rounded_float();
     else if constexpr (std::is_same_v<F, double>)

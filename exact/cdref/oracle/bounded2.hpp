@@ -1,0 +1,255 @@
+// cdref/oracle/bounded2.hpp - a double-word number (an unevaluated sum hi + lo of two
+// doubles) with a rigorous bound on its error: the second stage of the fast exact oracle,
+// the one that certifies the correct rounding of square roots and quotients.
+//
+// oracle::Bounded (bounded.hpp) carries a double and an error of a few ulps: enough to
+// decide most signs, too wide to round a square root correctly (that needs the error
+// below the distance to the nearest rounding midpoint, half an ulp or much less). A
+// Bounded2 value (hi, lo, e) says: the exact value x of this quantity satisfies
+// |x - (hi + lo)| <= e, and hi + lo is normalized (hi = fl(hi + lo)), so the error of an
+// operation is of the order of u^2 times its operands (u = 2^-53) instead of u.
+//
+// Operations (u = 2^-53; every rounding error of one IEEE operation with result r is at
+// most u |r| in round to nearest, plus eta = 2^-1074 for a product or quotient that
+// underflows; a sum that underflows is exact):
+//   a + b: (s, t) = two_sum(a.hi, b.hi) is exact; w1 = fl(t + a.lo), w = fl(w1 + b.lo)
+//          round twice; (hi, lo) = two_sum(s, w) is exact. So
+//          e' = ea + eb + u (|w1| + |w|).
+//   a * b: with a = ah + al, b = bh + bl: (p, pe) = two_prod(ah, bh) is exact when
+//          |p| >= 2^-968 (then ah bh - p is a multiple of 2^-1073 below 2^53 of them),
+//          else off by at most eta; c1 = fl(ah bl), c2 = fl(al bh), al bl left out;
+//          w1 = fl(pe + c1), w = fl(w1 + c2); (hi, lo) = two_sum(p, w). The propagated
+//          error of exact values x = a + da, y = b + db is |a db + b da + da db| <=
+//          (|ah| + |al|) eb + (|bh| + |bl|) ea + ea eb, so
+//          e' = that + |al| |bl| + u (|c1| + |c2| + |w1| + |w|) + 3 eta (c1, c2, al bl
+//          may underflow), plus eta for pe when |p| < 2^-968.
+//   a / b: q = fl(fl(ah / bh) + correction) (one step of long division), then bounded
+//          a posteriori: the residual R = a - q b is computed with the operations above
+//          (q is an exact double), and with X, Y the exact values,
+//          |X/Y - q| <= |X - q Y| / |Y| <= (|R| + eR + ea + |q| eb) / (|b| - eb),
+//          requiring |b| > eb (else the divisor may be zero: uncertain).
+//   sqrt a: y = sqrt(ah) refined by one Newton step y' = y + (a - y^2) / (2 y) in double
+//          words, then bounded a posteriori the same way: with R = a - y'^2 (operations
+//          above, y' an exact double word) and X the exact value,
+//          |sqrt(X) - y'| = |X - y'^2| / (sqrt(X) + y') <= (|R| + eR + ea) / y'.
+//          When a may be zero (a.hi <= 0, or the bound reaches zero) the value is
+//          0 or sqrt(a.hi) with e' = sqrt(|a| + ea).
+// The bound is itself computed in double: every bound expression is a sum of at most
+// eight nonnegative terms, each rounded at most three times, so multiplying by
+// grow = 1 + 16u covers its own rounding. A non-finite part makes every use uncertain.
+//
+// Signs: certain when |hi| > |lo| + e (then sign = sign(hi)), or when hi = lo = e = 0.
+// Rounding to double: hi is the double nearest to hi + lo; the exact value rounds to hi
+// when [v - e, v + e] lies strictly inside hi's rounding interval (the midpoints to both
+// neighbours), checked with the differences to the midpoints computed exactly.
+#pragma once
+
+#include <Eigen/Core>
+#include <cdref/number_traits.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "bounded.hpp"
+
+namespace cdref::oracle {
+
+class Bounded2 {
+ public:
+  static constexpr double u = 0x1p-53;
+  static constexpr double eta = 0x1p-1074;
+  static constexpr double grow = 1 + 16 * u;
+  static constexpr double exact_product = 0x1p-968;  // two_prod is exact at and above
+
+  Bounded2() = default;
+  Bounded2(double x) : hi_(x) {}  // NOLINT: an exact input
+  Bounded2(int x) : hi_(x) {}     // NOLINT
+
+  double hi() const { return hi_; }
+  double lo() const { return lo_; }
+  double bound() const { return e_; }
+  bool finite() const { return std::isfinite(hi_) && std::isfinite(lo_) && std::isfinite(e_); }
+
+  friend Bounded2 operator-(const Bounded2& a) { return make(-a.hi_, -a.lo_, a.e_); }
+  friend Bounded2 operator+(const Bounded2& a, const Bounded2& b) {
+    double s, t;
+    two_sum(a.hi_, b.hi_, s, t);
+    const double w1 = t + a.lo_;
+    const double w = w1 + b.lo_;
+    Bounded2 r;
+    two_sum(s, w, r.hi_, r.lo_);
+    const double err = a.e_ + b.e_ + u * (std::fabs(w1) + std::fabs(w));
+    r.e_ = err == 0 ? 0 : err * grow;
+    return r;
+  }
+  friend Bounded2 operator-(const Bounded2& a, const Bounded2& b) { return a + (-b); }
+  friend Bounded2 operator*(const Bounded2& a, const Bounded2& b) {
+    const double p = a.hi_ * b.hi_;
+    const double pe = std::fma(a.hi_, b.hi_, -p);
+    double err = (std::fabs(p) >= exact_product || (p == 0 && (a.hi_ == 0 || b.hi_ == 0))) ? 0 : eta;
+    double w = pe;
+    if (a.lo_ != 0 || b.lo_ != 0) {
+      const double c1 = a.hi_ * b.lo_, c2 = a.lo_ * b.hi_;
+      const double w1 = pe + c1;
+      w = w1 + c2;
+      err += std::fabs(a.lo_) * std::fabs(b.lo_) +
+             u * (std::fabs(c1) + std::fabs(c2) + std::fabs(w1) + std::fabs(w)) + 3 * eta;
+    }
+    if (a.e_ != 0 || b.e_ != 0)
+      err += (std::fabs(a.hi_) + std::fabs(a.lo_)) * b.e_ + (std::fabs(b.hi_) + std::fabs(b.lo_)) * a.e_ +
+             a.e_ * b.e_;
+    Bounded2 r;
+    two_sum(p, w, r.hi_, r.lo_);
+    r.e_ = err == 0 ? 0 : err * grow;
+    return r;
+  }
+  friend Bounded2 operator/(const Bounded2& a, const Bounded2& b) {
+    if (!a.finite() || !b.finite()) throw uncertain();
+    const double bmag = std::fabs(b.hi_) - std::fabs(b.lo_);  // |b| >= this, up to a rounding
+    const double bmin = bmag * (1 - 2 * u) - b.e_ * grow;     // |exact divisor| >= bmin
+    if (!(bmin > 0)) throw uncertain();
+    // q = q1 + q2 as a double word: q1 = a.hi / b.hi, q2 from the remainder.
+    const double q1 = a.hi_ / b.hi_;
+    const Bounded2 rem1 = exact_part(a) - exact_part(b) * Bounded2(q1);
+    const double q2 = rem1.hi_ / b.hi_;
+    Bounded2 q;
+    two_sum(q1, q2, q.hi_, q.lo_);
+    // a posteriori: R = a - q b on the exact parts
+    const Bounded2 R = exact_part(a) - exact_part(b) * q;
+    const double qmag = std::fabs(q.hi_) + std::fabs(q.lo_);
+    const double num = (std::fabs(R.hi_) + std::fabs(R.lo_) + R.e_ + a.e_ + qmag * b.e_) * grow;
+    q.e_ = num == 0 ? 0 : (num / bmin) * grow + eta;
+    if (!q.finite()) throw uncertain();
+    return q;
+  }
+  Bounded2& operator+=(const Bounded2& b) { return *this = *this + b; }
+  Bounded2& operator-=(const Bounded2& b) { return *this = *this - b; }
+  Bounded2& operator*=(const Bounded2& b) { return *this = *this * b; }
+  Bounded2& operator/=(const Bounded2& b) { return *this = *this / b; }
+
+  friend Bounded2 sqrt(const Bounded2& a) { return root(a); }
+  static Bounded2 root(const Bounded2& a) {
+    if (!a.finite()) throw uncertain();
+    if (a.hi_ == 0 && a.lo_ == 0 && a.e_ == 0) return Bounded2(0.0);
+    const double amag = std::fabs(a.hi_) + std::fabs(a.lo_);
+    if (!(a.hi_ > 0) || !(a.hi_ - std::fabs(a.lo_) > a.e_ * grow)) {  // a may be zero
+      if ((a.hi_ + std::fabs(a.lo_) + a.e_ * grow) * grow < 0) throw uncertain();  // negative
+      Bounded2 r(std::sqrt(std::max(a.hi_, 0.0)));
+      r.e_ = std::sqrt((amag + a.e_) * grow) * grow;
+      return r;
+    }
+    const double y = std::sqrt(a.hi_);
+    const Bounded2 r1 = exact_part(a) - Bounded2(y) * Bounded2(y);
+    const double corr = r1.hi_ / (2 * y);
+    Bounded2 out;
+    two_sum(y, corr, out.hi_, out.lo_);
+    const Bounded2 R = exact_part(a) - out * out;
+    const double num = (std::fabs(R.hi_) + std::fabs(R.lo_) + R.e_ + a.e_) * grow;
+    const double ymin = (out.hi_ - std::fabs(out.lo_)) * (1 - 2 * u);
+    if (!(ymin > 0)) throw uncertain();
+    out.e_ = num == 0 ? 0 : (num / ymin) * grow + eta;
+    return out;
+  }
+
+  // The sign of the exact value, or uncertain.
+  int sign() const {
+    if (!finite()) throw uncertain();
+    if (hi_ == 0 && lo_ == 0 && e_ == 0) return 0;
+    // |hi + lo| >= |hi| - |lo| exactly; the comparison is safe with a margin of 2u
+    if (std::fabs(hi_) * (1 - 2 * u) > (std::fabs(lo_) + e_) * grow) return hi_ > 0 ? 1 : -1;
+    throw uncertain();
+  }
+  friend bool operator<(const Bounded2& a, const Bounded2& b) { return (a - b).sign() < 0; }
+  friend bool operator>(const Bounded2& a, const Bounded2& b) { return (a - b).sign() > 0; }
+  friend bool operator<=(const Bounded2& a, const Bounded2& b) { return (a - b).sign() <= 0; }
+  friend bool operator>=(const Bounded2& a, const Bounded2& b) { return (a - b).sign() >= 0; }
+  friend bool operator==(const Bounded2& a, const Bounded2& b) { return (a - b).sign() == 0; }
+  friend bool operator!=(const Bounded2& a, const Bounded2& b) { return !(a == b); }
+
+  // The exact value rounded to nearest double, or uncertain.
+  double rounded() const {
+    if (!finite()) throw uncertain();
+    if (lo_ == 0 && e_ == 0) return hi_ + 0.0;  // an exact zero rounds to +0, never -0
+    const double inf = std::numeric_limits<double>::infinity();
+    const double dn = std::nextafter(hi_, -inf), up = std::nextafter(hi_, inf);
+    // Half-gaps are powers of two (exact). hi's rounding interval is
+    // (hi - below, hi + above); the value lies in [hi + lo - e, hi + lo + e].
+    const double below = std::isinf(dn) ? (up - hi_) / 2 : (hi_ - dn) / 2;
+    const double above = std::isinf(up) ? (hi_ - dn) / 2 : (up - hi_) / 2;
+    // above - lo and below + lo: |lo| <= half an ulp of hi, so each is a sum of two
+    // numbers within a factor 2^54 of one another, rounded once: shrink it by 2u.
+    const double room = std::min(above - lo_, below + lo_) * (1 - 2 * u);
+    if (e_ * grow < room) return hi_;
+    throw uncertain();
+  }
+  // The exact value rounded to nearest float, or uncertain.
+  float rounded_float() const {
+    if (!finite()) throw uncertain();
+    if (hi_ == 0 && lo_ == 0 && e_ == 0) return 0.0f;  // +0, never -0
+    const float f = static_cast<float>(hi_);
+    if (!std::isfinite(f)) throw uncertain();
+    const float inf = std::numeric_limits<float>::infinity();
+    const float fdn = std::nextafter(f, -inf), fup = std::nextafter(f, inf);
+    // the float rounding interval of f as doubles (a float midpoint has 25 bits: exact)
+    const double mlo = std::isinf(fdn) ? double(f) - (double(fup) - double(f)) / 2 : (double(f) + double(fdn)) / 2;
+    const double mhi = std::isinf(fup) ? double(f) + (double(f) - double(fdn)) / 2 : (double(f) + double(fup)) / 2;
+    // The exact value X lies in [v - e, v + e], v = hi + lo. With D = v - mlo formed as a
+    // double word on exact parts (its own bound dlo.e), X > mlo is certain when
+    // D.hi - |D.lo| > D.e + e; likewise mhi - v. Both sides are compared with their
+    // rounding covered: the left shrunk by 2u, the sum of nonnegative terms grown.
+    const Bounded2 v = exact_part(*this);
+    const Bounded2 dlo = v - Bounded2(mlo), dhi = Bounded2(mhi) - v;
+    const bool inside_lo = (dlo.hi_ - std::fabs(dlo.lo_)) * (1 - 2 * u) > (dlo.e_ + e_) * grow;
+    const bool inside_hi = (dhi.hi_ - std::fabs(dhi.lo_)) * (1 - 2 * u) > (dhi.e_ + e_) * grow;
+    if (inside_lo && inside_hi) return f;
+    throw uncertain();
+  }
+
+ private:
+  static void two_sum(double a, double b, double& s, double& t) {
+    s = a + b;
+    const double bb = s - a;
+    t = (a - (s - bb)) + (b - bb);
+  }
+  static Bounded2 make(double hi, double lo, double e) {
+    Bounded2 r;
+    r.hi_ = hi;
+    r.lo_ = lo;
+    r.e_ = e;
+    return r;
+  }
+  // hi + lo as an exact value (the error bound dropped).
+  static Bounded2 exact_part(const Bounded2& a) { return make(a.hi_, a.lo_, 0); }
+
+  double hi_ = 0, lo_ = 0, e_ = 0;
+};
+
+}  // namespace cdref::oracle
+
+namespace cdref {
+template <>
+struct number_traits<oracle::Bounded2> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws oracle::uncertain
+  static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
+  using sqrt_type = oracle::Bounded2;
+  static oracle::Bounded2 sqrt(const oracle::Bounded2& x) { return oracle::Bounded2::root(x); }
+  static bool is_finite(const oracle::Bounded2& x) { return x.finite(); }
+  static double to_double(const oracle::Bounded2& x) { return x.rounded(); }
+  static float to_float(const oracle::Bounded2& x) { return x.rounded_float(); }
+  static std::string name() { return "Bounded2"; }
+};
+}  // namespace cdref
+
+namespace Eigen {
+template <>
+struct NumTraits<cdref::oracle::Bounded2> {
+  using Real = cdref::oracle::Bounded2;
+  using NonInteger = cdref::oracle::Bounded2;
+  using Nested = cdref::oracle::Bounded2;
+  using Literal = cdref::oracle::Bounded2;
+  static inline Real epsilon() { return Real(0); }
+  static inline Real dummy_precision() { return Real(0); }
+  static inline int digits10() { return 31; }
+  enum { IsInteger = 0, IsSigned = 1, IsComplex = 0, RequireInitialization = 1, ReadCost = 3, AddCost = 20, MulCost = 20 };
+};
+}  // namespace Eigen
