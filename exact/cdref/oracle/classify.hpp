@@ -1,0 +1,907 @@
+// cdref/oracle/classify.hpp - the fast exact classification oracle for the eight campaign
+// queries at double inputs. Each classify() returns exactly what the book's algorithm
+// (include/cdref/book) returns when instantiated at CGAL::Gmpq on the same doubles, in three
+// stages:
+//
+//   1. filter     each decisive polynomial evaluated in double, its sign accepted when the
+//                 value exceeds an error bound derived below (no rounding-mode switch);
+//   2. expansion  the exact sign by floating-point expansions (Shewchuk 1997: Two-Sum,
+//                 Two-Product with std::fma, Scale-Expansion, Fast-Expansion-Sum, a final
+//                 Grow-Expansion pass), in fixed-size stack buffers, on inputs scaled by a
+//                 power of two into a range where nothing overflows or underflows (each
+//                 predicate is first tried by the filter there; only the undecided ones are
+//                 expanded);
+//   3. rational   the book at CGAL::Gmpq.
+//
+// ---- The polynomials ---------------------------------------------------------------------
+// At an exact type every difference s = source - centre is exact, so the book's decisions are
+// signs of polynomials in the inputs:
+//   sphere-sphere   S^2 - |D|^2 >= 0, D = cA - cB, S = rhoA + rhoB.
+//   ray/segment cast on a sphere (Algorithm 3.1, book::hit), s = source - c, r = t - s
+//                   (= target - source for a segment, the direction for a ray), t = target - c:
+//                   |r|^2 = 0 (a segment of length 0: exact comparison of the inputs) -> |s|^2 <= rho^2;
+//                   sigma = (s.r)^2 - |r|^2 (|s|^2 - rho^2) >= 0, and by Lagrange's identity
+//                   (s.r)^2 - |r|^2 |s|^2 = -|s x r|^2, sigma = |r|^2 rho^2 - |s x r|^2, the form
+//                   used here (its rounding error is smaller; at exact types both are equal);
+//                   lambda_2 >= 0 <=> s.r <= 0 or |s|^2 <= rho^2;
+//                   lambda_1 <= 1 <=> s.r + |r|^2 = t.r >= 0 or |t|^2 <= rho^2.
+//   segment-sphere  (Algorithm 3.2, book::intersect) delta = -s.r: delta <= 0 <=> s.r >= 0 ->
+//                   |s|^2 <= rho^2; delta >= |r|^2 <=> t.r <= 0 -> |t|^2 <= rho^2; otherwise
+//                   |s|^2|r|^2 - delta^2 <= rho^2 |r|^2 <=> sigma >= 0. Both algorithms decide
+//                   whether the closed segment meets the closed ball, so at exact types they
+//                   agree on every input (the test checks it on every family); the oracle keeps
+//                   both branch structures and both names.
+//   box-box         per axis |a - b| <= ea + eb <=> sign(ea + eb - |a - b|) >= 0.
+//   ray/segment cast on a box (Algorithm 3.3): outcodes are signs of p - c + h and p - c - h.
+//                   The book keeps the largest entering parameter (starting at 0) and the
+//                   smallest exiting one (starting at 1 for a segment) and hits iff
+//                   enter <= exit. Every entering parameter lies in [0, 1] (the source is
+//                   outside that plane, the target is not) and every exiting one in [0, 1]
+//                   ([0, inf) for a ray), so the decision is: for every entering plane p and
+//                   exiting plane q, lambda_p <= lambda_q, i.e. with lambda = n / d, d > 0
+//                   (sign of d known from the outcodes),  n_p d_q - n_q d_p <= 0.
+//                   n = -(s - c) -+ h (3 inputs), d = |target - source| or |direction|.
+//                   Ties between planes change which plane the book keeps, never the decision.
+//   sphere-box      v_i = clamp(c_i, -h_i, h_i) - c_i, |v|^2 <= rho^2 with c = centre - box
+//                   centre. |v_i| = max(0, |c_i| - h_i) whichever branch the book takes.
+// Every one of these signs is invariant under scaling all inputs by the same power of two
+// (each polynomial is homogeneous, and the box cast compares fractions), which stage 2 uses.
+//
+// ---- Stage 1: error bounds ---------------------------------------------------------------
+// Model: u = 2^-53; fl(a op b) = (a op b)(1 + delta), |delta| <= u, for + - * while nothing
+// overflows or underflows; theta_k: a product of k factors (1 + delta) equals 1 + theta_k with
+// |theta_k| <= gamma_k = k u / (1 - k u) (Higham, Lemmas 3.1, 3.3). A leaf s~ = fl(p - c) is
+// s (1 + delta): one factor. Expanding the computed expression into monomials of the exact
+// leaves, each monomial carries at most K factors, K counted along the evaluation tree
+// (K(leaf) <= 1, K(a +- b) = max(K(a), K(b)) + 1, K(a * b) = K(a) + K(b) + 1), so
+//     |P~ - P| <= gamma_K P+,   P+ = the sum of the absolute values of the monomials.
+// P+ is bounded by quantities computed anyway (sums of squares); the exact leaves are bounded
+// by the computed ones (|s| <= |s~| / (1 - u)), the computed sums of squares by their terms
+// (1 +- gamma_3), and the bound's own evaluation loses at most a factor (1 - u)^3. All these
+// inflations together stay below (1 + 40u), so the constant is taken as the next integer
+// multiple of u above K u: gamma_K (1 + 40u) < (K + 1) u (1 - 3u). The remaining margin,
+// at least u P+ / 2, absorbs underflow: an underflowing product is off by at most 2^-1075,
+// multiplied by cofactors bounded by the other magnitudes; the range checks (sums of squares
+// in [2^-960, 2^1000], or [2^-480, 2^480] for the quartic sigma) keep that below 2^-500 times
+// the margin, keep the bound itself a normal number, and exclude overflow (every intermediate
+// is below the checked sum). A NaN or infinity fails the range checks. Outside them: stage 2.
+//
+// ---- Stage 2: expansions -------------------------------------------------------------------
+// Two-Sum and Two-Product (x = fl(ab), y = fma(a, b, -x)) are error-free as long as nothing
+// overflows and no product's exact value has bits below 2^-1074. After scaling by a power of
+// two so that the largest input magnitude is below 2^100, and requiring every nonzero input
+// to be at least 2^-180 (otherwise stage 3), every input is a multiple of 2^-232, every
+// component of a degree-k quantity a multiple of 2^(-232 k) >= 2^-928 (k <= 4), and every
+// magnitude below 2^420. So every sum and product is exact: the expansions represent the
+// polynomials exactly whatever the overlap of their components. The sign is read after a
+// Grow-Expansion pass (Shewchuk's Theorem 10: adding doubles one by one to a nonoverlapping
+// expansion keeps it nonoverlapping, in any tie-breaking), whose largest component then
+// dominates the sum of the others (skipped when a cheap rigorous test shows that the last
+// component already does). Scale-Expansion and Fast-Expansion-Sum keep the lengths
+// short (under round-to-even their outputs are nonoverlapping too); their correctness as sums
+// does not depend on it.
+#pragma once
+
+#include <cdref/cdref.hpp>
+#include <cdref/exact.hpp>
+#include <cmath>
+
+namespace cdref::oracle {
+
+enum class Stage { filter, expansion, rational };
+
+namespace staged {
+
+inline constexpr int unknown = 2;  // a sign (-1, 0, 1) or this; a decision (0, 1) or this
+inline constexpr double u = 0x1p-53;
+
+// ---- stage 1 helpers ----
+// Range of the sums of squares (or of the absolute terms) that the bounds rely on.
+inline bool in_range(double m) { return m >= 0x1p-960 && m <= 0x1p1000; }
+inline int fsign(double p, double bound) { return p > bound ? 1 : (p < -bound ? -1 : unknown); }
+inline int le0(int s) { return s == unknown ? unknown : int(s <= 0); }
+inline int ge0(int s) { return s == unknown ? unknown : int(s >= 0); }
+
+// ---- stage 2: expansions ----
+template <int N>
+struct Exp {
+  int n = 0;
+  double c[N];  // exact sum of c[0..n), no zeros, roughly increasing magnitude
+};
+
+inline void two_sum(double a, double b, double& x, double& y) {
+  const double s = a + b, bv = s - a, av = s - bv;
+  y = (a - av) + (b - bv);
+  x = s;
+}
+inline void two_prod(double a, double b, double& x, double& y) {
+  x = a * b;
+  y = std::fma(a, b, -x);
+}
+
+// e = a (one component).
+template <int N>
+void set1(Exp<N>& e, double a) {
+  e.n = 0;
+  if (a != 0) e.c[e.n++] = a;
+}
+// e = a + b exactly (Two-Sum: |y| <= ulp(x) / 2, so (y, x) is nonoverlapping).
+template <int N>
+void set2(Exp<N>& e, double a, double b) {
+  static_assert(N >= 2);
+  double x, y;
+  two_sum(a, b, x, y);
+  e.n = 0;
+  if (y != 0) e.c[e.n++] = y;
+  if (x != 0) e.c[e.n++] = x;
+}
+template <int N>
+void negate(Exp<N>& e) {
+  for (int i = 0; i < e.n; ++i) e.c[i] = -e.c[i];
+}
+// h = e + f (or e - f): Fast-Expansion-Sum's merge by magnitude, then a Two-Sum chain with
+// zero elimination. Exact whatever the inputs (every step is a Two-Sum); h.n <= e.n + f.n.
+// h must not alias e or f; its capacity must cover e.n + f.n.
+template <int A, int B, int N>
+void add(const Exp<A>& e, const Exp<B>& f, Exp<N>& h, bool subtract = false) {
+  const int m = e.n, n = f.n;
+  int i = 0, j = 0, k = 0;
+  auto take = [&]() -> double {
+    if (j < n) {
+      const double fv = subtract ? -f.c[j] : f.c[j];
+      if (i < m && std::fabs(e.c[i]) < std::fabs(fv)) return e.c[i++];
+      ++j;
+      return fv;
+    }
+    return e.c[i++];
+  };
+  if (m + n == 0) {
+    h.n = 0;
+    return;
+  }
+  double q = take();
+  for (int left = m + n - 1; left > 0; --left) {
+    double hh;
+    two_sum(q, take(), q, hh);
+    if (hh != 0) h.c[k++] = hh;
+  }
+  if (q != 0) h.c[k++] = q;
+  h.n = k;
+}
+// h = e * b: Scale-Expansion with zero elimination; h.n <= 2 e.n. Exact.
+template <int A, int N>
+void scale(const Exp<A>& e, double b, Exp<N>& h) {
+  static_assert(N >= 2 * A);
+  int k = 0;
+  if (e.n == 0 || b == 0) {
+    h.n = 0;
+    return;
+  }
+  double q, hh;
+  two_prod(e.c[0], b, q, hh);
+  if (hh != 0) h.c[k++] = hh;
+  for (int i = 1; i < e.n; ++i) {
+    double p1, p0, sum;
+    two_prod(e.c[i], b, p1, p0);
+    two_sum(q, p0, sum, hh);
+    if (hh != 0) h.c[k++] = hh;
+    two_sum(p1, sum, q, hh);
+    if (hh != 0) h.c[k++] = hh;
+  }
+  if (q != 0) h.c[k++] = q;
+  h.n = k;
+}
+// h = a * b: the sum of the scalings of a by each component of b; h.n <= 2 a.n b.n.
+template <int A, int B, int N>
+void mul(const Exp<A>& a, const Exp<B>& b, Exp<N>& h) {
+  static_assert(N >= 2 * A * B);
+  if (b.n == 1) return scale(a, b.c[0], h);
+  Exp<2 * A> t;
+  Exp<N> buf[2];
+  int cur = 0;
+  buf[0].n = 0;
+  for (int j = 0; j < b.n; ++j) {  // after step j the length is <= 2 A (j + 1) <= N
+    scale(a, b.c[j], t);
+    add(buf[cur], t, buf[1 - cur]);
+    cur ^= 1;
+  }
+  h.n = buf[cur].n;
+  for (int i = 0; i < h.n; ++i) h.c[i] = buf[cur].c[i];
+}
+// Shewchuk's Compress, in place: a top-down then a bottom-up Two-Sum pass that merges
+// components sharing bits, so that a product of compressed expansions has few terms. Exact
+// whatever the input (Two-Sum everywhere); the length never grows.
+template <int N>
+void compress(Exp<N>& e) {
+  if (e.n < 2) return;
+  double g[N];
+  int bottom = e.n - 1;
+  double q = e.c[bottom];
+  for (int i = e.n - 2; i >= 0; --i) {
+    double hi, lo;
+    two_sum(q, e.c[i], hi, lo);
+    if (lo != 0) {
+      g[bottom--] = hi;
+      q = lo;
+    } else {
+      q = hi;
+    }
+  }
+  g[bottom] = q;
+  int top = 0;
+  for (int i = bottom + 1; i < e.n; ++i) {
+    double hi, lo;
+    two_sum(g[i], q, hi, lo);
+    if (lo != 0) e.c[top++] = lo;
+    q = hi;
+  }
+  if (q != 0) e.c[top++] = q;
+  e.n = top;
+}
+// The sign of the exact value: Grow-Expansion of the components one by one into g (always
+// nonoverlapping, increasing magnitude, by Theorem 10), then the sign of its largest one.
+template <int N>
+int sign(const Exp<N>& e) {
+  if (e.n == 0) return 0;
+  {  // Usually the last component already dominates: the others sum (computed with k = n - 1
+     // roundings of nonnegative terms, so at most a factor 1 / (1 - gamma_k) below the exact
+     // sum; components are multiples of 2^-928, so no underflow) to less than it.
+    double rest = 0, top = std::fabs(e.c[e.n - 1]);
+    for (int i = 0; i < e.n - 1; ++i) rest += std::fabs(e.c[i]);
+    if (top > rest * (1 + (e.n + 2) * 0x1p-52)) return e.c[e.n - 1] > 0 ? 1 : -1;
+  }
+  double g[N];
+  int n = 0;
+  for (int i = 0; i < e.n; ++i) {
+    double q = e.c[i];
+    int k = 0;
+    for (int j = 0; j < n; ++j) {
+      double hh;
+      two_sum(q, g[j], q, hh);
+      if (hh != 0) g[k++] = hh;
+    }
+    if (q != 0) g[k++] = q;
+    n = k;
+  }
+  return n == 0 ? 0 : (g[n - 1] > 0 ? 1 : -1);
+}
+// sign(a + b + c) for doubles a, b, c.
+inline int sign3(double a, double b, double c) {
+  Exp<2> x;
+  Exp<1> z;
+  Exp<3> s;
+  set2(x, a, b);
+  set1(z, c);
+  add(x, z, s);
+  return sign(s);
+}
+
+// Scales x[0..n) by one power of two so that the largest magnitude is in [1, 2) when it is
+// outside [2^-100, 2^100) (exact: results below 2^-180 are refused, the others are normal);
+// false when a nonzero value is below 2^-180 afterwards (stage 3 then).
+inline bool normalize(double* x, int n) {
+  double m = 0;
+  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
+  if (m == 0) return true;
+  if (m >= 0x1p100 || m < 0x1p-100) {
+    const int e = std::ilogb(m);
+    for (int i = 0; i < n; ++i) x[i] = std::ldexp(x[i], -e);
+  }
+  for (int i = 0; i < n; ++i)
+    if (x[i] != 0 && std::fabs(x[i]) < 0x1p-180) return false;
+  return true;
+}
+inline int pack(const Vec3<double>& v, const Vec3<double>& w, double* x) {
+  for (int i = 0; i < 3; ++i) x[i] = v[i], x[3 + i] = w[i];
+  return 6;
+}
+inline int pack(const Vec3<double>& v, double r, double* x) {
+  for (int i = 0; i < 3; ++i) x[i] = v[i];
+  x[3] = r;
+  return 4;
+}
+inline int pack(const Sphere<double>& s, double* x) { return pack(s.center, s.radius, x); }
+inline int pack(const Box<double>& b, double* x) { return pack(b.center, b.extent, x); }
+inline int pack(const Segment<double>& s, double* x) { return pack(s.source, s.target, x); }
+inline int pack(const Ray<double>& r, double* x) { return pack(r.source, r.direction, x); }
+inline Vec3<double> v3(const double* x) { return Vec3<double>(x[0], x[1], x[2]); }
+inline void unpack(Sphere<double>& s, const double* x) { s = {v3(x), x[3]}; }
+inline void unpack(Box<double>& b, const double* x) { b = {v3(x), v3(x + 3)}; }
+inline void unpack(Segment<double>& s, const double* x) { s = {v3(x), v3(x + 3)}; }
+inline void unpack(Ray<double>& r, const double* x) { r = {v3(x), v3(x + 3)}; }
+// a2, b2: a and b scaled together for stage 2; false if out of its range.
+template <class A, class B>
+bool scaled(const A& a, const B& b, A& a2, B& b2) {
+  double x[12];
+  const int na = pack(a, x);
+  const int nb = pack(b, x + na);
+  if (!normalize(x, na + nb)) return false;
+  unpack(a2, x);
+  unpack(b2, x + na);
+  return true;
+}
+
+// ======================= sphere-sphere =======================
+// Filter: P = S~^2 - sum D~_i^2 with D~_i = fl(cA_i - cB_i), S~ = fl(rhoA + rhoB).
+// K: D_x^2 has 2 (leaves) + 1 (square) + 2 (sums) + 1 (final) = 6 factors, S^2 has 4: K = 6,
+// P+ = |D|^2 + S^2 <= (xx + yy)(1 + 8u) from the computed terms, so bound 7u fl(xx + yy).
+inline int filter(const Sphere<double>& a, const Sphere<double>& b) {
+  const double dx = a.center[0] - b.center[0], dy = a.center[1] - b.center[1], dz = a.center[2] - b.center[2];
+  const double s = a.radius + b.radius;
+  const double xx = dx * dx + dy * dy + dz * dz, yy = s * s, m = xx + yy;
+  if (!in_range(m)) return unknown;
+  return ge0(fsign(yy - xx, (7 * u) * m));
+}
+inline int expansion(const Sphere<double>& a0, const Sphere<double>& b0) {
+  Sphere<double> a, b;
+  if (!scaled(a0, b0, a, b)) return unknown;
+  Exp<2> s, d;
+  Exp<8> sq;
+  Exp<32> acc[2];
+  set2(s, a.radius, b.radius);
+  mul(s, s, sq);
+  int cur = 0;
+  acc[0].n = sq.n;
+  for (int k = 0; k < sq.n; ++k) acc[0].c[k] = sq.c[k];
+  for (int i = 0; i < 3; ++i) {
+    set2(d, a.center[i], -b.center[i]);
+    mul(d, d, sq);
+    add(acc[cur], sq, acc[1 - cur], true);
+    cur ^= 1;
+  }
+  return int(sign(acc[cur]) >= 0);
+}
+
+// ======================= ray / segment on a sphere =======================
+// Filter signs. Leaves s~ = fl(p - c), r~ = fl(target - source) (or the direction, exact),
+// t~ = fl(target - c); ss, rr, tt, rho2 their computed squares (sums left to right).
+struct SphereFilter {
+  double s[3], r[3], t[3], ss, rr, tt = 0, rho2;
+  bool rzero;
+  SphereFilter(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment) {
+    for (int i = 0; i < 3; ++i) {
+      s[i] = src[i] - sp.center[i];
+      r[i] = segment ? rt[i] - src[i] : rt[i];
+    }
+    rzero = segment && rt[0] == src[0] && rt[1] == src[1] && rt[2] == src[2];
+    ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+    rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    rho2 = sp.radius * sp.radius;
+    if (segment) {
+      for (int i = 0; i < 3; ++i) t[i] = rt[i] - sp.center[i];
+      tt = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+    }
+  }
+  // |x|^2 - rho^2: K = 6 as for sphere-sphere; bound 7u fl(xx + rho2).
+  static int sq_minus_rho2(double xx, double rho2) {
+    const double m = xx + rho2;
+    if (!in_range(m)) return unknown;
+    return fsign(xx - rho2, (7 * u) * m);
+  }
+  int ss_rho2() const { return sq_minus_rho2(ss, rho2); }
+  int tt_rho2() const { return sq_minus_rho2(tt, rho2); }
+  // a.b: K = 2 + 1 + 2 = 5, P+ = sum |a_i b_i| <= (|a|^2 + |b|^2) / 2 (AM-GM), so with the
+  // computed squares, gamma_5 (1 + 10u) / 2 < 3u: bound 3u fl(aa + bb).
+  static int dot(const double* a, const double* b, double aa, double bb) {
+    const double m = aa + bb;
+    if (!in_range(m)) return unknown;
+    return fsign(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], (3 * u) * m);
+  }
+  int sr() const { return dot(s, r, ss, rr); }
+  int tr() const { return dot(t, r, tt, rr); }
+  // sigma = rr rho^2 - |s x r|^2. K: (s_y r_z)^2 has 4 (leaves) + 2 (products) + 2 (the
+  // differences in c) + 1 (square) + 2 (sums) + 1 (final) = 12; rr rho^2 has 8. P+ =
+  // |r|^2 rho^2 + sum (|s_y r_z| + |s_z r_y|)^2 <= |r|^2 (rho^2 + 2 |s|^2); bound
+  // 13u fl(rr fl(rho2 + 2 ss)), with ss, rr in [2^-480, 2^480] and rho2 <= 2^480.
+  int sigma() const {
+    if (!(ss >= 0x1p-480 && ss <= 0x1p480 && rr >= 0x1p-480 && rr <= 0x1p480 && rho2 <= 0x1p480)) return unknown;
+    const double cx = s[1] * r[2] - s[2] * r[1], cy = s[2] * r[0] - s[0] * r[2], cz = s[0] * r[1] - s[1] * r[0];
+    const double cc = cx * cx + cy * cy + cz * cz;
+    return fsign(rr * rho2 - cc, (13 * u) * (rr * (rho2 + 2 * ss)));
+  }
+};
+
+// Exact signs of the same polynomials (inputs already scaled into stage 2's range).
+struct SphereExact {
+  Exp<2> s[3], r[3], t[3];
+  double rho;
+  bool rzero;
+  SphereExact(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment) {
+    for (int i = 0; i < 3; ++i) {
+      set2(s[i], src[i], -sp.center[i]);
+      if (segment) {
+        set2(r[i], rt[i], -src[i]);
+        set2(t[i], rt[i], -sp.center[i]);
+      } else {
+        set1(r[i], rt[i]);
+        t[i].n = 0;
+      }
+    }
+    rzero = segment && rt[0] == src[0] && rt[1] == src[1] && rt[2] == src[2];
+    rho = sp.radius;
+  }
+  // a.b, or a.a - rho^2 when square.
+  static int dot_sign(const Exp<2>* a, const Exp<2>* b, bool minus_rho2, double rho) {
+    Exp<8> p;
+    Exp<26> acc[2];
+    int cur = 0;
+    acc[0].n = 0;
+    if (minus_rho2) {  // acc = -rho^2 = -(x + y)
+      double x, y;
+      two_prod(rho, rho, x, y);
+      if (y != 0) acc[0].c[acc[0].n++] = -y;
+      if (x != 0) acc[0].c[acc[0].n++] = -x;
+    }
+    for (int i = 0; i < 3; ++i) {
+      mul(a[i], b[i], p);
+      add(acc[cur], p, acc[1 - cur]);
+      cur ^= 1;
+    }
+    return sign(acc[cur]);
+  }
+  int ss_rho2() const { return dot_sign(s, s, true, rho); }
+  int tt_rho2() const { return dot_sign(t, t, true, rho); }
+  int sr() const { return dot_sign(s, r, false, 0); }
+  int tr() const { return dot_sign(t, r, false, 0); }
+  int sigma() const {
+    // |s x r|^2
+    Exp<1536> cc[2];
+    int cur = 0;
+    cc[0].n = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      Exp<8> p, q;
+      Exp<16> ck;
+      Exp<512> sq;
+      mul(s[i], r[j], p);
+      mul(s[j], r[i], q);
+      add(p, q, ck, true);
+      compress(ck);
+      mul(ck, ck, sq);
+      add(cc[cur], sq, cc[1 - cur]);
+      cur ^= 1;
+    }
+    // |r|^2 rho^2
+    Exp<8> p;
+    Exp<24> rr[2];
+    int rc = 0;
+    rr[0].n = 0;
+    for (int i = 0; i < 3; ++i) {
+      mul(r[i], r[i], p);
+      add(rr[rc], p, rr[1 - rc]);
+      rc ^= 1;
+    }
+    Exp<2> rho2;
+    double x, y;
+    two_prod(rho, rho, x, y);
+    set2(rho2, x, y);
+    Exp<96> rrr;
+    compress(rr[rc]);
+    mul(rr[rc], rho2, rrr);
+    Exp<1632> sig;
+    add(rrr, cc[cur], sig, true);
+    return sign(sig);
+  }
+};
+
+// Stage 2 runs on the scaled inputs: each predicate is first tried by the filter (valid there
+// too), and computed exactly only when the filter cannot decide it.
+struct SphereStaged {
+  SphereFilter f;
+  SphereExact x;
+  bool rzero;
+  SphereStaged(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment)
+      : f(src, rt, sp, segment), x(src, rt, sp, segment), rzero(x.rzero) {}
+  int ss_rho2() const { const int s = f.ss_rho2(); return s != unknown ? s : x.ss_rho2(); }
+  int tt_rho2() const { const int s = f.tt_rho2(); return s != unknown ? s : x.tt_rho2(); }
+  int sr() const { const int s = f.sr(); return s != unknown ? s : x.sr(); }
+  int tr() const { const int s = f.tr(); return s != unknown ? s : x.tr(); }
+  int sigma() const { const int s = f.sigma(); return s != unknown ? s : x.sigma(); }
+};
+
+// Algorithm 3.1's decision (book::hit), over filtered or exact signs.
+template <class P>
+int hit_sphere_logic(const P& p, bool bounded) {
+  if (p.rzero) return le0(p.ss_rho2());
+  const int sg = p.sigma();
+  if (sg == unknown) return unknown;
+  if (sg < 0) return 0;
+  int ahead = le0(p.sr());  // lambda_2 >= 0
+  if (ahead != 1) {
+    const int in = le0(p.ss_rho2());
+    ahead = in == 1 ? 1 : (ahead == 0 && in == 0 ? 0 : unknown);
+  }
+  if (!bounded || ahead == 0) return ahead;
+  int before = ge0(p.tr());  // lambda_1 <= 1
+  if (before != 1) {
+    const int in = le0(p.tt_rho2());
+    before = in == 1 ? 1 : (before == 0 && in == 0 ? 0 : unknown);
+  }
+  if (before == 0) return 0;
+  return ahead == 1 && before == 1 ? 1 : unknown;
+}
+// Algorithm 3.2's decision (book::intersect(Segment, Sphere)).
+template <class P>
+int segment_sphere_logic(const P& p) {
+  const int sr = p.sr();
+  if (sr == unknown) return unknown;
+  if (sr >= 0) return le0(p.ss_rho2());  // delta <= 0: s is closest
+  const int tr = p.tr();
+  if (tr == unknown) return unknown;
+  if (tr <= 0) return le0(p.tt_rho2());  // delta >= |r|^2: t is closest
+  return ge0(p.sigma());
+}
+
+inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
+  return hit_sphere_logic(SphereFilter(seg.source, seg.target, sp, true), true);
+}
+inline int filter(const Ray<double>& ray, const Sphere<double>& sp) {
+  return hit_sphere_logic(SphereFilter(ray.source, ray.direction, sp, false), false);
+}
+struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
+inline int filter(const Segment<double>& seg, const Sphere<double>& sp, alg32) {
+  return segment_sphere_logic(SphereFilter(seg.source, seg.target, sp, true));
+}
+inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0) {
+  Segment<double> seg;
+  Sphere<double> sp;
+  if (!scaled(seg0, sp0, seg, sp)) return unknown;
+  return hit_sphere_logic(SphereStaged(seg.source, seg.target, sp, true), true);
+}
+inline int expansion(const Ray<double>& ray0, const Sphere<double>& sp0) {
+  Ray<double> ray;
+  Sphere<double> sp;
+  if (!scaled(ray0, sp0, ray, sp)) return unknown;
+  return hit_sphere_logic(SphereStaged(ray.source, ray.direction, sp, false), false);
+}
+inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0, alg32) {
+  Segment<double> seg;
+  Sphere<double> sp;
+  if (!scaled(seg0, sp0, seg, sp)) return unknown;
+  return segment_sphere_logic(SphereStaged(seg.source, seg.target, sp, true));
+}
+
+// ======================= box-box =======================
+// Filter per axis: P = e~ - |d~|, e~ = fl(ea + eb), d~ = fl(a - b): K = 2, P+ = e + |d|, bound
+// 3u fl(e~ + |d~|). Additions have no underflow error; m = 0 means e = d = 0 exactly.
+inline int filter(const Box<double>& a, const Box<double>& b) {
+  int res = 1;
+  for (int i = 0; i < 3; ++i) {
+    const double d = std::fabs(a.center[i] - b.center[i]), e = a.extent[i] + b.extent[i], m = e + d;
+    if (m == 0) continue;
+    if (!in_range(m)) {
+      res = unknown;
+      continue;
+    }
+    const int sg = fsign(e - d, (3 * u) * m);
+    if (sg == unknown)
+      res = unknown;
+    else if (sg < 0)
+      return 0;
+  }
+  return res;
+}
+inline int expansion(const Box<double>& a0, const Box<double>& b0) {
+  Box<double> a, b;
+  if (!scaled(a0, b0, a, b)) return unknown;
+  for (int i = 0; i < 3; ++i)
+    for (double sg : {1.0, -1.0}) {  // ea + eb -+ (a - b) >= 0
+      Exp<2> e, d;
+      Exp<4> p;
+      set2(e, a.extent[i], b.extent[i]);
+      set2(d, sg * a.center[i], -sg * b.center[i]);
+      add(e, d, p, true);
+      if (sign(p) < 0) return 0;
+    }
+  return 1;
+}
+
+// ======================= ray / segment on a box =======================
+// Outcode filter for q~ = fl(p - c): L~ = fl(q~ + h) (lower plane), U~ = fl(q~ - h) (upper).
+// |L~ - L| <= u |q~ + h| + u |q~| (fl(x) = x / (1 + delta)) and |q~ + h| <= |L~| / (1 - u), so
+// the sign of L~ is certain when |L~| > 2u |q~| = fl(2^-52 |q~|): (1 - 2u) 2u > u. That
+// product underflows only for |q~| < 2^-970: below 2^-1021 the difference q~ is exact, so
+// L~ (rounded once, sign kept) has the exact sign, 0 included; between, the underflow loses
+// at most a quarter of 2u |q~| and 1.5u > u still. |L~| <= 2^1000 excludes overflow (an
+// infinite q~ makes L~ infinite or NaN).
+inline int outcode_sign(double l, double e) {
+  if (!(std::fabs(l) <= 0x1p1000)) return unknown;
+  if (l < -e) return -1;
+  if (l > e) return 1;
+  return e == 0 ? 0 : unknown;  // e = 0: q~ is exact (and then l = 0 exactly)
+}
+// Pair filter: lambda_p <= lambda_q <=> n'_p d'_q - n'_q d'_p <= 0, n' = n sign(d), d' = |d|,
+// n = -L~ or -U~ of the source on the plane's axis. K: q~ (1) + the +-h (1) + product (1) +
+// leaf d (1) + final (1) = 5; P+ = (|s_i| + h_i)|d_j| + (|s_j| + h_j)|d_i| <= the same with
+// computed a_i = fl(|q~_i| + h_i) and |d~| times (1 + 10u): bound 6u fl(a_i d'_q + a_j d'_p).
+struct BoxFilter {
+  double sL[3], sU[3], sE[3], sA[3], tL[3], tU[3], tE[3], r[3];
+  bool bounded;
+  BoxFilter(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& box, bool segment)
+      : bounded(segment) {
+    for (int i = 0; i < 3; ++i) {
+      const double q = src[i] - box.center[i], h = box.extent[i];
+      sL[i] = q + h;
+      sU[i] = q - h;
+      sE[i] = 0x1p-52 * std::fabs(q);
+      sA[i] = std::fabs(q) + h;
+      if (segment) {
+        const double p = rt[i] - box.center[i];
+        tL[i] = p + h;
+        tU[i] = p - h;
+        tE[i] = 0x1p-52 * std::fabs(p);
+        r[i] = rt[i] - src[i];
+      } else {
+        r[i] = rt[i];
+      }
+    }
+  }
+  int src_lo(int i) const { return outcode_sign(sL[i], sE[i]); }  // sign(s_i + h_i)
+  int src_hi(int i) const { return outcode_sign(sU[i], sE[i]); }  // sign(s_i - h_i)
+  int tgt_lo(int i) const { return outcode_sign(tL[i], tE[i]); }
+  int tgt_hi(int i) const { return outcode_sign(tU[i], tE[i]); }
+  int dir_sign(int i) const { return r[i] > 0 ? 1 : (r[i] < 0 ? -1 : 0); }  // exact for a ray
+  // sign(lambda_p - lambda_q), planes 2i (lower) / 2i + 1 (upper).
+  int compare(int p, int q) const {
+    const int i = p / 2, j = q / 2;
+    const double np = -(p % 2 == 0 ? sL[i] : sU[i]), nq = -(q % 2 == 0 ? sL[j] : sU[j]);
+    const double dp = std::fabs(r[i]), dq = std::fabs(r[j]);
+    const double npp = r[i] > 0 ? np : -np, nqq = r[j] > 0 ? nq : -nq;
+    const double m = sA[i] * dq + sA[j] * dp;
+    if (!in_range(m)) return unknown;
+    return fsign(npp * dq - nqq * dp, (6 * u) * m);
+  }
+};
+struct BoxExact {
+  const Vec3<double> &src, &rt;
+  const Box<double>& box;
+  bool bounded;
+  BoxExact(const Vec3<double>& s, const Vec3<double>& t, const Box<double>& b, bool segment)
+      : src(s), rt(t), box(b), bounded(segment) {}
+  int src_lo(int i) const { return sign3(src[i], -box.center[i], box.extent[i]); }
+  int src_hi(int i) const { return sign3(src[i], -box.center[i], -box.extent[i]); }
+  int tgt_lo(int i) const { return sign3(rt[i], -box.center[i], box.extent[i]); }
+  int tgt_hi(int i) const { return sign3(rt[i], -box.center[i], -box.extent[i]); }
+  int dir_sign(int i) const {
+    const double a = rt[i], b = bounded ? src[i] : 0.0;
+    return a > b ? 1 : (a < b ? -1 : 0);
+  }
+  // n' and d' of plane p as expansions.
+  void plane(int p, Exp<3>& n, Exp<2>& d) const {
+    const int i = p / 2;
+    Exp<2> x;
+    Exp<1> h;
+    set2(x, -src[i], box.center[i]);
+    set1(h, p % 2 == 0 ? -box.extent[i] : box.extent[i]);
+    add(x, h, n);
+    if (bounded)
+      set2(d, rt[i], -src[i]);
+    else
+      set1(d, rt[i]);
+    if (dir_sign(i) < 0) negate(n), negate(d);
+  }
+  int compare(int p, int q) const {
+    Exp<3> np, nq;
+    Exp<2> dp, dq;
+    plane(p, np, dp);
+    plane(q, nq, dq);
+    Exp<12> a, b;
+    Exp<24> c;
+    mul(np, dq, a);
+    mul(nq, dp, b);
+    add(a, b, c, true);
+    return sign(c);
+  }
+};
+struct BoxStaged {
+  BoxFilter f;
+  BoxExact x;
+  bool bounded;
+  BoxStaged(const Vec3<double>& s, const Vec3<double>& t, const Box<double>& b, bool segment)
+      : f(s, t, b, segment), x(s, t, b, segment), bounded(segment) {}
+  int src_lo(int i) const { const int s = f.src_lo(i); return s != unknown ? s : x.src_lo(i); }
+  int src_hi(int i) const { const int s = f.src_hi(i); return s != unknown ? s : x.src_hi(i); }
+  int tgt_lo(int i) const { const int s = f.tgt_lo(i); return s != unknown ? s : x.tgt_lo(i); }
+  int tgt_hi(int i) const { const int s = f.tgt_hi(i); return s != unknown ? s : x.tgt_hi(i); }
+  int dir_sign(int i) const { return x.dir_sign(i); }
+  int compare(int p, int q) const { const int s = f.compare(p, q); return s != unknown ? s : x.compare(p, q); }
+};
+
+// Algorithm 3.3's decision (book::hit on a box), over filtered or exact signs.
+template <class P>
+int hit_box_logic(const P& p) {
+  unsigned bs = 0, bt = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int sl = p.src_lo(i), sh = p.src_hi(i);
+    if (sl == unknown || sh == unknown) return unknown;
+    if (sl < 0) bs |= 1u << (2 * i);
+    if (sh > 0) bs |= 2u << (2 * i);
+    if (p.bounded) {
+      const int tl = p.tgt_lo(i), th = p.tgt_hi(i);
+      if (tl == unknown || th == unknown) return unknown;
+      if (tl < 0) bt |= 1u << (2 * i);
+      if (th > 0) bt |= 2u << (2 * i);
+    } else {
+      const int d = p.dir_sign(i);
+      if (d < 0 || (d == 0 && sl < 0)) bt |= 1u << (2 * i);
+      if (d > 0 || (d == 0 && sh > 0)) bt |= 2u << (2 * i);
+    }
+  }
+  if (bs & bt) return 0;
+  int res = 1;
+  for (int a = 0; a < 6; ++a) {
+    if (!(bs & (1u << a))) continue;
+    for (int b = 0; b < 6; ++b) {
+      if (!(bt & (1u << b))) continue;
+      const int c = p.compare(a, b);
+      if (c == unknown)
+        res = unknown;
+      else if (c > 0)
+        return 0;
+    }
+  }
+  return res;
+}
+inline int filter(const Segment<double>& seg, const Box<double>& box) {
+  return hit_box_logic(BoxFilter(seg.source, seg.target, box, true));
+}
+inline int filter(const Ray<double>& ray, const Box<double>& box) {
+  return hit_box_logic(BoxFilter(ray.source, ray.direction, box, false));
+}
+inline int expansion(const Segment<double>& seg0, const Box<double>& box0) {
+  Segment<double> seg;
+  Box<double> box;
+  if (!scaled(seg0, box0, seg, box)) return unknown;
+  return hit_box_logic(BoxStaged(seg.source, seg.target, box, true));
+}
+inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
+  Ray<double> ray;
+  Box<double> box;
+  if (!scaled(ray0, box0, ray, box)) return unknown;
+  return hit_box_logic(BoxStaged(ray.source, ray.direction, box, false));
+}
+
+// ======================= sphere-box =======================
+// Filter: with c~ = fl(centre - box centre), x~_i = fl(|c~_i| - h_i), v~_i = max(0, x~_i)
+// (= |v_i| whichever branch: max(0, .) is 1-Lipschitz, so |v~_i - v_i| <= |x~_i - x_i| <=
+// gamma_2 w_i, w_i = |c_i| + h_i, and v~_i, v_i <= w_i (1 + gamma_2)), P = fl(sum v~_i^2 - rho2).
+// |P~ - P| <= sum |v~_i^2 - v_i^2| + gamma_4 (sum v~_i^2 + rho^2)
+//          <= (2 gamma_2 + gamma_4 + O(u^2)) (sum w_i^2 + rho^2) <= 8u (1 + 10u) (...):
+// bound 9u fl(sum w~_i^2 + rho2), w~_i = fl(|c~_i| + h_i).
+inline int filter(const Sphere<double>& sp, const Box<double>& box) {
+  double vv = 0, ww = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::fabs(sp.center[i] - box.center[i]), h = box.extent[i];
+    const double x = c - h, v = x > 0 ? x : 0.0, w = c + h;
+    vv += v * v;
+    ww += w * w;
+  }
+  const double rho2 = sp.radius * sp.radius, m = ww + rho2;
+  if (!in_range(m)) return unknown;
+  return le0(fsign(vv - rho2, (9 * u) * m));
+}
+inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
+  Sphere<double> sp;
+  Box<double> box;
+  if (!scaled(sp0, box0, sp, box)) return unknown;
+  Exp<56> acc[2];
+  int cur = 0;
+  double x, y;
+  two_prod(sp.radius, sp.radius, x, y);
+  set2(acc[0], -x, -y);
+  for (int i = 0; i < 3; ++i) {
+    const double c = sp.center[i], b = box.center[i], h = box.extent[i];
+    double hs;
+    if (sign3(c, -b, h) < 0)
+      hs = -h;  // c_i < -h_i: v_i = -h_i - c_i
+    else if (sign3(c, -b, -h) > 0)
+      hs = h;  // c_i > h_i: v_i = h_i - c_i
+    else
+      continue;  // v_i = 0
+    Exp<2> cb;
+    Exp<1> hh;
+    Exp<3> v;
+    Exp<18> sq;
+    set2(cb, b, -c);
+    set1(hh, hs);
+    add(cb, hh, v);
+    mul(v, v, sq);
+    add(acc[cur], sq, acc[1 - cur]);
+    cur ^= 1;
+  }
+  return int(sign(acc[cur]) <= 0);
+}
+
+// ======================= stage 3: the book at CGAL::Gmpq =======================
+using Q = CGAL::Gmpq;
+inline Vec3<Q> q3(const Vec3<double>& v) { return Vec3<Q>(Q(v[0]), Q(v[1]), Q(v[2])); }
+inline Sphere<Q> toq(const Sphere<double>& s) { return {q3(s.center), Q(s.radius)}; }
+inline Box<Q> toq(const Box<double>& b) { return {q3(b.center), q3(b.extent)}; }
+inline Segment<Q> toq(const Segment<double>& s) { return {q3(s.source), q3(s.target)}; }
+inline Ray<Q> toq(const Ray<double>& r) { return {q3(r.source), q3(r.direction)}; }
+inline bool rational(const Sphere<double>& a, const Sphere<double>& b) { return book::intersect(toq(a), toq(b)); }
+inline bool rational(const Segment<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Ray<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Segment<double>& s, const Sphere<double>& b, alg32) {
+  return book::intersect(toq(s), toq(b));
+}
+inline bool rational(const Box<double>& a, const Box<double>& b) { return book::intersect(toq(a), toq(b)); }
+inline bool rational(const Segment<double>& s, const Box<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Ray<double>& s, const Box<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Sphere<double>& a, const Box<double>& b) { return book::intersect(toq(a), toq(b)); }
+
+// One stage alone on validated inputs: 0 or 1, or `unknown` when that stage cannot decide
+// (the filter) or does not apply (expansion outside its range). For tests and benchmarks.
+template <class A, class B, class... Tag>
+int at_stage(Stage st, const A& a, const B& b, Tag... tag) {
+  switch (st) {
+    case Stage::filter:
+      return filter(a, b, tag...);
+    case Stage::expansion:
+      return expansion(a, b, tag...);
+    default:
+      return int(rational(a, b, tag...));
+  }
+}
+// All three in order.
+template <class A, class B, class... Tag>
+bool run(Stage* used, const A& a, const B& b, Tag... tag) {
+  int r = filter(a, b, tag...);
+  if (r != unknown) {
+    if (used) *used = Stage::filter;
+    return r != 0;
+  }
+  r = expansion(a, b, tag...);
+  if (r != unknown) {
+    if (used) *used = Stage::expansion;
+    return r != 0;
+  }
+  if (used) *used = Stage::rational;
+  return rational(a, b, tag...);
+}
+
+}  // namespace staged
+
+// ---- the oracle: validation as the book does it, then the stages ----
+inline bool classify(const Sphere<double>& a, const Sphere<double>& b, Stage* used = nullptr) {
+  check(a, "sphere A");
+  check(b, "sphere B");
+  return staged::run(used, a, b);
+}
+inline bool classify(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  return staged::run(used, seg, sp);
+}
+inline bool classify(const Ray<double>& ray, const Sphere<double>& sp, Stage* used = nullptr) {
+  check(ray, "ray");
+  check(sp, "sphere");
+  return staged::run(used, ray, sp);
+}
+inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  return staged::run(used, seg, sp, staged::alg32{});
+}
+inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
+  check(a, "box A");
+  check(b, "box B");
+  return staged::run(used, a, b);
+}
+inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
+  check(seg, "segment");
+  check(box, "box");
+  return staged::run(used, seg, box);
+}
+inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used = nullptr) {
+  check(ray, "ray");
+  check(box, "box");
+  return staged::run(used, ray, box);
+}
+inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
+  check(sp, "sphere");
+  check(box, "box");
+  return staged::run(used, sp, box);
+}
+
+}  // namespace cdref::oracle

@@ -1,0 +1,250 @@
+// tests/test_oracle_classify.cpp - the fast exact classification oracle (oracle::classify):
+// on every family and scale of every campaign query it must equal the book at CGAL::Gmpq;
+// the expansion stage alone must equal the rational stage wherever it applies, and the filter
+// alone must be right wherever it decides; exact boundaries; invalid input. The one
+// translation unit of the tests that instantiates the oracle's Gmpq stage.
+#include <catch2/catch.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/eval.hpp>
+#include <cdref/oracle/classify.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+using namespace cdref;
+using namespace cdref::fuzz;
+using oracle::Stage;
+namespace staged = cdref::oracle::staged;
+
+namespace {
+
+Vec3<double> v3(const Inputs& in, int k) { return Vec3<double>(in[k], in[k + 1], in[k + 2]); }
+
+// Runs f(a, b, tag...) on the query's primitives built from the case's columns.
+template <class F>
+auto dispatch(Query q, const Inputs& in, F&& f) {
+  switch (q) {
+    case Query::sphere_sphere:
+      return f(Sphere<double>{v3(in, 0), in[3]}, Sphere<double>{v3(in, 4), in[7]}, false);
+    case Query::segment_sphere_cast:
+      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
+    case Query::ray_sphere_cast:
+      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
+    case Query::segment_sphere:
+      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, true);
+    case Query::box_box:
+      return f(Box<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
+    case Query::segment_box_cast:
+      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
+    case Query::ray_box_cast:
+      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
+    default:
+      return f(Sphere<double>{v3(in, 0), in[3]}, Box<double>{v3(in, 4), v3(in, 7)}, false);
+  }
+}
+
+template <class A, class B>
+bool classify_any(const A& a, const B& b, bool alg32, Stage* st) {
+  if constexpr (std::is_same_v<A, Segment<double>> && std::is_same_v<B, Sphere<double>>) {
+    if (alg32) return oracle::classify_segment_sphere(a, b, st);
+  }
+  return oracle::classify(a, b, st);
+}
+template <class A, class B>
+int stage_any(Stage s, const A& a, const B& b, bool alg32) {
+  if constexpr (std::is_same_v<A, Segment<double>> && std::is_same_v<B, Sphere<double>>) {
+    if (alg32) return staged::at_stage(s, a, b, staged::alg32{});
+  }
+  return staged::at_stage(s, a, b);
+}
+
+struct Shares {
+  std::uint64_t n[3] = {0, 0, 0};
+};
+
+
+}  // namespace
+
+TEST_CASE("oracle::classify equals the book at Gmpq on every family of every query, stage by stage",
+          "[oracle-classify]") {
+  std::map<std::string, Shares> shares;  // "query family" -> counts per stage
+  std::uint64_t total = 0, expansion_checked = 0, filter_checked = 0;
+  for (Query q : all_queries())
+    for (const Family& f : families(q))
+      for (int k : f.scales)
+        for (std::uint64_t i = 0; i < 200; ++i) {
+          const Inputs in = make_case(11, q, f, k, i);
+          const Answer truth = eval<CGAL::Gmpq, double>(q, in, false);
+          INFO(info(q).name << " " << f.name << "/" << k << " case " << i);
+          Stage st = Stage::rational;
+          const bool got = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+            return classify_any(a, b, alg32, &st);
+          });
+          REQUIRE(got == truth.cls);
+          REQUIRE(got == truth.pred);
+          ++shares[std::string(info(q).name) + " " + f.name].n[int(st)];
+          ++total;
+          const int fil = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+            return stage_any(Stage::filter, a, b, alg32);
+          });
+          const int exp = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+            return stage_any(Stage::expansion, a, b, alg32);
+          });
+          const int rat = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+            return stage_any(Stage::rational, a, b, alg32);
+          });
+          REQUIRE(rat == int(truth.cls));
+          if (fil != staged::unknown) {
+            REQUIRE(fil == rat);
+            ++filter_checked;
+          }
+          if (exp != staged::unknown) {
+            REQUIRE(exp == rat);
+            ++expansion_checked;
+          }
+          if (q == Query::segment_sphere_cast || q == Query::segment_sphere) {
+            // Algorithm 3.1's hit and Algorithm 3.2's intersect are the same decision.
+            const Segment<double> s{v3(in, 0), v3(in, 3)};
+            const Sphere<double> sp{v3(in, 6), in[9]};
+            REQUIRE(staged::rational(s, sp) == staged::rational(s, sp, staged::alg32{}));
+            REQUIRE(staged::expansion(s, sp) == staged::expansion(s, sp, staged::alg32{}));
+          }
+        }
+  REQUIRE(total > 50000);
+  REQUIRE(expansion_checked > total * 9 / 10);  // only far magnitude spans leave its range
+  if (std::getenv("CDREF_TEST_REPORT")) {
+    std::printf("oracle::classify stage shares (filter / expansion / rational), %llu cases:\n",
+                (unsigned long long)total);
+    for (const auto& [name, s] : shares) {
+      const double n = double(s.n[0] + s.n[1] + s.n[2]);
+      std::printf("  %-36s %6.2f%% %6.2f%% %6.2f%%\n", name.c_str(), 100 * s.n[0] / n, 100 * s.n[1] / n,
+                  100 * s.n[2] / n);
+    }
+  }
+  // Random placements are decided by the filter.
+  for (Query q : all_queries()) {
+    const Shares& s = shares[std::string(info(q).name) + " uniform"];
+    INFO(info(q).name);
+    REQUIRE(s.n[0] * 100 >= (s.n[0] + s.n[1] + s.n[2]) * 99);
+  }
+}
+
+namespace {
+// Checks one hand-made case: the oracle and each applicable stage equal the book at Gmpq,
+// and returns the oracle's answer and stage.
+template <class A, class B>
+bool hand(const A& a, const B& b, bool alg32, Stage* st = nullptr) {
+  const int rat = stage_any(Stage::rational, a, b, alg32);
+  const int exp = stage_any(Stage::expansion, a, b, alg32);
+  const int fil = stage_any(Stage::filter, a, b, alg32);
+  if (exp != staged::unknown) REQUIRE(exp == rat);
+  if (fil != staged::unknown) REQUIRE(fil == rat);
+  Stage used;
+  const bool got = classify_any(a, b, alg32, &used);
+  REQUIRE(int(got) == rat);
+  if (st) *st = used;
+  return got;
+}
+Vec3<double> V(double x, double y, double z) { return Vec3<double>(x, y, z); }
+}  // namespace
+
+TEST_CASE("oracle::classify on exact boundaries", "[oracle-classify]") {
+  Stage st;
+  // Spheres touching exactly, externally and internally; concentric; radius 0.
+  CHECK(hand(Sphere<double>{V(0, 0, 0), 1}, Sphere<double>{V(3, 0, 0), 2}, false, &st));
+  CHECK(st != Stage::filter);
+  CHECK(hand(Sphere<double>{V(0.5, 0.25, 0.125), 1}, Sphere<double>{V(0.5, 0.25, 3.125), 2}, false));
+  CHECK_FALSE(hand(Sphere<double>{V(0.5, 0.25, 0.125), 1}, Sphere<double>{V(0.5, 0.25, 3.125 + 0x1p-50), 2}, false));
+  hand(Sphere<double>{V(0.1, 0.2, 0.3), 1}, Sphere<double>{V(0.1, 0.2, 3.3), 2}, false);  // inexact decimals
+  CHECK(hand(Sphere<double>{V(1, 1, 1), 1}, Sphere<double>{V(1, 1, 1), 0}, false));
+  CHECK(hand(Sphere<double>{V(1, 2, 2), 0}, Sphere<double>{V(0, 0, 0), 3}, false));  // point on the sphere
+  // Segments and rays tangent exactly (closed sets: a touch is a hit).
+  const Sphere<double> unit{V(0, 0, 0), 1};
+  for (bool alg32 : {false, true}) {
+    CHECK(hand(Segment<double>{V(-2, 1, 0), V(2, 1, 0)}, unit, alg32));
+    CHECK_FALSE(hand(Segment<double>{V(-2, 1 + 0x1p-52, 0), V(2, 1 + 0x1p-52, 0)}, unit, alg32));
+    CHECK(hand(Segment<double>{V(-2, 1 - 0x1p-53, 0), V(2, 1 - 0x1p-53, 0)}, unit, alg32));
+    CHECK(hand(Segment<double>{V(-2, 0, 0), V(-1, 0, 0)}, unit, alg32));        // ends on the sphere
+    CHECK_FALSE(hand(Segment<double>{V(-2, 0, 0), V(-1 - 0x1p-52, 0, 0)}, unit, alg32));
+    CHECK(hand(Segment<double>{V(1, 0, 0), V(1, 0, 0)}, unit, alg32));          // zero length, on it
+    CHECK_FALSE(hand(Segment<double>{V(1, 0, 1e-300), V(1, 0, 1e-300)}, unit, alg32));
+    CHECK(hand(Segment<double>{V(0.5, 0.25, 0), V(0.5, 0.25, 0)}, unit, alg32));  // zero length, inside
+    CHECK(hand(Segment<double>{V(1, 0, 0), V(3, 0, 0)}, unit, alg32));  // leaves from the surface
+    CHECK(hand(Segment<double>{V(3, 4, 5), V(0, 0, 1)}, unit, alg32));  // ends on it
+    hand(Segment<double>{V(0.6, 0.8, 0), V(3, 4, 0)}, unit, alg32);     // inexact decimals
+    CHECK(hand(Segment<double>{V(-3, 0, 0), V(3, 0, 0)}, Sphere<double>{V(0, 0, 0), 0}, alg32));  // rho 0
+    CHECK(hand(Segment<double>{V(-2e150, 1e150, 0), V(2e150, 1e150, 0)}, Sphere<double>{V(0, 0, 0), 1e150},
+               alg32));
+    CHECK(hand(Segment<double>{V(-2e-150, 1e-150, 0), V(2e-150, 1e-150, 0)},
+               Sphere<double>{V(0, 0, 0), 1e-150}, alg32));
+  }
+  CHECK(hand(Ray<double>{V(-2, 1, 0), V(1, 0, 0)}, unit, false));
+  CHECK_FALSE(hand(Ray<double>{V(-2, 1, 0), V(-1, 0, 0)}, unit, false));
+  CHECK(hand(Ray<double>{V(1, 0, 0), V(1, 0, 0)}, unit, false));   // on the sphere, outward: touching
+  CHECK(hand(Ray<double>{V(0, 1, 0), V(1, 0, 0)}, unit, false));   // on the sphere, tangent
+  CHECK_FALSE(hand(Ray<double>{V(0, 1 + 0x1p-52, 0), V(1, 0, 0)}, unit, false));
+  // Boxes touching at faces, edges and corners exactly; zero extents.
+  const Box<double> box{V(0, 0, 0), V(1, 2, 3)};
+  CHECK(hand(box, Box<double>{V(2, 0, 0), V(1, 1, 1)}, false, &st));
+  CHECK(hand(box, Box<double>{V(2, 3, 0), V(1, 1, 1)}, false));
+  CHECK(hand(box, Box<double>{V(2, 3, 4), V(1, 1, 1)}, false));
+  CHECK_FALSE(hand(box, Box<double>{V(2, 3, 4 + 0x1p-50), V(1, 1, 1)}, false));
+  CHECK(hand(Box<double>{V(0.1, 0.1, 0.1), V(0, 0, 0)}, Box<double>{V(0.1, 0.1, 0.1), V(0, 0, 0)}, false));
+  hand(Box<double>{V(0.1, 0.2, 0.3), V(0, 0, 0)}, Box<double>{V(0.3, 0.2, 0.3), V(0.2, 0, 0)}, false);
+  // Segment and ray casts on a box: corners, edges, face planes.
+  const Box<double> cube{V(0.1, 0.2, 0.3), V(0.5, 0.5, 0.5)};  // inexact corners in double
+  CHECK(hand(Segment<double>{V(-1, -1, 0.3), V(1, 1, 0.3)}, Box<double>{V(0, 0, 0.3), V(0.5, 0.5, 0.5)}, false));
+  CHECK(hand(Segment<double>{V(-1, 0, 0), V(0, 1, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));  // edge
+  CHECK_FALSE(hand(Segment<double>{V(-1, 0, 0), V(0, 1 + 0x1p-50, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)},
+                   false));
+  CHECK(hand(Segment<double>{V(-1, -1, -1), V(-0.5, -0.5, -0.5)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)},
+             false));  // ends at a corner
+  CHECK(hand(Segment<double>{V(0.5, -2, 0.1), V(0.5, 2, 0.1)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)},
+             false));  // in a face plane
+  CHECK(hand(Segment<double>{V(0.3, 0.4, 0.5), V(0.3, 0.4, 0.5)}, cube, false));  // zero length inside
+  CHECK_FALSE(hand(Segment<double>{V(2, 0, 0), V(2, 0, 0)}, cube, false));      // zero length outside
+  hand(Segment<double>{V(0.6, 0.7, 0.8), V(0.6, 0.7, 0.8)}, cube, false);  // zero length at a decimal corner
+  CHECK(hand(Ray<double>{V(0.5, -2, 0.1), V(0, 1, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));
+  CHECK_FALSE(hand(Ray<double>{V(0.5 + 0x1p-50, -2, 0.1), V(0, 1, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)},
+                   false));
+  CHECK(hand(Ray<double>{V(-1, 0, 0), V(1, 1, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));
+  CHECK_FALSE(hand(Ray<double>{V(-1, 0, 0), V(-1, 1, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));
+  CHECK(hand(Ray<double>{V(-1, -0.5, -0.5), V(1, 0, 0)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));  // along an edge
+  hand(Ray<double>{V(0.6, 0.7, 0.8), V(1, 1, 1)}, cube, false);  // from a decimal corner, outward
+  CHECK(hand(Ray<double>{V(0.5, 0.5, 0.5), V(1, 1, 1)}, Box<double>{V(0, 0, 0), V(0.5, 0.5, 0.5)}, false));
+  // Sphere and box: touching a face, an edge, a corner; centre on a face; radius 0.
+  CHECK(hand(Sphere<double>{V(2, 0, 0), 1}, box, false));
+  CHECK(hand(Sphere<double>{V(4, 6, 0), 5}, box, false));  // edge (1, 2): 3-4-5
+  CHECK_FALSE(hand(Sphere<double>{V(4, 6, 0), 5 - 0x1p-50}, box, false));
+  CHECK(hand(Sphere<double>{V(4, 6, 3 + 12), 13}, box, false));  // corner (1, 2, 3): 3-4-12-13
+  CHECK(hand(Sphere<double>{V(3, 4, 3), 2 * std::sqrt(2.0)}, box, false) ==
+        staged::rational(Sphere<double>{V(3, 4, 3), 2 * std::sqrt(2.0)}, box));
+  CHECK(hand(Sphere<double>{V(1, 0, 0), 0}, box, false));
+  CHECK_FALSE(hand(Sphere<double>{V(1 + 0x1p-52, 0, 0), 0}, box, false));
+}
+
+TEST_CASE("oracle::classify rejects bad input with the book's message", "[oracle-classify]") {
+  const double nan = std::nan("");
+  auto msg = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const invalid_input& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  const Sphere<double> good{V(0, 0, 0), 1}, neg{V(0, 0, 0), -1};
+  const Segment<double> badseg{V(0, 0, 0), V(0, 0, nan)};
+  const Ray<double> zero{V(0, 0, 0), V(0, 0, 0)};
+  const Box<double> badbox{V(0, 0, 0), V(1, -1, 1)};
+  CHECK(msg([&] { oracle::classify(good, neg); }) == msg([&] { book::intersect(good, neg); }));
+  CHECK(msg([&] { oracle::classify(badseg, neg); }) == msg([&] { book::hit(badseg, neg); }));
+  CHECK(msg([&] { oracle::classify_segment_sphere(badseg, good); }) == msg([&] { book::intersect(badseg, good); }));
+  CHECK(msg([&] { oracle::classify(zero, good); }) == msg([&] { book::hit(zero, good); }));
+  CHECK(msg([&] { oracle::classify(zero, badbox); }) == msg([&] { book::hit(zero, badbox); }));
+  CHECK(msg([&] { oracle::classify(badbox, badbox); }) == msg([&] { book::intersect(badbox, badbox); }));
+  CHECK(msg([&] { oracle::classify(neg, badbox); }) == msg([&] { book::intersect(neg, badbox); }));
+  CHECK(msg([&] { oracle::classify(badseg, badbox); }) == msg([&] { book::hit(badseg, badbox); }));
+  CHECK(msg([&] { oracle::classify(zero, good); }) == "ray direction is the zero vector");
+}
