@@ -1,0 +1,192 @@
+// cdref/robust/sphere_box.hpp - sphere-box (Section 3.2.2) that keeps its accuracy where the
+// book loses it, for F = float, double, long double. Same signatures and results as
+// cdref::book (intersect, proximity) and decide (decision.hpp). u is the unit roundoff,
+// eta the smallest subnormal.
+//
+// Formulation (the book's, in the box's local coordinates: c = sphere centre - box centre,
+// x = clamp(c, -h, h), v = x - c):
+//  1. c_i = ch_i + cl_i exactly (two_sum), after scaling the inputs by 2^-e1 (e1 > 0 only
+//     within 2^4 of overflow).
+//  2. The clamp exactly: c_i < -h_i iff ch_i < -h_i or (ch_i = -h_i and cl_i < 0), since
+//     ch_i = fl(c_i) and rounding is monotone; likewise c_i > h_i.
+//  3. A clamped coordinate v_i = +-h_i - ch_i - cl_i is kept exactly as a + b + e:
+//     (p, e) = two_sum(+-h_i, -ch_i), (a, b) = two_sum(p, -cl_i). An unclamped one is 0.
+//     These terms and rho are scaled by one power of two bringing the largest into [1,2).
+//  4. Q = |v|^2 - rho^2 by dot2 over the 19 exact products of the expansions:
+//     |Q^ - Q| <= u|Q| + gamma_19^2 S, S <= (|v| + 2 sum |b_i| + |e_i|)^2 + rho^2, about
+//     |v|^2 + rho^2. intersect = Q^ <= 0.
+//  5. Centre outside (some axis clamped): v is also rounded to pairs (two_sum(a, fl(b + e)),
+//     off by at most 3u^2 |v_i|), |v| from them (1.5u + O(u^2)); distance/depth = +-Q/(|v| +
+//     rho): relative error <= 4.5u + 362 u^2 S / |Q| + O(u^2), at most 5 ulps away from
+//     touching within ~u. Witness on the sphere c + rho n, n = v/|v| (3.5u + O(u^2) per
+//     component; fma): at most 4.5 ulps of max(|on_a_i|, rho |n_i|). Witness on the box (and
+//     `closest`): a clamped coordinate is fl(box centre_i +- h_i), half an ulp; an unclamped
+//     one is the sphere's centre coordinate itself, exact.
+//  6. Centre in the closed box (no axis clamped, v = 0 exactly): delta_i = h_i - |c_i| =
+//     h_i - |ch_i| -+ cl_i, three floats; the smallest (first on ties, as the book's strict
+//     `<`) is found by exact comparisons (the exact sign of a sum of six floats by an
+//     expansion, exact_sign_of_sum). depth = delta + rho = h - |c| + rho as a sum of four
+//     floats by dot2 (an error-free Sum2): error <= u depth + gamma_4^2 (h + |c| + rho).
+//     Witnesses: on the box the face point, box centre_i + sign h_i (the book's
+//     c + delta sign e_i equals it exactly): half an ulp; on the sphere c - rho sign e_i:
+//     half an ulp. sign(0) = +1 as in the book.
+//
+// decide(): outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
+// low terms scaled below the normal range; inside, intersect = true exactly. Never certain
+// when the first scaling lost bits (inputs 2^(emax+emin) apart). Exact touching (Q = 0 with
+// v != 0) is always uncertain.
+#pragma once
+
+#include <algorithm>
+#include <cdref/primitives.hpp>
+#include <cdref/results.hpp>
+#include <cmath>
+
+#include "decision.hpp"
+#include "eft.hpp"
+#include "ray_sphere.hpp"
+#include "sphere_sphere.hpp"
+
+namespace cdref::robust {
+
+namespace detail {
+
+template <class F>
+struct SphBoxLocal {
+  F ch[3], cl[3], h[3], rho1;  // scaled by 2^-e1
+  int clamp[3] = {0, 0, 0};   // -1 below, +1 above, 0 inside
+  bool outside = false;
+  F a[3], b[3], e[3], rho;     // v = a + b + e, scaled by 2^-(e1 + e2)
+  int e1 = 0, scale = 0;
+  bool exact = true;
+};
+
+template <class F>
+SphBoxLocal<F> sph_box_local(const Sphere<F>& sp, const Box<F>& box) {
+  SphBoxLocal<F> L;
+  F m = sp.radius;
+  for (int i = 0; i < 3; ++i)
+    m = std::max({m, std::fabs(sp.center[i]), std::fabs(box.center[i]), box.extent[i]});
+  L.e1 = overflow_guard(m);
+  L.rho1 = scale_down(sp.radius, L.e1, L.exact);
+  F top = L.rho1;
+  for (int i = 0; i < 3; ++i) {
+    const Pair<F> c = two_sum(scale_down(sp.center[i], L.e1, L.exact), F(-scale_down(box.center[i], L.e1, L.exact)));
+    L.ch[i] = c.hi;
+    L.cl[i] = c.lo;
+    const F h = L.h[i] = scale_down(box.extent[i], L.e1, L.exact);
+    L.a[i] = L.b[i] = L.e[i] = F(0);
+    if (c.hi < -h || (c.hi == -h && c.lo < F(0)))
+      L.clamp[i] = -1;
+    else if (c.hi > h || (c.hi == h && c.lo > F(0)))
+      L.clamp[i] = 1;
+    if (L.clamp[i] != 0) {
+      L.outside = true;
+      const Pair<F> p = two_sum(L.clamp[i] > 0 ? h : F(-h), F(-c.hi));
+      const Pair<F> q = two_sum(p.hi, F(-c.lo));
+      L.a[i] = q.hi;
+      L.b[i] = q.lo;
+      L.e[i] = p.lo;
+      top = std::max({top, std::fabs(q.hi), std::fabs(q.lo), std::fabs(p.lo)});
+    }
+  }
+  const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  for (int i = 0; i < 3; ++i) {
+    L.a[i] = std::ldexp(L.a[i], -e2);
+    L.b[i] = std::ldexp(L.b[i], -e2);
+    L.e[i] = std::ldexp(L.e[i], -e2);
+  }
+  L.rho = std::ldexp(L.rho1, -e2);
+  L.scale = L.e1 + e2;
+  return L;
+}
+
+template <class F>
+Bounded<F> sph_box_q(const SphBoxLocal<F>& L) {
+  const F *a = L.a, *b = L.b, *e = L.e;
+  return dot2_cert({a[0], b[0], e[0], F(2 * a[0]), F(2 * a[0]), F(2 * b[0]), a[1], b[1], e[1], F(2 * a[1]),
+                    F(2 * a[1]), F(2 * b[1]), a[2], b[2], e[2], F(2 * a[2]), F(2 * a[2]), F(2 * b[2]), L.rho},
+                   {a[0], b[0], e[0], b[0], e[0], e[0], a[1], b[1], e[1], b[1], e[1], e[1], a[2], b[2], e[2], b[2],
+                    e[2], e[2], F(-L.rho)},
+                   128);
+}
+
+}  // namespace detail
+
+template <class F>
+bool intersect(const Sphere<F>& sp, const Box<F>& box) {
+  check(sp, "sphere");
+  check(box, "box");
+  const auto L = detail::sph_box_local(sp, box);
+  return !L.outside || detail::sph_box_q(L).value <= F(0);
+}
+
+template <class F>
+Decision decide(const Sphere<F>& sp, const Box<F>& box) {
+  check(sp, "sphere");
+  check(box, "box");
+  const auto L = detail::sph_box_local(sp, box);
+  if (!L.outside) return {true, L.exact};
+  const detail::Bounded<F> q = detail::sph_box_q(L);
+  return {q.value <= F(0), L.exact && q.sign() != 0};
+}
+
+template <class F>
+Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want_proximity) {
+  check(sp, "sphere");
+  check(box, "box");
+  Proximity<F> res;
+  const auto L = detail::sph_box_local(sp, box);
+  const F q = L.outside ? detail::sph_box_q(L).value : F(0);
+  res.intersect = !L.outside || q <= F(0);
+  Vec3<F> x = sp.center;  // the closest point of the box, world coordinates
+  for (int i = 0; i < 3; ++i)
+    if (L.clamp[i] != 0) x[i] = box.center[i] + (L.clamp[i] > 0 ? box.extent[i] : F(-box.extent[i]));
+  if (w & want_closest) res.closest = x;
+  if (!(w & (want_distance | want_depth | want_witnesses))) return res;
+
+  if (L.outside) {
+    F vh[3], vl[3];
+    for (int i = 0; i < 3; ++i) {
+      const Pair<F> p = two_sum(L.a[i], F(L.b[i] + L.e[i]));
+      vh[i] = p.hi;
+      vl[i] = p.lo;
+    }
+    if (w & (want_distance | want_depth)) {
+      const F den = detail::norm_of_pairs(vh, vl) + L.rho;
+      if ((w & want_distance) && q > F(0)) res.distance = std::ldexp(q / den, L.scale);
+      if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
+    }
+    if (w & want_witnesses) {
+      F n[3];
+      detail::unit_of_pairs(vh, vl, n);
+      for (int i = 0; i < 3; ++i) res.on_a[i] = std::fma(sp.radius, n[i], sp.center[i]);
+      res.on_b = x;
+    }
+    return res;
+  }
+  // centre in the closed box: the axis of the smallest delta_i = h_i - |c_i|, exactly
+  F ah[3], al[3];
+  for (int i = 0; i < 3; ++i) {
+    const bool neg = L.ch[i] < F(0);
+    ah[i] = neg ? F(-L.ch[i]) : L.ch[i];
+    al[i] = neg ? F(-L.cl[i]) : L.cl[i];
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i) {
+    const F d[6] = {L.h[i], F(-ah[i]), F(-al[i]), F(-L.h[axis]), ah[axis], al[axis]};
+    if (detail::exact_sign_of_sum(d) < 0) axis = i;
+  }
+  const bool pos = !(L.ch[axis] < F(0));
+  if (w & want_depth)
+    res.depth = std::ldexp(dot2({L.h[axis], F(-ah[axis]), F(-al[axis]), L.rho1}, {F(1), F(1), F(1), F(1)}), L.e1);
+  if (w & want_witnesses) {
+    res.on_a = sp.center;
+    res.on_a[axis] = pos ? F(sp.center[axis] - sp.radius) : F(sp.center[axis] + sp.radius);
+    res.on_b = sp.center;
+    res.on_b[axis] = pos ? F(box.center[axis] + box.extent[axis]) : F(box.center[axis] - box.extent[axis]);
+  }
+  return res;
+}
+
+}  // namespace cdref::robust

@@ -1,0 +1,189 @@
+// cdref/robust/sphere_sphere.hpp - sphere-sphere (Section 3.1.1) that keeps its accuracy
+// where the book's |v|^2 <= (rhoA + rhoB)^2 loses it, for F = float, double, long double.
+// Same signatures and results as cdref::book: intersect, proximity; and decide
+// (decision.hpp). u is the unit roundoff, eta the smallest subnormal.
+//
+// Formulation, with v = cA - cB and s = rhoA + rhoB (the book's definitions, exactly):
+//  1. Exact differences. Each v_i = fl(cA_i - cB_i) + lo_i and s = fl(rhoA + rhoB) + s_lo
+//     exactly (two_sum). The inputs are first scaled by 2^-e1, e1 > 0 only within 2^4 of
+//     overflow (so that no sum overflows); then the pairs are scaled by one power of two
+//     2^-e2 putting the largest |v_i|, s in [1,2): no square below overflows or underflows
+//     except terms 2^(emin/2) below the largest, which count as absolute errors (eta).
+//  2. Q = |v|^2 - s^2 = sum (v_i + lo_i)^2 - (s + s_lo)^2, expanded into 12 exact products,
+//     by dot2: |Q^ - Q| <= u|Q| + gamma_12^2 S, S = sum of the products' moduli
+//     <= (1+u)^2 (|v|^2 + s^2). intersect = Q^ <= 0.
+//  3. |v| = sqrt(dot2 of the 9 products of |v|^2): relative error <= 1.5u + O(u^2).
+//  4. distance = Q / (|v| + s) when Q > 0, depth = -Q / (|v| + s) when Q < 0 (the book's
+//     |v| - s and s - |v|, whose cancellation is gone): relative error
+//       <= 4.5u + 145 u^2 (|v|^2 + s^2) / |Q|   (Q: u + gamma^2 S/|Q|; |v|: 1.5u; add; divide),
+//     i.e. at most 5 ulps until |Q| falls below ~145u (|v|^2 + s^2) (touching within ~u).
+//  5. Witnesses pA = cA - rhoA n, pB = cB + rhoB n, n = v/|v| from the pair v scaled by its
+//     own largest component (so that a tiny v next to large radii keeps its direction):
+//     n_i = fl(v_i) / |v| has relative error <= 3.5u, and pA_i = fma(-rhoA, n_i, cA_i) is off
+//     by at most u|pA_i| + 3.5u rhoA |n_i|: at most 4.5 ulps of max(|pA_i|, rhoA |n_i|).
+//     Concentric (v = 0 exactly): n = e_x as in the book; pA_x = fl(cA_x - rhoA), 0.5 ulp.
+//  6. Distances are scaled back by 2^(e1+e2), exactly unless the result leaves the range.
+//
+// decide(): the sign of Q from dot2_cert (ray_sphere.hpp) with the scaling's absolute term:
+// certain iff |Q^| > 2u|Q^| + 288 u^2 S^ + K eta (K covers the subnormal low parts); if the
+// first scaling lost bits (inputs 2^(emax+emin) apart) it is never certain. When all of v
+// and s are zero Q = 0 exactly and intersect is certain. Exact touching (Q = 0 with S > 0)
+// is always uncertain.
+#pragma once
+
+#include <algorithm>
+#include <cdref/primitives.hpp>
+#include <cdref/results.hpp>
+#include <cmath>
+
+#include "decision.hpp"
+#include "eft.hpp"
+#include "ray_sphere.hpp"
+
+namespace cdref::robust {
+
+namespace detail {
+
+template <class F>
+struct SphereSphereLocal {
+  F v[3], vl[3];  // v = cA - cB = v + vl, scaled by 2^-(e1 + e2)
+  F s, sl;        // rhoA + rhoB = s + sl, scaled likewise
+  int scale = 0;  // e1 + e2
+  bool exact = true;
+  bool zero_v = false, all_zero = false;
+};
+
+template <class F>
+SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b) {
+  SphereSphereLocal<F> L;
+  F m = std::max(a.radius, b.radius);
+  for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(a.center[i]), std::fabs(b.center[i])});
+  const int e1 = overflow_guard(m);
+  F vh[3], vlo[3];
+  F top = 0, vtop = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Pair<F> p = two_sum(scale_down(a.center[i], e1, L.exact), F(-scale_down(b.center[i], e1, L.exact)));
+    vh[i] = p.hi;
+    vlo[i] = p.lo;
+    vtop = std::max(vtop, std::fabs(p.hi));
+  }
+  const Pair<F> sp = two_sum(scale_down(a.radius, e1, L.exact), scale_down(b.radius, e1, L.exact));
+  top = std::max(vtop, sp.hi);
+  L.zero_v = vtop == F(0);
+  L.all_zero = top == F(0);
+  const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  for (int i = 0; i < 3; ++i) {
+    L.v[i] = std::ldexp(vh[i], -e2);
+    L.vl[i] = std::ldexp(vlo[i], -e2);
+  }
+  L.s = std::ldexp(sp.hi, -e2);
+  L.sl = std::ldexp(sp.lo, -e2);
+  L.scale = e1 + e2;
+  return L;
+}
+
+// Q = |v|^2 - s^2 with its bound.
+template <class F>
+Bounded<F> sphere_sphere_q(const SphereSphereLocal<F>& L) {
+  const F* v = L.v;
+  const F* l = L.vl;
+  return dot2_cert({v[0], v[1], v[2], F(2 * l[0]), F(2 * l[1]), F(2 * l[2]), l[0], l[1], l[2], L.s, F(2 * L.sl), L.sl},
+                   {v[0], v[1], v[2], v[0], v[1], v[2], l[0], l[1], l[2], F(-L.s), F(-L.s), F(-L.sl)},
+                   64);  // 8 low parts scaled below the normal range: each |dQ| <= 8 eta
+}
+
+// |v| for v = hi + lo (exact pairs): dot2 of the 9 products, relative error <= 1.5u + O(u^2).
+template <class F>
+F norm_of_pairs(const F (&v)[3], const F (&l)[3]) {
+  return std::sqrt(dot2({v[0], v[1], v[2], F(2 * l[0]), F(2 * l[1]), F(2 * l[2]), l[0], l[1], l[2]},
+                        {v[0], v[1], v[2], v[0], v[1], v[2], l[0], l[1], l[2]}));
+}
+
+// v/|v| for a nonzero v = hi + lo (exact pairs, hi = fl(hi + lo)), scaled first by the
+// exponent of its largest hi so that neither a tiny nor a huge v under- or overflows:
+// n_i = hi_i / |v|^, relative error <= u (hi) + 1.5u (|v|) + u (division) + O(u^2) = 3.5u.
+template <class F>
+void unit_of_pairs(const F (&h)[3], const F (&l)[3], F (&n)[3]) {
+  const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
+  const int e = std::ilogb(top);
+  F hs[3], ls[3];
+  for (int i = 0; i < 3; ++i) {
+    hs[i] = std::ldexp(h[i], -e);
+    ls[i] = std::ldexp(l[i], -e);
+  }
+  const F len = norm_of_pairs(hs, ls);
+  for (int i = 0; i < 3; ++i) n[i] = hs[i] / len;
+}
+
+// The exact sign of x_0 + ... + x_{N-1} (Shewchuk's Grow-Expansion with zero elimination:
+// two_sum is exact, the expansion is nonoverlapping and its largest component, the last,
+// carries the sign).
+template <class F, std::size_t N>
+int exact_sign_of_sum(const F (&x)[N]) {
+  F e[N + 1];
+  int m = 0;
+  for (std::size_t k = 0; k < N; ++k) {
+    F q = x[k];
+    F h[N + 1];
+    int j = 0;
+    for (int i = 0; i < m; ++i) {
+      const Pair<F> p = two_sum(q, e[i]);
+      q = p.hi;
+      if (p.lo != F(0)) h[j++] = p.lo;
+    }
+    if (q != F(0)) h[j++] = q;
+    for (int i = 0; i < j; ++i) e[i] = h[i];
+    m = j;
+  }
+  return m == 0 ? 0 : (e[m - 1] > F(0) ? 1 : -1);
+}
+
+}  // namespace detail
+
+template <class F>
+bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
+  check(a, "sphere A");
+  check(b, "sphere B");
+  const auto L = detail::sphere_sphere_local(a, b);
+  return L.all_zero || detail::sphere_sphere_q(L).value <= F(0);
+}
+
+template <class F>
+Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
+  check(a, "sphere A");
+  check(b, "sphere B");
+  const auto L = detail::sphere_sphere_local(a, b);
+  if (L.all_zero) return {true, L.exact};
+  const detail::Bounded<F> q = detail::sphere_sphere_q(L);
+  return {q.value <= F(0), L.exact && q.sign() != 0};
+}
+
+template <class F>
+Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want_proximity) {
+  check(a, "sphere A");
+  check(b, "sphere B");
+  Proximity<F> res;
+  const auto L = detail::sphere_sphere_local(a, b);
+  const F q = L.all_zero ? F(0) : detail::sphere_sphere_q(L).value;
+  res.intersect = q <= F(0);
+  if (!(w & (want_distance | want_depth | want_witnesses))) return res;
+  if (w & (want_distance | want_depth)) {
+    const F len = detail::norm_of_pairs(L.v, L.vl);
+    const F den = len + L.s;
+    if (den > F(0)) {
+      if ((w & want_distance) && q > F(0)) res.distance = std::ldexp(q / den, L.scale);
+      if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
+    }
+  }
+  if (w & want_witnesses) {
+    F n[3] = {F(1), F(0), F(0)};
+    if (!L.zero_v) detail::unit_of_pairs(L.v, L.vl, n);
+    for (int i = 0; i < 3; ++i) {
+      res.on_a[i] = std::fma(-a.radius, n[i], a.center[i]);
+      res.on_b[i] = std::fma(b.radius, n[i], b.center[i]);
+    }
+  }
+  return res;
+}
+
+}  // namespace cdref::robust

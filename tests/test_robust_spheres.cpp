@@ -1,0 +1,553 @@
+// tests/test_robust_spheres.cpp - the robust sphere queries (float/cdref/robust/
+// sphere_sphere.hpp, segment_sphere.hpp, sphere_box.hpp) and the certificates of every
+// robust sphere query (decide), against the book at CGAL::Gmpq on the same F inputs.
+//
+// Errors are measured exactly: the exact value (a + b sqrt d over Gmpq) minus the F value,
+// rounded correctly to long double, in ulps of F at max(|truth|, m), m the size of the terms
+// that make the value (stated per output in each header). Each bound asserted here is the
+// one derived in the header, evaluated for the case.
+#include <catch2/catch.hpp>
+#include <cdref/exact.hpp>
+#include <cdref/exact/long_double.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cdref/robust/ray_sphere.hpp>
+#include <cdref/robust/segment_sphere.hpp>
+#include <cdref/robust/sphere_box.hpp>
+#include <cdref/robust/sphere_sphere.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+namespace {
+
+using namespace cdref;
+using Q = CGAL::Gmpq;
+using QS = Quad<Q>;
+
+Q exact_of(float x) { return Q(static_cast<double>(x)); }
+Q exact_of(double x) { return Q(x); }
+Q exact_of(long double x) { return exact::gmpq_of(x); }
+
+template <class F>
+Vec3<Q> ev(const Vec3<F>& v) {
+  return Vec3<Q>(exact_of(v[0]), exact_of(v[1]), exact_of(v[2]));
+}
+template <class F>
+Sphere<Q> ex(const Sphere<F>& s) {
+  return {ev(s.center), exact_of(s.radius)};
+}
+template <class F>
+Box<Q> ex(const Box<F>& b) {
+  return {ev(b.center), ev(b.extent)};
+}
+template <class F>
+Segment<Q> ex(const Segment<F>& s) {
+  return {ev(s.source), ev(s.target)};
+}
+template <class F>
+Ray<Q> ex(const Ray<F>& s) {
+  return {ev(s.source), ev(s.direction)};
+}
+
+long double ld(const QS& x) { return exact::round_long_double(x); }
+
+template <class F>
+constexpr long double unit() {
+  return std::numeric_limits<F>::epsilon() / 2;
+}
+
+// |got - truth| in ulps of F at max(|truth|, m).
+template <class F>
+long double ulps(F got, const QS& truth, long double m = 0) {
+  const long double err = std::fabs(ld(QS(exact_of(got)) - truth));
+  if (err == 0) return 0;
+  const long double mag = std::max(std::fabs(ld(truth)), m);
+  if (mag == 0) return std::numeric_limits<long double>::infinity();
+  return err / std::ldexp(1.0L, std::ilogb(mag) - std::numeric_limits<F>::digits + 1);
+}
+
+template <class F>
+Vec3<F> v3(long double x, long double y, long double z) {
+  return Vec3<F>(F(x), F(y), F(z));
+}
+
+template <class F>
+F p2(int k) {
+  return std::ldexp(F(1), k);
+}
+
+// An exponent where the book's squares overflow in F (and its mirror underflows).
+template <class F>
+int huge_exp() {
+  return std::numeric_limits<F>::max_exponent / 2 + 20;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// sphere-sphere
+namespace {
+
+template <class F>
+struct SS {
+  std::string name;
+  Sphere<F> a, b;
+};
+
+template <class F>
+std::vector<SS<F>> sphere_sphere_hard() {
+  std::vector<SS<F>> v;
+  const int kmax = std::numeric_limits<F>::digits - 14;  // near touching: 2^-k with k up to p - 14
+  for (long double R : {1e4L, 1e6L, 1e8L, 1e10L, 1e12L})
+    for (int k : {10, kmax / 2, kmax})
+      for (int sg : {-1, 1}) {
+        const F r = F(R);
+        const F d = F(2 * R * (1 + sg * std::ldexp(1.0L, -k)));
+        v.push_back({"R " + std::to_string(double(R)) + " 2^-" + std::to_string(k) + (sg > 0 ? " apart" : " overlap"),
+                     {v3<F>(0.25L * R, 1, -3), r},
+                     {v3<F>(0.25L * R + d * 0.6L, d * 0.8L + 1, -3), F(r * F(1.5L))}});
+      }
+  v.push_back({"near touching 1e8, v = (2e8, 1, 0)", {v3<F>(0, 0, 0), F(1e8)}, {v3<F>(2e8, 1, 0), F(1e8)}});
+  v.push_back({"concentric", {v3<F>(1, 2, 3), F(1)}, {v3<F>(1, 2, 3), F(2)}});
+  v.push_back({"nearly concentric, tiny v", {v3<F>(1, 2, 3), F(1)}, {Vec3<F>(F(1), std::nextafter(F(2), F(3)), F(3)), F(2)}});
+  v.push_back({"irrational overlap", {v3<F>(0, 0, 0), F(2)}, {v3<F>(1, 1, 0), F(1)}});
+  const int e = huge_exp<F>();
+  for (int sgn : {1, -1}) {
+    const F m = p2<F>(sgn * e);
+    v.push_back({sgn > 0 ? "huge 2^e" : "tiny 2^-e", {Vec3<F>(m, F(0), m), m}, {Vec3<F>(F(3 * m), m, F(0)), F(m / 2)}});
+    v.push_back({sgn > 0 ? "huge, touching within 2^-20" : "tiny, touching within 2^-20",
+                 {Vec3<F>(F(0), F(0), F(0)), m},
+                 {Vec3<F>(F(F(2) * m * F(1 + std::ldexp(1.0L, -20))), F(0), F(0)), m}});
+  }
+  return v;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust sphere-sphere: every output within its derived bound on hard cases", "[robust-spheres]",
+                   float, double, long double) {
+  using F = TestType;
+  const long double u = unit<F>();
+  long double worst_d = 0, worst_w = 0;
+  int book_bad = 0;
+  for (const auto& c : sphere_sphere_hard<F>()) {
+    INFO(c.name);
+    const auto sa = ex(c.a), sb = ex(c.b);
+    const auto ref = book::proximity(sa, sb);
+    const auto got = robust::proximity(c.a, c.b);
+    const auto dec = robust::decide(c.a, c.b);
+    REQUIRE(dec.value == got.intersect);
+    REQUIRE(robust::intersect(c.a, c.b) == got.intersect);
+    // Q = |v|^2 - s^2 and the S of the bound, exactly
+    const Vec3<Q> vq = sa.center - sb.center;
+    const Q s = sa.radius + sb.radius;
+    const Q qq = vq.squaredNorm() - s * s;
+    const Q vv = vq.squaredNorm();
+    // S / |Q| (the amplification of the bound), exactly then rounded
+    const long double ratio = qq == 0 ? 0 : exact::round_long_double(Q((vv + s * s) / (qq < 0 ? Q(-qq) : qq))) * 1.001L;
+    if (dec.certain) REQUIRE(dec.value == ref.intersect);
+    // farther from touching than the certificate's bound (|Q| > 2u|Q| + 288 u^2 S), it must hold
+    if (qq != 0 && 4 * 288 * u * u * ratio < 1) REQUIRE(dec.certain);
+    if (dec.certain) {
+      REQUIRE(got.intersect == ref.intersect);
+      // distance and depth: 4.5u + 145 u^2 S / |Q| relative (sphere_sphere.hpp, item 4)
+      const long double bound = qq == 0 ? 0 : 4.5L + 145 * u * ratio;
+      const long double ed = ulps(got.distance, ref.distance), ep = ulps(got.depth, ref.depth);
+      REQUIRE(ed <= std::max(bound, 0.0L));
+      REQUIRE(ep <= std::max(bound, 0.0L));
+      worst_d = std::max({worst_d, ed, ep});
+    }
+    // witnesses: 4.5 ulps of max(|p_i|, rho |n_i|) (item 5)
+    for (int i = 0; i < 3; ++i) {
+      const long double ni = vv == 0 ? (i == 0 ? 1 : 0) : std::sqrt(exact::round_long_double(Q(vq[i] * vq[i] / vv)));
+      const long double ea = ulps(got.on_a[i], ref.on_a[i], (long double)c.a.radius * ni);
+      const long double eb = ulps(got.on_b[i], ref.on_b[i], (long double)c.b.radius * ni);
+      REQUIRE(ea <= 4.5L);
+      REQUIRE(eb <= 4.5L);
+      worst_w = std::max({worst_w, ea, eb});
+    }
+    // the book at F on the same inputs
+    if constexpr (!std::is_same_v<F, float>) {
+      const auto bk = book::proximity(c.a, c.b);
+      if (bk.intersect != ref.intersect || ulps(bk.distance, ref.distance) > 1e6L || !std::isfinite(bk.distance))
+        ++book_bad;
+    }
+  }
+  // The book at double and long double misclassifies or loses > 1e6 ulps on several of these
+  // (near touching at range, huge and tiny magnitudes): 4 cases each, observed.
+  if constexpr (!std::is_same_v<F, float>) REQUIRE(book_bad >= 3);
+  if (std::getenv("CDREF_TEST_REPORT")) std::cout << "sphere-sphere " << typeid(F).name() << ": worst distance/depth " << double(worst_d) << " ulps, witnesses "
+                        << double(worst_w) << " ulps; book off on " << book_bad << " cases" << "\n";
+}
+
+// ---------------------------------------------------------------------------
+// segment-sphere
+namespace {
+
+template <class F>
+struct SegS {
+  std::string name;
+  Segment<F> seg;
+  Sphere<F> sp;
+};
+
+template <class F>
+std::vector<SegS<F>> segment_sphere_hard() {
+  std::vector<SegS<F>> v;
+  const bool fl = std::is_same_v<F, float>;
+  const int kmax = std::numeric_limits<F>::digits - 14;
+  const Sphere<F> unit{v3<F>(0, 0, 0), F(1)};
+  const Sphere<F> off{v3<F>(3, -5, 7), F(2)};
+  for (long double R : {1e4L, 1e6L, 1e8L, 1e10L, 1e12L}) {
+    if (fl && R > 1e4L) break;  // float: the 226 u^2 |s| term of the bound grows with the range
+    for (int k : {10, kmax / 2, kmax})
+      for (int sg : {-1, 1}) {
+        const long double y = 1 + sg * std::ldexp(1.0L, -k);
+        v.push_back({"interior, R " + std::to_string(double(R)) + " rho(1 " + (sg > 0 ? "+" : "-") + " 2^-" +
+                         std::to_string(k) + ")",
+                     {v3<F>(-R, y, 0.375L), v3<F>(R * 1.25L, y, 0.375L)},
+                     {v3<F>(0, 0, 0.375L), F(1)}});
+      }
+    // endpoint branch far away: the segment ends near the sphere
+    v.push_back({"ends near the sphere, from R " + std::to_string(double(R)),
+                 {v3<F>(R, R * 0.5L, 0), v3<F>(3 + std::ldexp(1.0L, -20), 0, 0)},
+                 {v3<F>(1, 0, 0), F(2)}});
+  }
+  v.push_back({"through the centre", {v3<F>(-1, 0, 0), v3<F>(1, 0, 0)}, unit});
+  v.push_back({"through an off-origin centre", {v3<F>(3, -5, 5), v3<F>(3, -5, 9)}, off});
+  v.push_back({"ending at the centre", {v3<F>(-1, -2, -3), v3<F>(0, 0, 0)}, unit});
+  v.push_back({"zero length at the centre", {v3<F>(3, -5, 7), v3<F>(3, -5, 7)}, off});
+  v.push_back({"zero length outside", {v3<F>(0, 0, 3), v3<F>(0, 0, 3)}, unit});
+  v.push_back({"irrational depth", {v3<F>(-1, 1, 1), v3<F>(1, 1, 1)}, Sphere<F>{v3<F>(0, 0, 0), F(2)}});
+  v.push_back({"touching at 1e8 radii", {v3<F>(-1e8, 1, 0), v3<F>(1e8 + 1, 1, 0)}, unit});
+  const int e = huge_exp<F>();
+  for (int sgn : {1, -1}) {
+    const F m = p2<F>(sgn * e);
+    v.push_back({sgn > 0 ? "huge" : "tiny", {Vec3<F>(F(-3 * m), F(0), F(2 * m)), Vec3<F>(F(3 * m), F(m / 4), F(2 * m))},
+                 {Vec3<F>(F(0), F(0), F(0)), m}});
+  }
+  return v;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust segment-sphere: every output within its derived bound on hard cases", "[robust-spheres]",
+                   float, double, long double) {
+  using F = TestType;
+  const long double u = unit<F>();
+  long double worst_d = 0, worst_a = 0, worst_b = 0;
+  int book_bad = 0;
+  for (const auto& c : segment_sphere_hard<F>()) {
+    INFO(c.name);
+    const auto sq = ex(c.seg);
+    const auto pq = ex(c.sp);
+    const auto ref = book::proximity(sq, pq);
+    const auto got = robust::proximity(c.seg, c.sp);
+    const auto dec = robust::decide_closest(c.seg, c.sp);
+    REQUIRE(dec.value == got.intersect);
+    REQUIRE(robust::intersect(c.seg, c.sp) == got.intersect);
+    // all of these but exact touching are farther from the boundary than the certificate's bound
+    const bool touching = ref.distance.sign() == 0 && ref.depth.sign() == 0;
+    if (!touching) REQUIRE(dec.certain);
+    if (dec.certain) REQUIRE(dec.value == ref.intersect);
+    REQUIRE(book::intersect(sq, pq) == ref.intersect);
+    // the case's magnitudes: |x| (the closest point, local), max |s_i|, rho
+    long double xn = 0, smax = 0;
+    for (int i = 0; i < 3; ++i) {
+      const long double xi = ld(ref.closest[i] - QS(pq.center[i]));
+      xn += xi * xi;
+      smax = std::max({smax, std::fabs((long double)c.seg.source[i] - (long double)c.sp.center[i]),
+                       std::fabs((long double)c.seg.target[i] - (long double)c.sp.center[i])});
+    }
+    xn = std::sqrt(xn);
+    const long double rho = c.sp.radius;
+    // endpoint or interior? (the book's branch, exactly)
+    const Vec3<Q> s = sq.source - pq.center, t = sq.target - pq.center;
+    const Vec3<Q> r = t - s;
+    const Q delta = -s.dot(r);
+    const bool interior = delta > 0 && delta < r.squaredNorm();
+    const long double second = xn > 0 ? 460 * u * smax / xn : 0;  // the u^2 |s| terms, in ulps
+    // distance, depth: endpoints 4.5 + 101 u (|x|^2 + rho^2)/|Q|; interior 13 ulps of max(d, |x|)
+    long double bd, m;
+    if (interior) {
+      bd = 13 + second;
+      m = xn;
+    } else {
+      const long double qq = std::fabs(xn * xn - rho * rho);
+      bd = qq == 0 ? 4.5L : 4.5L + 101 * u * (xn * xn + rho * rho) / qq * 1.01L;
+      m = 0;
+    }
+    const long double ed = ulps(got.distance, ref.distance, m), ep = ulps(got.depth, ref.depth, m);
+    REQUIRE(ed <= bd);
+    REQUIRE(ep <= bd);
+    worst_d = std::max({worst_d, ed, ep});
+    for (int i = 0; i < 3; ++i) {
+      // on the segment (= closest): exact at the endpoints, 5 ulps of max(|x_i + c_i|, |x|) inside
+      const long double ea = ulps(got.on_a[i], ref.on_a[i], xn);
+      const long double ec = ulps(got.closest[i], ref.closest[i], xn);
+      REQUIRE(ea <= (interior ? 5 + second : 0));
+      REQUIRE(ec <= (interior ? 5 + second : 0));
+      // on the sphere: 4.5 ulps (endpoints, through the centre) or 11.5 (interior) of max(|p_i|, rho)
+      const bool through = xn == 0;
+      const long double eb = ulps(got.on_b[i], ref.on_b[i], rho);
+      REQUIRE(eb <= (interior && !through ? 11.5L + second : 4.5L));
+      worst_a = std::max(worst_a, ea);
+      worst_b = std::max(worst_b, eb);
+    }
+    if constexpr (!std::is_same_v<F, float>) {
+      const auto bk = book::proximity(c.seg, c.sp);
+      if (bk.intersect != ref.intersect || book::intersect(c.seg, c.sp) != ref.intersect ||
+          !(ulps(bk.distance, ref.distance, m) <= 1e6L) || !(ulps(bk.depth, ref.depth, m) <= 1e6L))
+        ++book_bad;
+    }
+  }
+  if constexpr (!std::is_same_v<F, float>) REQUIRE(book_bad >= 5);
+  if (std::getenv("CDREF_TEST_REPORT")) std::cout << "segment-sphere " << typeid(F).name() << ": worst distance/depth " << double(worst_d)
+                         << " ulps, witness on segment " << double(worst_a) << ", on sphere " << double(worst_b)
+                         << "; book off on " << book_bad << " cases" << "\n";
+}
+
+// ---------------------------------------------------------------------------
+// sphere-box
+namespace {
+
+template <class F>
+struct SB {
+  std::string name;
+  Sphere<F> sp;
+  Box<F> box;
+};
+
+template <class F>
+std::vector<SB<F>> sphere_box_hard() {
+  std::vector<SB<F>> v;
+  const int kmax = std::numeric_limits<F>::digits - 14;
+  const Box<F> b1{v3<F>(1, 2, 3), v3<F>(1, 2, 3)};
+  for (long double R : {1e4L, 1e6L, 1e8L, 1e10L, 1e12L})
+    for (int k : {10, kmax / 2, kmax})
+      for (int sg : {-1, 1}) {
+        const long double g = 1 + sg * std::ldexp(1.0L, -k);
+        const Box<F> far{v3<F>(R, -R, 0.5L * R), v3<F>(1, 2, 3)};
+        // near a face (x+), an edge (x+, y+) and a corner
+        v.push_back({"face at R " + std::to_string(double(R)) + " 2^-" + std::to_string(k),
+                     {v3<F>(R + 1 + g, -R + 0.5L, 0.5L * R), F(1)}, far});
+        v.push_back({"edge at R " + std::to_string(double(R)) + " 2^-" + std::to_string(k),
+                     {v3<F>(R + 1 + 0.6L * g, -R + 2 + 0.8L * g, 0.5L * R - 1), F(1)}, far});
+        v.push_back({"corner at R " + std::to_string(double(R)) + " 2^-" + std::to_string(k),
+                     {v3<F>(R + 1 + 0.48L * g, -R + 2 + 0.6L * g, 0.5L * R + 3 + 0.64L * g), F(1)}, far});
+      }
+  v.push_back({"centre at the box centre (tie on every axis)", {v3<F>(1, 2, 3), F(0.5L)}, Box<F>{v3<F>(1, 2, 3), v3<F>(2, 2, 2)}});
+  v.push_back({"centre inside, nearest face y-", {v3<F>(1.5L, 0.5L, 3), F(0.25L)}, b1});
+  v.push_back({"centre on a face", {v3<F>(2, 2, 3), F(0.25L)}, b1});
+  v.push_back({"centre on an edge (tie)", {v3<F>(0, 0, 3), F(0.25L)}, b1});
+  v.push_back({"centre on a corner", {v3<F>(2, 4, 6), F(0.25L)}, b1});
+  v.push_back({"centre inside, far box", {v3<F>(1e8 + 0.75L, -1e8 + 1, 3), F(3)}, Box<F>{v3<F>(1e8, -1e8, 3), v3<F>(1, 2, 3)}});
+  v.push_back({"touching a face exactly", {v3<F>(3, 2, 3), F(1)}, b1});
+  const int e = huge_exp<F>();
+  for (int sgn : {1, -1}) {
+    const F m = p2<F>(sgn * e);
+    v.push_back({sgn > 0 ? "huge" : "tiny", {Vec3<F>(F(3 * m), F(3 * m), F(0)), F(m)}, {Vec3<F>(F(0), F(0), F(0)), Vec3<F>(m, m, m)}});
+    v.push_back({sgn > 0 ? "huge, inside" : "tiny, inside", {Vec3<F>(F(m / 2), F(0), F(0)), F(m)},
+                 {Vec3<F>(F(0), F(0), F(0)), Vec3<F>(m, m, m)}});
+  }
+  return v;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust sphere-box: every output within its derived bound on hard cases", "[robust-spheres]",
+                   float, double, long double) {
+  using F = TestType;
+  const long double u = unit<F>();
+  long double worst_d = 0, worst_a = 0, worst_b = 0;
+  int book_bad = 0;
+  for (const auto& c : sphere_box_hard<F>()) {
+    INFO(c.name);
+    const auto sq = ex(c.sp);
+    const auto bq = ex(c.box);
+    const auto ref = book::proximity(sq, bq);
+    const auto got = robust::proximity(c.sp, c.box);
+    const auto dec = robust::decide(c.sp, c.box);
+    REQUIRE(dec.value == got.intersect);
+    REQUIRE(robust::intersect(c.sp, c.box) == got.intersect);
+    if (dec.certain) REQUIRE(dec.value == ref.intersect);
+    const Vec3<Q> cc = sq.center - bq.center;
+    Vec3<Q> vq;
+    for (int i = 0; i < 3; ++i) {
+      const Q& h = bq.extent[i];
+      vq[i] = (cc[i] < -h ? Q(-h) : (cc[i] > h ? h : cc[i])) - cc[i];
+    }
+    const Q vv = vq.squaredNorm();
+    const long double rho = c.sp.radius;
+    Q cc2 = 0;
+    long double cn = 0, hn = 0;
+    for (int i = 0; i < 3; ++i) {
+      cn = std::max(cn, std::fabs(exact::round_long_double(cc[i])));
+      hn = std::max(hn, (long double)c.box.extent[i]);
+      cc2 += cc[i] * cc[i];
+    }
+    const Q qq = vv - sq.radius * sq.radius;
+    const Q aq = qq < 0 ? Q(-qq) : qq;
+    // S / |Q| with S <= (1.01|v| + 3u|c|)^2 + rho^2 (sphere_box.hpp, item 5), from exact ratios
+    const long double ratio =
+        qq == 0 ? 0
+                : std::pow(1.01L * std::sqrt(exact::round_long_double(Q(vv / aq))) +
+                               3 * u * std::sqrt(exact::round_long_double(Q(cc2 / aq))),
+                           2) * 1.001L +
+                      exact::round_long_double(Q(sq.radius * sq.radius / aq)) * 1.001L;
+    // farther from touching than the certificate's bound (2u|Q| + 722 u^2 S), it must hold
+    if (vv != 0 && qq != 0 && 4 * 722 * u * u * ratio < 1) REQUIRE(dec.certain);
+    if (vv == 0) REQUIRE(dec.certain);
+    if (dec.certain) REQUIRE(got.intersect == ref.intersect);
+    const bool inside = vv == 0;
+    if (!inside) {
+      // 4.5u + 362 u^2 S/|Q| relative (item 5)
+      const long double bd = qq == 0 ? 4.5L : 4.5L + 362 * u * ratio;
+      const long double ed = ulps(got.distance, ref.distance), ep = ulps(got.depth, ref.depth);
+      REQUIRE(ed <= bd);
+      REQUIRE(ep <= bd);
+      worst_d = std::max({worst_d, ed, ep});
+    } else {
+      // depth = delta + rho by Sum2: 1 + 16.1 u (h + |c| + rho)/depth ulps (item 6)
+      const long double dep = ld(ref.depth);
+      const long double bd = 1 + 16.1L * u * (hn + cn + rho) / dep;
+      const long double ep = ulps(got.depth, ref.depth);
+      REQUIRE(ep <= bd);
+      REQUIRE(got.distance == 0);
+      worst_d = std::max(worst_d, ep);
+    }
+    for (int i = 0; i < 3; ++i) {
+      const long double ni = inside ? 0 : std::sqrt(exact::round_long_double(Q(vq[i] * vq[i] / vv)));
+      // on the sphere: 4.5 ulps of max(|p_i|, rho |n_i|) outside; half an ulp (of the result) inside
+      const long double ea = ulps(got.on_a[i], ref.on_a[i], rho * ni);
+      REQUIRE(ea <= (inside ? 1.0L : 4.5L));
+      // on the box and closest: half an ulp of the result (<= 1 ulp at the truth's binade)
+      const long double eb = ulps(got.on_b[i], ref.on_b[i]);
+      const long double ec = ulps(got.closest[i], ref.closest[i]);
+      REQUIRE(eb <= 1);
+      REQUIRE(ec <= 1);
+      worst_a = std::max(worst_a, ea);
+      worst_b = std::max(worst_b, eb);
+    }
+    if constexpr (!std::is_same_v<F, float>) {
+      const auto bk = book::proximity(c.sp, c.box);
+      if (bk.intersect != ref.intersect || !(ulps(bk.distance, ref.distance) <= 1e6L) ||
+          !(ulps(bk.depth, ref.depth) <= 1e6L))
+        ++book_bad;
+    }
+  }
+  if constexpr (!std::is_same_v<F, float>) REQUIRE(book_bad >= 5);
+  if (std::getenv("CDREF_TEST_REPORT")) std::cout << "sphere-box " << typeid(F).name() << ": worst distance/depth " << double(worst_d) << " ulps, witness on sphere "
+                     << double(worst_a) << ", on box " << double(worst_b) << "; book off on " << book_bad << " cases" << "\n";
+}
+
+// ---------------------------------------------------------------------------
+// decide(): certain implies the book's exact classification, on generated cases.
+namespace {
+
+template <class F>
+bool fin(const fuzz::Inputs& in, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(F(in[i]))) return false;
+  return true;
+}
+template <class F>
+Vec3<F> at(const fuzz::Inputs& in, int k) {
+  return Vec3<F>(F(in[k]), F(in[k + 1]), F(in[k + 2]));
+}
+
+struct Tally {
+  long n = 0, certain = 0;
+};
+
+// Runs decide over n cases of each listed family (every scale), asserting certain =>
+// value == truth; returns the tally of the uniform family.
+template <class F, class Run>
+Tally sweep(fuzz::Query q, int n_inputs, const std::vector<std::string>& fams, int n, Run run) {
+  Tally uni;
+  for (const auto& name : fams) {
+    const auto& fam = fuzz::family_by_name(q, name);
+    const int per = std::max<int>(1, n / int(fam.scales.size()));
+    for (int sc : fam.scales)
+      for (int i = 0; i < per; ++i) {
+        const fuzz::Inputs in = fuzz::make_case(7, q, fam, sc, std::uint64_t(i));
+        if (!fin<F>(in, n_inputs)) continue;
+        bool ok = true, certain = false;
+        try {
+          const auto [dec, truth, same] = run(in);
+          certain = dec.certain;
+          ok = !dec.certain || dec.value == truth;
+          INFO("family " << name << " scale " << sc << " case " << i);
+          REQUIRE(same);  // decide's value is the query's own classification
+        } catch (const invalid_input&) {
+          continue;  // e.g. a radius that rounds to a negative zero-crossing in F: refused by both
+        }
+        INFO("family " << name << " scale " << sc << " case " << i);
+        REQUIRE(ok);
+        if (name == "uniform") {
+          ++uni.n;
+          uni.certain += certain;
+        }
+      }
+  }
+  return uni;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[robust-spheres]", float, double,
+                   long double) {
+  using F = TestType;
+  using fuzz::Query;
+  // Observed share of certain answers on the uniform families (2000 cases each, g++ 12):
+  // 100% for every query (sphere-sphere, sphere-box, segment-sphere, segment and ray casts)
+  // at float, double and long double. No certain answer was wrong on any family.
+  const int n = 2000;
+  const Tally ss = sweep<F>(Query::sphere_sphere, 8, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
+                            n, [](const fuzz::Inputs& in) {
+                              const Sphere<F> a{at<F>(in, 0), F(in[3])}, b{at<F>(in, 4), F(in[7])};
+                              const auto d = robust::decide(a, b);
+                              return std::tuple{d, book::intersect(ex(a), ex(b)), d.value == robust::intersect(a, b)};
+                            });
+  const Tally sb = sweep<F>(Query::sphere_box, 10, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
+                            n, [](const fuzz::Inputs& in) {
+                              const Sphere<F> s{at<F>(in, 0), F(in[3])};
+                              const Box<F> b{at<F>(in, 4), at<F>(in, 7)};
+                              const auto d = robust::decide(s, b);
+                              return std::tuple{d, book::intersect(ex(s), ex(b)), d.value == robust::intersect(s, b)};
+                            });
+  std::vector<std::string> segf;
+  for (const auto& f : fuzz::families(Query::segment_sphere)) segf.push_back(f.name);
+  const Tally gs = sweep<F>(Query::segment_sphere, 10, segf, n, [](const fuzz::Inputs& in) {
+    const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
+    const Sphere<F> p{at<F>(in, 6), F(in[9])};
+    const auto d = robust::decide_closest(s, p);
+    return std::tuple{d, book::intersect(ex(s), ex(p)), d.value == robust::intersect(s, p)};
+  });
+  std::vector<std::string> castf;
+  for (const auto& f : fuzz::families(Query::segment_sphere_cast)) castf.push_back(f.name);
+  const Tally cs = sweep<F>(Query::segment_sphere_cast, 10, castf, n, [](const fuzz::Inputs& in) {
+    const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
+    const Sphere<F> p{at<F>(in, 6), F(in[9])};
+    const auto d = robust::decide(s, p);
+    return std::tuple{d, book::hit(ex(s), ex(p)), d.value == robust::hit(s, p)};
+  });
+  std::vector<std::string> rayf;
+  for (const auto& f : fuzz::families(Query::ray_sphere_cast)) rayf.push_back(f.name);
+  const Tally rs = sweep<F>(Query::ray_sphere_cast, 10, rayf, n, [](const fuzz::Inputs& in) {
+    const Ray<F> s{at<F>(in, 0), at<F>(in, 3)};
+    const Sphere<F> p{at<F>(in, 6), F(in[9])};
+    const auto d = robust::decide(s, p);
+    return std::tuple{d, book::hit(ex(s), ex(p)), d.value == robust::hit(s, p)};
+  });
+  for (const Tally* t : {&ss, &sb, &gs, &cs, &rs}) {
+    REQUIRE(t->n > 500);
+    REQUIRE(double(t->certain) > 0.99 * double(t->n));
+  }
+  if (std::getenv("CDREF_TEST_REPORT")) std::cout << "certain share on uniform (" << typeid(F).name() << "): sphere-sphere " << ss.certain << "/" << ss.n
+                                    << ", sphere-box " << sb.certain << "/" << sb.n << ", segment-sphere " << gs.certain
+                                    << "/" << gs.n << ", segment cast " << cs.certain << "/" << cs.n << ", ray cast "
+                                    << rs.certain << "/" << rs.n << "\n";
+}
