@@ -62,6 +62,10 @@ void CellStats::merge(const CellStats& o) {
   cls_fn += o.cls_fn;
   pred_fp += o.pred_fp;
   pred_fn += o.pred_fn;
+  certified += o.certified;
+  uncertain += o.uncertain;
+  certain_wrong += o.certain_wrong;
+  certain_wrong_example.merge(o.certain_wrong_example);
   cls_example.merge(o.cls_example);
   pred_example.merge(o.pred_example);
   for (int k = 0; k < max_values; ++k) {
@@ -94,7 +98,8 @@ bool Results::operator==(const Results& o) const {
     const CellStats &x = a->second, &y = b->second;
     if (x.n != y.n || x.refused != y.refused || x.cls_fp != y.cls_fp || x.cls_fn != y.cls_fn ||
         x.pred_fp != y.pred_fp || x.pred_fn != y.pred_fn || !same(x.cls_example, y.cls_example) ||
-        !same(x.pred_example, y.pred_example))
+        !same(x.pred_example, y.pred_example) || x.certified != y.certified || x.uncertain != y.uncertain ||
+        x.certain_wrong != y.certain_wrong || !same(x.certain_wrong_example, y.certain_wrong_example))
       return false;
     for (int k = 0; k < max_values; ++k)
       if (x.out[k].hist.count != y.out[k].hist.count || x.out[k].nonfinite != y.out[k].nonfinite ||
@@ -239,6 +244,15 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
     if (a.cls != t.cls) {
       ++(a.cls ? st.cls_fp : st.cls_fn);
       st.cls_example.offer(0, i, seen, a.cls, t.cls);
+    }
+    if (a.certified) {
+      ++st.certified;
+      if (!a.certain) {
+        ++st.uncertain;
+      } else if (a.cls != t.cls) {
+        ++st.certain_wrong;
+        st.certain_wrong_example.offer(0, i, seen, a.cls, t.cls);
+      }
     }
     if (a.pred != t.pred) {
       ++(a.pred ? st.pred_fp : st.pred_fn);
@@ -401,7 +415,7 @@ std::string serialize(const Spec& spec, const Results& r, std::uint64_t items_do
 
 std::string serialize(const Saved& saved) {
   std::ostringstream o;
-  o << "cdref-results 1\n";
+  o << "cdref-results 2\n";
   o << "fingerprint " << saved.fingerprint << "\n";
   o << "shard " << saved.shard << " " << saved.shards << "\n";
   o << "items " << saved.items_done << " " << saved.items_total << "\n";
@@ -410,8 +424,10 @@ std::string serialize(const Saved& saved) {
     const QueryInfo& qi = info(k.query);
     const std::size_t n_in = qi.inputs.size();
     o << "cell " << qi.name << " " << k.impl << " " << k.family << " " << k.scale << " " << st.n << " " << st.refused
-      << " " << st.cls_fp << " " << st.cls_fn << " " << st.pred_fp << " " << st.pred_fn << "\n";
+      << " " << st.cls_fp << " " << st.cls_fn << " " << st.pred_fp << " " << st.pred_fn << " " << st.certified << " "
+      << st.uncertain << " " << st.certain_wrong << "\n";
     put_ex(o, "cls", st.cls_example, n_in);
+    put_ex(o, "certain", st.certain_wrong_example, n_in);
     put_ex(o, "pred", st.pred_example, n_in);
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];
@@ -434,6 +450,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
   CellStats* cur = nullptr;
   std::size_t n_in = 0;
   bool header = false, ended = false;
+  int version = 0;
   auto fail = [&](const std::string& why) {
     throw std::runtime_error(source + ":" + std::to_string(lineno) + ": " + why);
   };
@@ -468,6 +485,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
     ls >> tag;
     if (!header) {
       if (tag != "cdref-results") fail("not a cdref results file");
+      if (!(ls >> version) || version < 1 || version > 2) fail("unknown cdref results version");
       header = true;
     } else if (tag == "fingerprint") {
       std::getline(ls >> std::ws, s.fingerprint);
@@ -484,6 +502,9 @@ Saved deserialize(const std::string& text, const std::string& source) {
       if (!(ls >> q >> impl >> fam >> scale >> st.n >> st.refused >> st.cls_fp >> st.cls_fn >> st.pred_fp >>
             st.pred_fn))
         fail("malformed cell record");
+      // version 2 adds the certificate counts (version 1 files have none)
+      if (version >= 2 && !(ls >> st.certified >> st.uncertain >> st.certain_wrong))
+        fail("malformed cell record (certificate counts)");
       Query query;
       try {
         query = query_by_name(q);
@@ -502,6 +523,8 @@ Saved deserialize(const std::string& text, const std::string& source) {
           read_ex(ls, cur->cls_example);
         else if (which == "pred")
           read_ex(ls, cur->pred_example);
+        else if (which == "certain")
+          read_ex(ls, cur->certain_wrong_example);
         else if (which.rfind("out", 0) == 0 && number(which.substr(3)) < max_values)
           read_ex(ls, cur->out[number(which.substr(3))].worst);
         else

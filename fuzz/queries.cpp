@@ -3,9 +3,15 @@
 // square roots, rounded correctly. The one translation unit of the campaign engine that
 // instantiates the exact types.
 #include <cdref/exact.hpp>
+#include <cdref/oracle/classify.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/eval.hpp>
+#include <cdref/robust/box_box.hpp>
+#include <cdref/robust/ray_box.hpp>
 #include <cdref/robust/ray_sphere.hpp>
+#include <cdref/robust/segment_sphere.hpp>
+#include <cdref/robust/sphere_box.hpp>
+#include <cdref/robust/sphere_sphere.hpp>
 #include <cstdio>
 #include <stdexcept>
 
@@ -61,19 +67,85 @@ const std::vector<QueryInfo>& table() {
   return t;
 }
 
-// The robust float formulations (float/cdref/robust), where they exist.
+// The robust float formulations (float/cdref/robust): the full query, the predicate, and
+// the certificate of robust::decide.
 template <class F>
 Answer eval_robust(Query q, const Inputs& in) {
+  using detail::v3;
   Answer a;
-  const Sphere<F> sp{detail::v3<F>(in, 6), F(in[9])};
-  if (q == Query::segment_sphere_cast) {
-    detail::put_cast<F>(a, robust::cast(Segment<F>{detail::v3<F>(in, 0), detail::v3<F>(in, 3)}, sp));
-  } else if (q == Query::ray_sphere_cast) {
-    detail::put_cast<F>(a, robust::cast(Ray<F>{detail::v3<F>(in, 0), detail::v3<F>(in, 3)}, sp));
-  } else {
-    throw std::logic_error(std::string("no robust formulation of ") + info(q).name + " yet");
+  robust::Decision d;
+  switch (q) {
+    case Query::sphere_sphere: {
+      const Sphere<F> A{v3<F>(in, 0), F(in[3])}, B{v3<F>(in, 4), F(in[7])};
+      detail::put_prox<F>(a, robust::proximity(A, B));
+      a.pred = robust::intersect(A, B);
+      d = robust::decide(A, B);
+      break;
+    }
+    case Query::segment_sphere_cast: {
+      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
+      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
+      detail::put_cast<F>(a, robust::cast(s, sp));
+      a.pred = robust::hit(s, sp);
+      d = robust::decide(s, sp);
+      break;
+    }
+    case Query::ray_sphere_cast: {
+      const Ray<F> r{v3<F>(in, 0), v3<F>(in, 3)};
+      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
+      detail::put_cast<F>(a, robust::cast(r, sp));
+      a.pred = robust::hit(r, sp);
+      d = robust::decide(r, sp);
+      break;
+    }
+    case Query::segment_sphere: {
+      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
+      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
+      detail::put_prox<F>(a, robust::proximity(s, sp));
+      a.pred = robust::intersect(s, sp);
+      d = robust::decide_closest(s, sp);
+      break;
+    }
+    case Query::box_box: {
+      const Box<F> A{v3<F>(in, 0), v3<F>(in, 3)}, B{v3<F>(in, 6), v3<F>(in, 9)};
+      a.cls = robust::intersect(A, B);
+      a.pred = robust::intersect(to_min_max(A), to_min_max(B));
+      d = robust::decide(A, B);
+      break;
+    }
+    case Query::segment_box_cast: {
+      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
+      const Box<F> b{v3<F>(in, 6), v3<F>(in, 9)};
+      detail::put_cast<F>(a, robust::cast(s, b));
+      a.pred = robust::hit(s, b);
+      d = robust::decide(s, b);
+      break;
+    }
+    case Query::ray_box_cast: {
+      const Ray<F> r{v3<F>(in, 0), v3<F>(in, 3)};
+      const Box<F> b{v3<F>(in, 6), v3<F>(in, 9)};
+      detail::put_cast<F>(a, robust::cast(r, b));
+      a.pred = robust::hit(r, b);
+      d = robust::decide(r, b);
+      break;
+    }
+    case Query::sphere_box: {
+      const Sphere<F> sp{v3<F>(in, 0), F(in[3])};
+      const Box<F> b{v3<F>(in, 4), v3<F>(in, 7)};
+      detail::put_prox<F>(a, robust::proximity(sp, b));
+      a.pred = robust::intersect(sp, b);
+      d = robust::decide(sp, b);
+      break;
+    }
   }
-  a.pred = a.cls;  // robust::hit is the cast's own decision
+  if (d.value != a.cls) {
+    std::string where;
+    for (std::size_t i = 0; i < info(q).inputs.size(); ++i) where += " " + hexfloat(in[i]);
+    throw std::logic_error(std::string("robust::decide and the robust query disagree on ") + info(q).name +
+                           " at" + where);
+  }
+  a.certified = true;
+  a.certain = d.certain;
   return a;
 }
 
@@ -118,13 +190,48 @@ Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used) 
 }
 
 Answer oracle_classify(Query q, const Inputs& in, bool* exact_used) {
-  if (exact_used) *exact_used = false;
-  try {
-    return eval<oracle::Bounded, double>(q, in, false);
-  } catch (const oracle::uncertain&) {
+  // exact/cdref/oracle/classify.hpp: a semi-static filter, then exact floating-point
+  // expansions, then the book at Gmpq; the answer is always the exact classification.
+  using detail::v3;
+  oracle::Stage stage = oracle::Stage::filter;
+  bool c = false;
+  switch (q) {
+    case Query::sphere_sphere:
+      c = oracle::classify(Sphere<double>{v3<double>(in, 0), in[3]}, Sphere<double>{v3<double>(in, 4), in[7]}, &stage);
+      break;
+    case Query::segment_sphere_cast:
+      c = oracle::classify(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
+                           Sphere<double>{v3<double>(in, 6), in[9]}, &stage);
+      break;
+    case Query::ray_sphere_cast:
+      c = oracle::classify(Ray<double>{v3<double>(in, 0), v3<double>(in, 3)}, Sphere<double>{v3<double>(in, 6), in[9]},
+                           &stage);
+      break;
+    case Query::segment_sphere:
+      c = oracle::classify_segment_sphere(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
+                                          Sphere<double>{v3<double>(in, 6), in[9]}, &stage);
+      break;
+    case Query::box_box:
+      c = oracle::classify(Box<double>{v3<double>(in, 0), v3<double>(in, 3)},
+                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
+      break;
+    case Query::segment_box_cast:
+      c = oracle::classify(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
+                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
+      break;
+    case Query::ray_box_cast:
+      c = oracle::classify(Ray<double>{v3<double>(in, 0), v3<double>(in, 3)},
+                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
+      break;
+    case Query::sphere_box:
+      c = oracle::classify(Sphere<double>{v3<double>(in, 0), in[3]}, Box<double>{v3<double>(in, 4), v3<double>(in, 7)},
+                           &stage);
+      break;
   }
-  if (exact_used) *exact_used = true;
-  return eval<CGAL::Gmpq, double>(q, in, false);
+  if (exact_used) *exact_used = stage != oracle::Stage::filter;
+  Answer a;
+  a.cls = a.pred = c;  // at exact types the full query and the predicate agree (tested)
+  return a;
 }
 
 Inputs float_inputs(Query q, const Inputs& in) {
@@ -139,9 +246,9 @@ const std::vector<Implementation>& builtin_implementations() {
       {"book-float", 24, [](Query q, const Inputs& in) { return eval<float, float>(q, in); }},
       {"book-double", 53, [](Query q, const Inputs& in) { return eval<double, double>(q, in); }},
       {"book-long-double", 64, [](Query q, const Inputs& in) { return eval<long double, long double>(q, in); }},
-      {"robust-float", 24, eval_robust<float>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
-      {"robust-double", 53, eval_robust<double>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
-      {"robust-long-double", 64, eval_robust<long double>, {Query::segment_sphere_cast, Query::ray_sphere_cast}},
+      {"robust-float", 24, eval_robust<float>},
+      {"robust-double", 53, eval_robust<double>},
+      {"robust-long-double", 64, eval_robust<long double>},
   };
   return impls;
 }

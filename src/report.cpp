@@ -79,6 +79,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   // per (query, implementation)
   struct Sum {
     std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0;
+    std::uint64_t certified = 0, uncertain = 0, certain_wrong = 0;
     std::string max_where;
   };
   std::map<std::pair<std::string, std::string>, Sum> sums;
@@ -88,6 +89,9 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     s.refused += st.refused;
     s.cls += st.cls_fp + st.cls_fn;
     s.pred += st.pred_fp + st.pred_fn;
+    s.certified += st.certified;
+    s.uncertain += st.uncertain;
+    s.certain_wrong += st.certain_wrong;
     const Worst w = worst_output(k, st);
     s.nonfinite += w.nonfinite;
     if (w.group >= 0 && w.max >= s.max) {
@@ -109,6 +113,26 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
                   pmiss.c_str(), (unsigned long long)s.nonfinite,
                   s.max_where.empty() ? "-" : (num(double(s.max), "%.3g") + " (" + s.max_where + ")").c_str());
     o << line;
+  }
+
+  // the implementations that certify their classifications (robust::decide)
+  bool any_cert = false;
+  for (const auto& [key, s] : sums) any_cert = any_cert || s.certified;
+  if (any_cert) {
+    o << "\nCertificates (the implementation's own error bound says whether its classification is exact;\n"
+         "every misclassification must be among the uncertain cases, so 'certain but wrong' must be 0):\n\n";
+    std::snprintf(line, sizeof line, "%-20s %-17s %10s %20s %16s %16s\n", "query", "impl", "certified",
+                  "uncertain", "misclassified", "certain but wrong");
+    o << line;
+    for (const auto& [key, s] : sums) {
+      if (!s.certified) continue;
+      const std::string unc = std::to_string(s.uncertain) + " (" +
+                              num(100.0 * double(s.uncertain) / double(std::max<std::uint64_t>(1, s.certified)), "%.2g") + "%)";
+      std::snprintf(line, sizeof line, "%-20s %-17s %10llu %20s %16llu %16llu\n", key.first.c_str(),
+                    key.second.c_str(), (unsigned long long)s.certified, unc.c_str(), (unsigned long long)s.cls,
+                    (unsigned long long)s.certain_wrong);
+      o << line;
+    }
   }
 
   // worst cells first: by misclassification rate, then by max error
@@ -165,7 +189,11 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
       << ", \"family\": " << json_str(k.family) << ", \"scale\": " << k.scale << ", \"cases\": " << st.n
       << ", \"refused\": " << st.refused << ", \"false_positives\": " << st.cls_fp
       << ", \"false_negatives\": " << st.cls_fn << ", \"predicate_false_positives\": " << st.pred_fp
-      << ", \"predicate_false_negatives\": " << st.pred_fn << ",\n     \"misclassified_example\": ";
+      << ", \"predicate_false_negatives\": " << st.pred_fn << ", \"certified\": " << st.certified
+      << ", \"uncertain\": " << st.uncertain << ", \"certain_but_wrong\": " << st.certain_wrong
+      << ",\n     \"certain_but_wrong_example\": ";
+    json_ex(o, st.certain_wrong_example, n);
+    o << ", \"misclassified_example\": ";
     json_ex(o, st.cls_example, n);
     o << ", \"predicate_example\": ";
     json_ex(o, st.pred_example, n);
@@ -194,14 +222,16 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
 
 void write_csv(std::ostream& o, const Results& r) {
   o << "query,impl,family,scale,cases,refused,false_positives,false_negatives,predicate_false_positives,"
-       "predicate_false_negatives,output,count,nonfinite,p50_ulps,p99_ulps,max_ulps,worst_index\n";
+       "predicate_false_negatives,certified,uncertain,certain_but_wrong,output,count,nonfinite,p50_ulps,p99_ulps,"
+       "max_ulps,worst_index\n";
   for (const auto& cell : r.cells) {
     const CellKey& k = cell.first;
     const CellStats& st = cell.second;
     const QueryInfo& qi = info(k.query);
     auto head = [&] {
       o << qi.name << "," << k.impl << "," << k.family << "," << k.scale << "," << st.n << "," << st.refused << ","
-        << st.cls_fp << "," << st.cls_fn << "," << st.pred_fp << "," << st.pred_fn << ",";
+        << st.cls_fp << "," << st.cls_fn << "," << st.pred_fp << "," << st.pred_fn << "," << st.certified << ","
+        << st.uncertain << "," << st.certain_wrong << ",";
     };
     if (qi.outputs.empty()) {
       head();

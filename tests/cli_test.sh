@@ -84,8 +84,19 @@ grep -q "no family 'grazing' for query box-box" err.txt || fail "unknown family 
 python3 -c "import json,sys; d=json.load(open('whole.json')); assert len(d['cells'])>0" || fail "JSON does not parse"
 "$cdref" "${args[@]}" --csv out.csv
 head -1 out.csv | grep -q "^query,impl,family,scale,cases" || fail "CSV header"
-# the cost report: every row measured, in one run
-"$cdref" report --n 40 --reps 1 --error-n 20 --csv report.csv > report.txt
-[ "$(tail -n +2 report.csv | wc -l)" = 15 ] || fail "report rows: $(cat report.txt)"
-grep -q "^book double .* 1.00 " report.txt || fail "report: no book double baseline row"
+# the cost report: every row of every query measured in one run, as a table, CSV, JSON and
+# SVG (7 queries with values have 18 rows, box-box 15)
+"$cdref" report --n 40 --reps 1 --error-n 10 --csv report.csv --json report.json --svg report.svg > report.txt
+[ "$(tail -n +2 report.csv | wc -l)" = 141 ] || fail "report rows: $(cat report.txt)"
+grep -q "^  book double  *[0-9.]*  *1.00 " report.txt || fail "report: no book double baseline row"
+python3 -c "
+import json
+d = json.load(open('report.json'))
+assert len(d['queries']) == 8
+for q in d['queries']:
+    assert all(r['ns_per_query'] > 0 for r in q['rows']), q['query']
+" || fail "report JSON"
+grep -q "<svg" report.svg || fail "report SVG"
+"$cdref" report --query box-box --n 10 --reps 1 --error-n 5 > one.txt
+grep -q "^box-box" one.txt && ! grep -q "^sphere-box" one.txt || fail "report --query"
 echo "cli: all checks passed"

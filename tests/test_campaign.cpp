@@ -5,6 +5,8 @@
 #include <cdref/error.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cmath>
+#include <cstdlib>
+#include <map>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -20,7 +22,7 @@ namespace {
 Spec small_spec() {
   Spec s;
   s.queries = {Query::segment_sphere_cast, Query::sphere_box, Query::box_box, Query::ray_box_cast};
-  s.impls = {"book-float", "book-double", "book-long-double"};
+  s.impls = {"book-float", "book-double", "book-long-double", "robust-double"};  // robust: certificates too
   s.families = {"near-tangent", "near-touching", "grazing", "degenerate"};
   s.scales = {0, 8, 24, 52};
   s.n = 700;  // not a multiple of the block size: the last block is partial
@@ -213,6 +215,44 @@ TEST_CASE("the engine sees the book's long-range failure near tangency", "[campa
   const double share = double(far.cls_fp + far.cls_fn) / double(far.n);
   INFO("misclassified at 1e4 radii: " << share);
   REQUIRE(share > 0.25);
+}
+
+TEST_CASE("robust versions misclassify only where their own error bound says they may", "[campaign][robust]") {
+  // Every family and scale of every query, robust at float, double and long double against
+  // the truth: a case robust::decide calls certain must be classified exactly (a broken
+  // bound shows up here as certain_wrong > 0); misclassifications are a subset of the
+  // uncertain cases.
+  Spec s;
+  s.queries = all_queries();
+  s.impls = {"robust-float", "robust-double", "robust-long-double", "book-float", "book-double"};
+  s.n = 120;
+  s.seed = 11;
+  s.threads = 2;
+  const Results r = run(s);
+  std::map<std::string, std::uint64_t> certified, uncertain, wrong, long_range_wrong;
+  for (const auto& [k, st] : r.cells) {
+    INFO(info(k.query).name << " " << k.impl << " " << k.family << "/" << k.scale);
+    if (k.impl.rfind("robust", 0) == 0) {
+      REQUIRE(st.certified == st.n - st.refused);
+      REQUIRE(st.certain_wrong == 0);
+      REQUIRE(st.cls_fp + st.cls_fn <= st.uncertain);
+      if (k.family == "uniform") REQUIRE(st.uncertain * 100 <= st.n);  // certain on >= 99% of random inputs
+    } else {
+      REQUIRE(st.certified == 0);
+    }
+    certified[k.impl] += st.certified;
+    uncertain[k.impl] += st.uncertain;
+    wrong[k.impl] += st.cls_fp + st.cls_fn;
+    if (k.family == "long-range") long_range_wrong[k.impl] += st.cls_fp + st.cls_fn;
+  }
+  // far fewer misclassifications than the book at the same type on the long-range families
+  CHECK(long_range_wrong["robust-float"] * 4 <= long_range_wrong["book-float"]);
+  CHECK(long_range_wrong["robust-double"] * 4 <= long_range_wrong["book-double"]);
+  if (std::getenv("CDREF_TEST_REPORT"))
+    for (const auto& [impl, n] : certified)
+      std::printf("%s: %llu cases certified, %llu uncertain, %llu misclassified (long-range: %llu)\n", impl.c_str(),
+                  (unsigned long long)n, (unsigned long long)uncertain[impl], (unsigned long long)wrong[impl],
+                  (unsigned long long)long_range_wrong[impl]);
 }
 
 TEST_CASE("histogram quantiles are exact below 16 ulps and within an eighth of a power of two above",

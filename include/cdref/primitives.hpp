@@ -87,60 +87,62 @@ std::string show(const T& x) {
 
 inline const char* axis_name(int i) { return i == 0 ? "x" : (i == 1 ? "y" : "z"); }
 
+// The message is built only when a check fails: a valid input costs a few comparisons.
 template <class T>
-void check_finite(const T& x, const std::string& what) {
+void check_finite(const T& x, const char* name, const char* field) {
   if (!number_traits<T>::is_finite(x))
-    throw invalid_input(what + " is not finite (" + show(x) + ")");
+    throw invalid_input(std::string(name) + " " + field + " is not finite (" + show(x) + ")");
 }
 
 template <class T>
-void check_finite(const Vec3<T>& v, const std::string& what) {
+void check_finite(const Vec3<T>& v, const char* name, const char* field) {
   for (int i = 0; i < 3; ++i)
     if (!number_traits<T>::is_finite(v[i]))
-      throw invalid_input(what + " has a non-finite " + axis_name(i) + " coordinate (" + show(v[i]) + ")");
+      throw invalid_input(std::string(name) + " " + field + " has a non-finite " + axis_name(i) + " coordinate (" +
+                          show(v[i]) + ")");
 }
 
 }  // namespace detail
 
 template <class T>
-void check(const Sphere<T>& s, const std::string& name = "sphere") {
-  detail::check_finite(s.center, name + " centre");
-  detail::check_finite(s.radius, name + " radius");
-  if (s.radius < T(0)) throw invalid_input(name + " radius is negative (" + detail::show(s.radius) + ")");
+void check(const Sphere<T>& s, const char* name = "sphere") {
+  detail::check_finite(s.center, name, "centre");
+  detail::check_finite(s.radius, name, "radius");
+  if (s.radius < T(0)) throw invalid_input(std::string(name) + " radius is negative (" + detail::show(s.radius) + ")");
 }
 
 template <class T>
-void check(const Box<T>& b, const std::string& name = "box") {
-  detail::check_finite(b.center, name + " centre");
-  detail::check_finite(b.extent, name + " extent");
+void check(const Box<T>& b, const char* name = "box") {
+  detail::check_finite(b.center, name, "centre");
+  detail::check_finite(b.extent, name, "extent");
   for (int i = 0; i < 3; ++i)
     if (b.extent[i] < T(0))
-      throw invalid_input(name + " extent is negative along " + detail::axis_name(i) + " (" +
+      throw invalid_input(std::string(name) + " extent is negative along " + detail::axis_name(i) + " (" +
                           detail::show(b.extent[i]) + ")");
 }
 
 template <class T>
-void check(const MinMaxBox<T>& b, const std::string& name = "box") {
-  detail::check_finite(b.min, name + " min corner");
-  detail::check_finite(b.max, name + " max corner");
+void check(const MinMaxBox<T>& b, const char* name = "box") {
+  detail::check_finite(b.min, name, "min corner");
+  detail::check_finite(b.max, name, "max corner");
   for (int i = 0; i < 3; ++i)
     if (b.max[i] < b.min[i])
-      throw invalid_input(name + " is inverted along " + detail::axis_name(i) + " (min " +
+      throw invalid_input(std::string(name) + " is inverted along " + detail::axis_name(i) + " (min " +
                           detail::show(b.min[i]) + " > max " + detail::show(b.max[i]) + ")");
 }
 
 template <class T>
-void check(const Segment<T>& s, const std::string& name = "segment") {
-  detail::check_finite(s.source, name + " source");
-  detail::check_finite(s.target, name + " target");
+void check(const Segment<T>& s, const char* name = "segment") {
+  detail::check_finite(s.source, name, "source");
+  detail::check_finite(s.target, name, "target");
 }
 
 template <class T>
-void check(const Ray<T>& r, const std::string& name = "ray") {
-  detail::check_finite(r.source, name + " source");
-  detail::check_finite(r.direction, name + " direction");
+void check(const Ray<T>& r, const char* name = "ray") {
+  detail::check_finite(r.source, name, "source");
+  detail::check_finite(r.direction, name, "direction");
   if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0))
-    throw invalid_input(name + " direction is the zero vector");
+    throw invalid_input(std::string(name) + " direction is the zero vector");
 }
 
 }  // namespace cdref

@@ -60,9 +60,14 @@ using Inputs = std::array<double, max_inputs>;
 // One evaluation: the classification from the full query (cast().hit,
 // proximity().intersect), the predicate (hit() / intersect()), and the output values
 // in schema order, as doubles (a float implementation's values are exact in double).
+// An implementation with a certificate (the robust ones: robust::decide) also says whether
+// its classification is certain: `certain` promises it equals the exact one, and a campaign
+// counts the cases where that promise fails (there must be none).
 struct Answer {
   bool cls = false;
   bool pred = false;
+  bool certified = false;  // the implementation gives a certificate
+  bool certain = false;    // ... and it says its classification is the exact one
   std::array<long double, max_values> v{};  // exact for float, double and long double
 };
 
@@ -90,7 +95,9 @@ Answer truth(Query q, const Inputs& in, int precision);
 // inputs). `exact_used` (if given) tells which path answered.
 Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used = nullptr);
 
-// The oracle for the classifications alone (Answer::cls and Answer::pred; no values).
+// The oracle for the classifications alone (Answer::cls and Answer::pred; no values):
+// exact/cdref/oracle/classify.hpp (a semi-static filter, then exact floating-point
+// expansions, then Gmpq). `exact_used`: the filter could not decide.
 Answer oracle_classify(Query q, const Inputs& in, bool* exact_used = nullptr);
 
 // The inputs as a float implementation sees them (each rounded to float, back in double).
@@ -151,6 +158,10 @@ struct CellStats {
   std::uint64_t cls_fp = 0, cls_fn = 0;    // full query says yes / no, truth says the other
   std::uint64_t pred_fp = 0, pred_fn = 0;  // the same for the predicate
   Exemplar cls_example, pred_example;      // smallest index among misclassifications
+  // Implementations with a certificate (Answer::certified): cases certified, those marked
+  // uncertain, and those certain but misclassified (a broken error bound: must stay 0).
+  std::uint64_t certified = 0, uncertain = 0, certain_wrong = 0;
+  Exemplar certain_wrong_example;
   std::array<OutputStats, max_values> out{};
   void merge(const CellStats& o);
 };
