@@ -49,9 +49,13 @@ const char* usage = R"(usage:
       --quiet          no table
   cdref merge [--out F] [--json F] [--csv F] FILE...
                                  merge complete shard files of one campaign
-  cdref report [--n N] [--reps R] [--family F] [--error-n N] [--csv F]
-                                 what accuracy costs in time, side by side in one run (the
-                                 segment cast on a sphere, so far)
+  cdref report [--query Q]... [--n N] [--reps R] [--error-n N] [--threads T]
+               [--csv F] [--json F] [--svg F]
+                                 what accuracy costs in time: every implementation of every
+                                 query (or of --query Q) timed side by side on the same N
+                                 uniform cases (median of R interleaved repetitions), with
+                                 misclassification and ulp errors from a campaign of
+                                 --error-n cases per cell; the SVG plots cost against error
   cdref describe                 list queries, input and output columns, families and scales
   cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
                                  write case inputs as CSV (hex-float; --decimal: 17 digits)
