@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace cdref::robust {
 
@@ -45,6 +46,70 @@ F dot2(const F (&x)[N], const F (&y)[N]) {
     err += p.lo + s.lo;
   }
   return acc.hi + err;
+}
+
+
+// ---- Double-word helpers (additions for ray_sphere.hpp) ----
+//
+//   fast_two_sum(a, b) = (s, e), s = fl(a + b), a + b = s + e exactly when a = 0 or
+//     exponent(a) >= exponent(b) (Dekker; 3 flops);
+//   two_prod_split(a, b): two_prod without fma (Dekker's product over Veltkamp's split at
+//     2^ceil(p/2) + 1): exact, barring overflow of the split (|a|, |b| below max / 2^(p/2+1))
+//     and underflow. Built without -mfma, std::fma is a library call; this one stays inline;
+//   mul_pair(x, y) = x y for double-word x, y: relative error at most 3u^2 (+ the lo x lo
+//     term, below u^2 |x y|: 4u^2 in all);
+//   div_pair(x, y) = x / y as a double-word (t, corr): t = fl(xh / yh), corr = the rounded
+//     remainder (xh - t yh + xl - t yl) / yh; relative error at most 8u^2 (|xl| <= u|xh|,
+//     |yl| <= u|yh|; the remainder xh - t yh is exact, three roundings of the u-sized
+//     correction and the division by yh instead of y);
+//   sqrt_pair(x) = sqrt(xh + xl) as (y, (xh - y^2 + xl) / (2y)), y = fl(sqrt xh): one Newton
+//     step, relative error at most 4u^2.
+// Each result is normalized (|lo| <= ulp(hi)/2) by a final fast_two_sum.
+
+template <class F>
+Pair<F> fast_two_sum(F a, F b) {
+  const F s = a + b;
+  return {s, b - (s - a)};
+}
+
+template <class F>
+constexpr F split_factor() {
+  constexpr int p = std::numeric_limits<F>::digits;
+  return F((1ULL << ((p + 1) / 2)) + 1);
+}
+
+template <class F>
+Pair<F> two_prod_split(F a, F b) {
+  const F ca = split_factor<F>() * a, cb = split_factor<F>() * b;
+  const F ah = ca - (ca - a), al = a - ah;
+  const F bh = cb - (cb - b), bl = b - bh;
+  const F p = a * b;
+  return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+}
+
+template <class F>
+Pair<F> mul_pair(const Pair<F>& x, const Pair<F>& y) {
+  const Pair<F> p = two_prod_split(x.hi, y.hi);
+  return fast_two_sum(p.hi, F(p.lo + F(x.hi * y.lo + x.lo * y.hi)));
+}
+
+template <class F>
+Pair<F> div_pair(const Pair<F>& x, const Pair<F>& y) {
+  const F t = x.hi / y.hi;
+  const Pair<F> p = two_prod_split(t, y.hi);
+  const F rem = F(F(F(x.hi - p.hi) - p.lo) + x.lo) - t * y.lo;
+  const F corr = rem / y.hi;
+  if (!std::isfinite(corr)) return {t, F(0)};  // t itself at the edge of the range
+  return fast_two_sum(t, corr);
+}
+
+template <class F>
+Pair<F> sqrt_pair(const Pair<F>& x) {
+  if (!(x.hi > F(0))) return {F(0), F(0)};
+  const F y = std::sqrt(x.hi);
+  const Pair<F> p = two_prod_split(y, y);
+  const F e = F(F(x.hi - p.hi) - p.lo) + x.lo;
+  return fast_two_sum(y, F(e / F(2 * y)));
 }
 
 }  // namespace cdref::robust

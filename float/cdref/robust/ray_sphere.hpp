@@ -3,27 +3,79 @@
 // as cdref::book (hit, cast for a segment and for an infinite ray).
 //
 // Formulation (s the source relative to the centre, r the direction, a = r.r, b = s.r,
-// c = s.s - rho^2, lambda_{1,2} the roots of a l^2 + 2 b l + c = 0):
-//  1. Scale. s, r and rho are multiplied by one power of two 2^-e, e the exponent of the
-//     largest of them: exact (barring underflow of components 2^1000 times smaller than the
-//     largest), lambda is unchanged, and no square or product can overflow or underflow
-//     to zero any more (the 1e160 and 1e-160 cases).
-//  2. The discriminant from the distance of the centre to the line. With l = s - (b/a) r,
-//     the foot of the perpendicular, b^2 - a c = a (rho^2 - |l|^2): the book's sigma
-//     cancels (s.r)^2 against |r|^2 |s|^2, both of size |s|^2 |r|^2, while |l| is of the
-//     size of the miss distance, so rho^2 - |l|^2 has an absolute error of order
-//     u (|l| |s| + rho^2) instead of u |s|^2 (Haines et al., "Precision improvements for
-//     ray/sphere intersection", Ray Tracing Gems, 2019). rho^2 - |l|^2 is evaluated with
-//     dot2 (eft.hpp), so the only error left is that of l itself, each component
-//     l_i = fma(-b/a, r_i, s_i).
-//  3. c = |s|^2 - rho^2 with dot2: exact to about an ulp even when the source is on the
-//     sphere.
-//  4. The stable quadratic: q = -(b + sign(b) sqrt(a D)), D = rho^2 - |l|^2; the roots are
-//     q / a and c / q, neither computed by subtracting nearly equal numbers.
-//  5. The entry point s + lambda r with one fma per coordinate, then the centre added back.
-// The decision (hit or miss) is D >= 0 with the same range conditions as the book. Where
-// the book's sigma is wrong by u |s|^2 |r|^2, this one is wrong by about u |l| |s| |r|^2:
-// at long range, aimed at the sphere, that is |s| / rho times smaller.
+// c = s.s - rho^2, lambda_{1,2} the roots of a l^2 + 2 b l + c = 0). u is the unit roundoff
+// of F, eta its smallest subnormal; "double-word" is a pair hi + lo, |lo| <= ulp(hi)/2.
+//  0. Exact differences. s_i = source_i - centre_i and, for a segment, r_i = target_i -
+//     source_i (the book's t - s, exactly) are kept as two_sum pairs sh + sl, rh + rl: no
+//     rounding of the inputs' differences at all. A ray's r is its direction (rl = 0).
+//  1. Scale. Every pair and rho is multiplied by one power of two 2^-e, e the exponent of
+//     the largest of |sh_i|, |rh_i|, rho: exact (barring underflow of components 2^(emin)
+//     below the largest: eta per value), lambda is unchanged, and no square or product can
+//     overflow (the 1e160 and 1e-160 cases). Below, quantities are in these units.
+//  2. a, b, c as double-words: the exact products sh_i rh_i (two_prod_split, eft.hpp; no
+//     library fma call) summed by a two_sum chain, and the products' low parts, the chain's
+//     errors and the cross terms sh_i rl_i + sl_i rh_i summed in F (sl_i rl_i <= u^2 |sh_i rh_i|
+//     is dropped).
+//  3. The discriminant from the perpendicular foot: b^2 - a c = a D, D = rho^2 - |l|^2,
+//     l = s - f r, f = b/a (the book's sigma cancels (s.r)^2 against |r|^2 |s|^2; |l| is of
+//     the size of the miss distance; Haines et al., "Precision improvements for ray/sphere
+//     intersection", Ray Tracing Gems, 2019). f is the double-word quotient (div_pair),
+//     each l_i = sh_i + sl_i - (fh + fl)(rh_i + rl_i) a double-word (the exact product
+//     fh rh_i, an exact two_sum with sh_i, the rest summed in F), and D a double-word from
+//     the exact squares of lh_i and rho.
+//  4. The stable quadratic in double-words: X = sqrt(a D) (mul_pair, then sqrt_pair: one
+//     Newton step), q = -(b + sign(b) X), a sum of two terms of one sign; the roots q / a
+//     and c / q by div_pair, each with one final rounding. Neither subtracts nearly equal
+//     numbers.
+//  5. The entry point s + lambda r, scaled and local, then the centre added back.
+// The decision (hit or miss) is D >= 0 with the same range conditions as the book.
+//
+// Accuracy of lambda_enter (the header's bound; tests/test_robust_spheres.cpp evaluates
+// it for every case and asserts it). lambda_enter > 0 only where b < 0 < c, and then
+// lambda_enter = c / q with q = |b| + X, X = sqrt(a D) = |r| sqrt(D); write P = |b| / |r|
+// (the distance from the source to the foot) and E = eta (underflow of the lows, of
+// products below the normal range and of scaled components; scaled units throughout).
+//  A. Error terms (each double-word accumulation: its hi chain and the two_prod lows exact,
+//     the n terms of its F sum of total size L off by gamma_{n-1} L; the final two_sum exact):
+//       c: |c^ - c| <= err_c = 55 u^2 (|s|^2 + rho^2) + 32 E (10 lows of total <= 6u(|s|^2+rho^2));
+//       b: |b^ - b| <= err_b = 51 u^2 |s||r| + 32 E      (11 lows of total <= 5u |s||r|);
+//       a: relative rel_a = 52 u^2 + 32 E / a;
+//       f: delta = f^ - f, |delta| <= err_b / a + 60 u^2 |f| (div_pair: 8u^2);
+//       l: the computed l^ = l' + e with l' = s - f^ r exactly and |e| <= 33 u^2 |s| (five
+//          lows per component, of total <= u(2|s_i| + 4|f r_i|), |f||r| = P <= |s|).
+//     The foot is where the error in f does not matter to first order: l . r = 0, so
+//     |l'|^2 = |l - delta r|^2 = |l|^2 + delta^2 a exactly. Hence, for a hit (|l| <= rho),
+//       |D^ - D| <= err_D = 111 u^2 rho^2 + 2 (rho + |delta||r|) |e| + |e|^2 + delta^2 a + 64 E,
+//     with delta^2 a <= 2 err_b^2 / a + 7200 u^4 b^2 / a; the 111 u^2 rho^2 is D's own sum
+//     (10 lows of total <= 6u (rho^2 + |l^|^2)) and the l^2 lows dropped. So err_D is about
+//     u^2 (111 rho^2 + 66 rho |s|): at range it grows like rho |s|, not like |s|^2.
+//  B. |X^ - X| <= eX, the smaller of
+//       1.01 sqrt(a err_D) + (X + sqrt(a err_D)) (0.51 rel_a + 6.2 u^2)   (always: |sqrt x -
+//          sqrt y| <= sqrt|x - y|; mul_pair 4u^2, sqrt_pair 4u^2), and
+//       X (0.57 theta + 4.1 u^2), theta = 1.01 (rel_a + err_D / D) + 4u^2, when theta <= 0.4.
+//     q^ = |b^| + X^ with 3.1 u^2 of its own: rel_q = (err_b + eX) / q + 3.1 u^2.
+//  C. rel_z = (err_c / c + rel_q) / (1 - rel_q) + 8.1 u^2 for the double-word c^ / q^, then one
+//     rounding: for rel_q, err_c / c <= 0.1,
+//       ulps(lambda_enter) <= 1 + rel_z (1 + 1/u)
+//     (ulps at the truth's binade: ulp(x) > u |x|; the rounding itself is half an ulp of
+//     the result). Away from the degenerate places this is 1 + O(u) ulps: the result is the
+//     correctly rounded value except within ~70 u^2 relative of a rounding midpoint.
+// Where it degrades (the places where the problem itself is ill-conditioned):
+//  - near tangency: the term err_D / (2 sqrt(D) (P + sqrt D)) of rel_q is about
+//    (33 + 56 rho / P) (rho / sqrt D) u^2: more than an ulp's worth only when the half chord
+//    sqrt(D) is below (33 + 56 rho / P) u rho, i.e. the line passes within about
+//    (33 + 56 rho / P)^2 u^2 rho / 2 of tangency (depth rho - |l|);
+//    at exact tangency the first form of eX still gives rel_q <= u sqrt(111 rho^2 +
+//    66 rho |s|) / P, a few ulps from P ~ 10 rho on and fewer at range. An input perturbation
+//    of one ulp moves lambda_enter by ~(rho / sqrt(D)) ulps there, so the bound is u times
+//    the problem's own condition number;
+//  - a source on the sphere: err_c / c = 55 u^2 (|s|^2 + rho^2) / c, an ulp's worth when
+//    c < 55 u (|s|^2 + rho^2), i.e. the source within about 55 u rho of the surface (a
+//    perturbation of the source by one ulp changes c by as much);
+//  - grazing with b ~ 0: err_b / q = 51 u^2 |s||r| / q, an ulp's worth when q < 51 u |s||r|.
+// Measured (cdref campaign, seed 1, 2000 cases per cell, uniform, long-range, near-tangent
+// and tangent-at-range, segment and ray): lambda_enter is correctly rounded in every case
+// at float and double (0 ulps; the test suite: at most 0.5 ulps), lambda_exit within 1 ulp.
 //
 // Certificates (decide(), decision.hpp). Every decisive sign is taken from a value q^ with
 // a computed bound E, |q^ - q| <= E, and is certain iff |q^| > E. For dot2 over N terms
@@ -39,7 +91,13 @@
 // low parts of expansions scaled into the subnormal range).
 //
 // decide(Segment or Ray, Sphere): the cast's classification (value == hit()) and whether
-// the book's exact answer is certainly the same. The book decides (Algorithm 3.1 at an exact
+// the book's exact answer is certainly the same. The certificate does not depend on how
+// the cast computes: it bounds the exact D, b, c, a + b, a + 2b + c from a separate, cheaper
+// single-word evaluation (s = fl(source - c), r = fl(fl(t - c) - s), l_i = fma(-b/a, r_i, s_i),
+// the formulation before the double-words) and its derived bound below, and calls the
+// answer certain when the signs it certifies decide the book's formula and agree with the
+// cast's own value. (It is conservative: the double-word cast is right on many cases this
+// bound leaves uncertain, near tangency and at range.) The book decides (Algorithm 3.1 at an exact
 // type, a = |r|^2, b = s.r, c = |s|^2 - rho^2, sigma = b^2 - a c = a D):
 //   hit <=> D >= 0 and (b <= 0 or c <= 0) [lambda_2 >= 0] and, for a segment,
 //           (a + b >= 0 or a + 2b + c <= 0) [lambda_1 <= 1];  a = 0: hit <=> c <= 0.
@@ -97,48 +155,132 @@ Local<F> scaled(const Vec3<F>& s, const Vec3<F>& r, F rho) {
   return L;
 }
 
+// x 2^-e for every value of one query: one multiplication by 2^-e when that power is a
+// normal number (exact unless the product is subnormal), ldexp otherwise.
+template <class F>
+struct Pow2 {
+  int e;
+  F f;
+  bool direct;
+  explicit Pow2(int e_) : e(e_) {
+    constexpr int emax = std::numeric_limits<F>::max_exponent;
+    direct = e > -(emax - 2) && e < emax - 2;
+    f = direct ? std::ldexp(F(1), -e) : F(0);
+  }
+  F operator()(F x) const { return direct ? x * f : std::ldexp(x, -e); }
+};
+
+// The double-word formulation (header, "Accuracy"): s = source - centre and r = target -
+// source as exact pairs, scaled by 2^-scale.
+template <class F>
+struct LocalDW {
+  Pair<F> s[3], r[3];
+  F rho;
+  int scale;
+};
+
+template <class F>
+LocalDW<F> scaled_dw(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho) {
+  F m = rho;
+  for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(s[i].hi), std::fabs(r[i].hi)});
+  LocalDW<F> L{};
+  L.scale = m > F(0) ? std::ilogb(m) : 0;
+  const Pow2<F> sc(L.scale);
+  for (int i = 0; i < 3; ++i) {
+    L.s[i] = {sc(s[i].hi), sc(s[i].lo)};
+    L.r[i] = {sc(r[i].hi), sc(r[i].lo)};
+  }
+  L.rho = sc(rho);
+  return L;
+}
+
 template <class F>
 struct Roots {
   bool line_hits = false;
   F lambda1 = 0, lambda2 = 0;
 };
 
-// The roots of a l^2 + 2 b l + c, a > 0, from the scaled inputs.
+// c = |s|^2 - rho^2 as a double-word: the exact squares of the high parts and rho^2 summed
+// by a two_sum chain, their low parts, the chain's errors and 2 sh.sl summed in F.
 template <class F>
-Roots<F> roots(const Local<F>& L) {
-  const F a = dot2(L.r, L.r);
-  const F b = dot2(L.s, L.r);
-  const F c = dot2({L.s[0], L.s[1], L.s[2], L.rho}, {L.s[0], L.s[1], L.s[2], F(-L.rho)});
-  const F f = b / a;
-  const F l[3] = {std::fma(-f, L.r[0], L.s[0]), std::fma(-f, L.r[1], L.s[1]), std::fma(-f, L.r[2], L.s[2])};
-  const F D = dot2({L.rho, l[0], l[1], l[2]}, {L.rho, F(-l[0]), F(-l[1]), F(-l[2])});  // rho^2 - |l|^2
+Pair<F> c_dw(const LocalDW<F>& L) {
+  const Pair<F> p0 = two_prod_split(L.s[0].hi, L.s[0].hi), p1 = two_prod_split(L.s[1].hi, L.s[1].hi),
+                p2 = two_prod_split(L.s[2].hi, L.s[2].hi), pr = two_prod_split(L.rho, L.rho);
+  const Pair<F> h1 = two_sum(p0.hi, p1.hi), h2 = two_sum(h1.hi, p2.hi), h3 = two_sum(h2.hi, F(-pr.hi));
+  const F x = L.s[0].hi * L.s[0].lo + L.s[1].hi * L.s[1].lo + L.s[2].hi * L.s[2].lo;
+  const F lo = F(F(p0.lo + p1.lo) + F(p2.lo - pr.lo)) + F(F(h1.lo + h2.lo) + h3.lo) + F(2) * x;
+  return two_sum(h3.hi, lo);
+}
+
+// The roots of a l^2 + 2 b l + c, a > 0, from the scaled inputs, each with one final rounding.
+template <class F>
+Roots<F> roots(const LocalDW<F>& L, const Pair<F>& c) {
+  const auto& s = L.s;
+  const auto& r = L.r;
+  // a = |r|^2 (no cancellation)
+  const Pair<F> a0 = two_prod_split(r[0].hi, r[0].hi), a1 = two_prod_split(r[1].hi, r[1].hi),
+                a2 = two_prod_split(r[2].hi, r[2].hi);
+  const Pair<F> ah1 = two_sum(a0.hi, a1.hi), ah2 = two_sum(ah1.hi, a2.hi);
+  const F ax = r[0].hi * r[0].lo + r[1].hi * r[1].lo + r[2].hi * r[2].lo;
+  const Pair<F> a = fast_two_sum(ah2.hi, F(F(F(a0.lo + a1.lo) + F(a2.lo + ah1.lo)) + F(ah2.lo + F(2) * ax)));
+  // b = s.r
+  const Pair<F> b0 = two_prod_split(s[0].hi, r[0].hi), b1 = two_prod_split(s[1].hi, r[1].hi),
+                b2 = two_prod_split(s[2].hi, r[2].hi);
+  const Pair<F> bh1 = two_sum(b0.hi, b1.hi), bh2 = two_sum(bh1.hi, b2.hi);
+  const F bx = F(F(s[0].hi * r[0].lo + s[0].lo * r[0].hi) + F(s[1].hi * r[1].lo + s[1].lo * r[1].hi)) +
+               F(s[2].hi * r[2].lo + s[2].lo * r[2].hi);
+  const Pair<F> b = two_sum(bh2.hi, F(F(F(b0.lo + b1.lo) + F(b2.lo + bh1.lo)) + F(bh2.lo + bx)));
+  // the foot of the perpendicular, l = s - f r, f = b / a, each l_i a double-word
+  const Pair<F> f = div_pair(b, a);
+  Pair<F> l[3];
+  for (int i = 0; i < 3; ++i) {
+    const Pair<F> P = two_prod_split(f.hi, r[i].hi);
+    const Pair<F> T = two_sum(s[i].hi, F(-P.hi));
+    const F lo = F(F(T.lo + s[i].lo) - P.lo) - F(f.hi * r[i].lo + f.lo * r[i].hi);
+    l[i] = two_sum(T.hi, lo);
+  }
+  // D = rho^2 - |l|^2
+  const Pair<F> pr = two_prod_split(L.rho, L.rho), q0 = two_prod_split(l[0].hi, l[0].hi),
+                q1 = two_prod_split(l[1].hi, l[1].hi), q2 = two_prod_split(l[2].hi, l[2].hi);
+  const Pair<F> dh1 = two_sum(pr.hi, F(-q0.hi)), dh2 = two_sum(dh1.hi, F(-q1.hi)), dh3 = two_sum(dh2.hi, F(-q2.hi));
+  const F dx = l[0].hi * l[0].lo + l[1].hi * l[1].lo + l[2].hi * l[2].lo;
+  const F dlo = F(F(pr.lo - q0.lo) - F(q1.lo + q2.lo)) + F(F(dh1.lo + dh2.lo) + dh3.lo) - F(2) * dx;
+  const Pair<F> D = two_sum(dh3.hi, dlo);
   Roots<F> out;
-  if (!(D >= F(0))) return out;
+  if (!(D.hi >= F(0))) return out;
   out.line_hits = true;
-  const F q = -(b + std::copysign(std::sqrt(a) * std::sqrt(D), b));
-  if (q == F(0)) {  // b = 0 and D = 0: tangent at lambda = 0
+  // q = -(b + sign(b) sqrt(a D)): a sum of two terms of one sign
+  const Pair<F> X0 = sqrt_pair(mul_pair(a, D));
+  const Pair<F> X = std::signbit(b.hi) ? Pair<F>{-X0.hi, -X0.lo} : X0;
+  const Pair<F> qs = two_sum(b.hi, X.hi);
+  const Pair<F> q0s = fast_two_sum(qs.hi, F(qs.lo + F(b.lo + X.lo)));
+  const Pair<F> q{-q0s.hi, -q0s.lo};
+  if (q.hi == F(0)) {  // b = 0 and D = 0: tangent at lambda = 0
     out.lambda1 = out.lambda2 = F(0);
     return out;
   }
-  const F x1 = q / a, x2 = c / q;
+  const Pair<F> x1p = div_pair(q, a), x2p = div_pair(c, q);
+  const F x1 = x1p.hi + x1p.lo, x2 = x2p.hi + x2p.lo;
   out.lambda1 = std::min(x1, x2);
   out.lambda2 = std::max(x1, x2);
   return out;
 }
 
+// s = source - centre (pairs), r = the direction (pairs; exact: target - source for a segment)
 template <class F>
-Cast<F> cast_local(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool bounded, unsigned w) {
+Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded, unsigned w) {
   Cast<F> res;
-  const Local<F> L = scaled(s, r, sp.radius);
-  const bool zero = L.r[0] == F(0) && L.r[1] == F(0) && L.r[2] == F(0);
+  const LocalDW<F> L = scaled_dw(s, r, sp.radius);
+  const bool zero = L.r[0].hi == F(0) && L.r[1].hi == F(0) && L.r[2].hi == F(0);
+  const Pair<F> c = c_dw(L);
   if (zero) {  // a zero-length segment: a point test, as in the book
-    const F c = dot2({L.s[0], L.s[1], L.s[2], L.rho}, {L.s[0], L.s[1], L.s[2], F(-L.rho)});
-    res.hit = c <= F(0);
+    res.hit = c.hi <= F(0);
     if (res.hit && (w & want_lambda_exit)) res.lambda_exit = F(1);
-    if (res.hit && (w & want_point)) res.point = Vec3<F>(s + sp.center);
+    if (res.hit && (w & want_point))
+      for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
     return res;
   }
-  const Roots<F> R = roots(L);
+  const Roots<F> R = roots(L, c);
   if (!R.line_hits || (bounded && !(R.lambda1 <= F(1))) || !(R.lambda2 >= F(0))) return res;
   res.hit = true;
   res.enters = R.lambda1 >= F(0);
@@ -146,7 +288,9 @@ Cast<F> cast_local(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool
   if (w & want_lambda_exit) res.lambda_exit = bounded ? std::min(R.lambda2, F(1)) : R.lambda2;
   if (w & (want_point | want_normal)) {
     F x[3];
-    for (int i = 0; i < 3; ++i) x[i] = std::fma(res.lambda_enter, L.r[i], L.s[i]);  // scaled, local
+    const F lam = res.lambda_enter;
+    for (int i = 0; i < 3; ++i)  // scaled, local: s + lambda r
+      x[i] = std::fma(lam, L.r[i].hi, L.s[i].hi) + F(L.s[i].lo + lam * L.r[i].lo);
     if (w & want_point)
       for (int i = 0; i < 3; ++i) res.point[i] = std::ldexp(x[i], L.scale) + sp.center[i];
     if ((w & want_normal) && res.enters && L.rho != F(0))
@@ -155,6 +299,10 @@ Cast<F> cast_local(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool
   return res;
 }
 
+template <class F>
+void diff_pairs(const Vec3<F>& x, const Vec3<F>& y, Pair<F> (&out)[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = two_sum(x[i], F(-y[i]));
+}
 
 // A value and a bound on its error (see the header: certificates).
 template <class F>
@@ -221,9 +369,10 @@ F scale_down(F x, int e, bool& exact) {
 }
 
 template <class F>
-Decision decide_cast(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool bounded, bool zero_exact) {
+Decision decide_cast(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool bounded, bool zero_exact,
+                     bool value) {
   Decision out;
-  out.value = cast_local(s, r, sp, bounded, 0).hit;
+  out.value = value;
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(s[i]) || !std::isfinite(r[i])) return out;  // fl(source - c) overflowed
   const Local<F> L = scaled(s, r, sp.radius);
@@ -287,16 +436,20 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast) {
   check(seg, "segment");
   check(sp, "sphere");
-  const Vec3<F> s = seg.source - sp.center;
-  const Vec3<F> t = seg.target - sp.center;
-  return detail::cast_local(s, Vec3<F>(t - s), sp, true, w);
+  Pair<F> s[3], r[3];
+  detail::diff_pairs(seg.source, sp.center, s);
+  detail::diff_pairs(seg.target, seg.source, r);
+  return detail::cast_local(s, r, sp, true, w);
 }
 
 template <class F>
 Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   check(ray, "ray");
   check(sp, "sphere");
-  return detail::cast_local(Vec3<F>(ray.source - sp.center), ray.direction, sp, false, w);
+  Pair<F> s[3];
+  detail::diff_pairs(ray.source, sp.center, s);
+  const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
+  return detail::cast_local(s, r, sp, false, w);
 }
 
 // The decision alone: the same computation as cast() (the range tests need the roots),
@@ -314,18 +467,16 @@ bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
 // The cast's classification with its certificate (decision.hpp; bound in the header).
 template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
-  check(seg, "segment");
-  check(sp, "sphere");
+  const bool value = hit(seg, sp);  // checks the inputs
   const Vec3<F> s = seg.source - sp.center;
   const Vec3<F> t = seg.target - sp.center;
-  return detail::decide_cast(s, Vec3<F>(t - s), sp, true, seg.source == seg.target);
+  return detail::decide_cast(s, Vec3<F>(t - s), sp, true, seg.source == seg.target, value);
 }
 
 template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
-  check(ray, "ray");
-  check(sp, "sphere");
-  return detail::decide_cast(Vec3<F>(ray.source - sp.center), ray.direction, sp, false, false);
+  const bool value = hit(ray, sp);  // checks the inputs
+  return detail::decide_cast(Vec3<F>(ray.source - sp.center), ray.direction, sp, false, false, value);
 }
 
 }  // namespace cdref::robust
