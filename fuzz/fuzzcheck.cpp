@@ -85,6 +85,26 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
     if (!same_value(o.v[k], g.v[k])) violated(q, in, "the oracle's values differ from Gmpq's");
   const Answer oc = oracle_classify(q, in);
   if (oc.cls != g.cls || oc.pred != g.pred) violated(q, in, "the classification oracle differs from Gmpq");
+  // the robust versions: a classification they call certain is the exact one
+  for (const char* name : {"robust-double", "robust-long-double"}) {
+    const Answer r = implementation_by_name(name).run(q, in);  // double inputs are exact in long double
+    if (!r.certified) violated(q, in, "a robust version gave no certificate");
+    if (r.certain && r.cls != g.cls) violated(q, in, "a robust version is certain and wrong");
+  }
+  {
+    const Inputs fin = float_inputs(q, in);
+    bool finite = true;
+    for (std::size_t i = 0; i < info(q).inputs.size(); ++i) finite = finite && std::isfinite(fin[i]);
+    Answer gf;
+    if (finite && !refuses<CGAL::Gmpq>(q, fin, gf)) {
+      try {
+        const Answer r = implementation_by_name("robust-float").run(q, fin);
+        if (r.certain && r.cls != gf.cls) violated(q, fin, "robust float is certain and wrong");
+      } catch (const invalid_input&) {
+        // float refuses what underflows in float (a direction rounded to zero)
+      }
+    }
+  }
   if (q == Query::segment_sphere) {
     const Segment<CGAL::Gmpq> s{detail::v3<CGAL::Gmpq>(in, 0), detail::v3<CGAL::Gmpq>(in, 3)};
     const Sphere<CGAL::Gmpq> sp{detail::v3<CGAL::Gmpq>(in, 6), CGAL::Gmpq(in[9])};
