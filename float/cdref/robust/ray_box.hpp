@@ -23,8 +23,8 @@
 //     M >= 2^(emax-5) (so nothing below can overflow; exact unless some input is below
 //     2^(emin+p) times M). Otherwise the inputs are used as they are (M < 2^(emax-5): no sum
 //     below overflows). Every lambda is invariant under the scaling. If the scaling was
-//     inexact the outputs carry no bound and decide() reports uncertain when it needs a
-//     parameter.
+//     inexact the outputs carry no bound and the filter of step 5b is skipped (the
+//     classification does not depend on this scaling: step 5c scales on its own).
 //  3. Numerators as accurate pairs. For plane (i, +-): N = c_i - s_i +- eta_i. With
 //     (a, b) = two_sum(c_i, -s_i), (N1, e) = two_sum(a, +-eta_i), z = fl(b + e) and
 //     (Nh, Nl) = two_sum(N1, z): Nh + Nl - N = fl(b + e) - (b + e). Either a + -eta_i is
@@ -46,14 +46,69 @@
 //       |lambda^ - lambda| <= u (1 + 18u) |lambda| + 3 eta (1 + 1/|rh|)          (*)
 //     that is, in the normal range, at most 1/2 ulp + 36u ulp of lambda: lambda^ is the
 //     correctly rounded value or its neighbour, where the book's errs by u|s|/|N| ulps.
-//     (The ray's lambda, unbounded, may overflow; the bound is then void.)
-//  5. The decision. Every entering parameter is > 0 and <= 1 (segment), every exiting one
-//     >= 0 exactly (the outcodes say which side of each plane s and t lie), so the book's
-//     max(0, max_E) <= min(1, min_X) is max_E <= min_X (with min_X = 1 for a segment
-//     whose target is in the box, and E empty meaning enter = 0). enter^ = max over E and
-//     exit^ = min over X of lambda^ (clamped to [0, 1] for a segment, >= 0 for a ray, which
-//     can only bring them closer to the truth); ties between planes go to the first in the
-//     order x-, x+, y-, y+, z-, z+, as in the book.
+//     (The ray's lambda, unbounded, may overflow; the bound is then void.) Only the two
+//     parameters that are output, of the entering face and of the first exiting plane
+//     chosen in step 5, are computed this way, and only when asked for.
+//  5. The decision, exactly. Every entering parameter is > 0 and <= 1 (segment), every
+//     exiting one >= 0 and < 1 exactly (the outcodes say on which side of each plane s and
+//     t lie), so the book's max(0, max_E) <= min(1, min_X) is max_E <= min_X (E empty or,
+//     for a segment whose target is in the box, X empty: hit). The book's cast() takes
+//     the largest entering parameter with a strict > in the plane order x-, x+, y-, y+,
+//     z-, z+ (on exact ties the first plane wins), the smallest exiting one with a strict
+//     <, and hits iff enter <= exit (not strict; hit() decides the same). Here each of
+//     these at most 2 + 2 + 1 comparisons is made on the exact parameters, so the face,
+//     the exiting plane and the classification are the book's at an exact type.
+//     (a) Signs. lambda_p - lambda_q has the sign of (N_p D_q - N_q D_p) sgn(D_p) sgn(D_q),
+//     N_p = c_i - s_i +- eta_i, D_p = t_i - s_i (segment) or d_i (ray) on the axis i of p;
+//     D != 0 for every plane crossed (s and t lie strictly on opposite sides of it or on
+//     it, or the ray's d_i points through it).
+//     (b) The filter, on q0 = fl(Nh / rh) (step 3's pair; rh = fl(r)). Nh = N(1 + d1) with
+//     |d1| <= u + 6u^2 (|Nl| <= u|Nh| plus the 4u^2), rh = r(1 + d2), |d2| <= u (a sum:
+//     no underflow error), and the quotient rounds once: q0 = (Nh/rh)(1 + d3) + e3,
+//     |d3| <= u, |e3| <= eta. Hence |q0 - lambda| <= (3u + 11u^2)|lambda| + eta <=
+//     4u|lambda| + eta, and with |lambda| <= (|q0| + eta)/(1 - 4u),
+//       eps := |q0 - lambda| <= 4.01u |q0| + 0.51 eta'        (eta' = 2 eta, denorm_min).
+//     If |fl(q0_p - q0_q)| > B = fl(8u (|q0_p| + |q0_q|) + 4 eta'), its sign is that of
+//     lambda_p - lambda_q: the subtraction errs by u of its result, B by three roundings
+//     and at most eta where 8u(..) underflows, so |q0_p - q0_q| > B/(1 + u) >=
+//     7.9u(|q0_p| + |q0_q|) + 3.4 eta' > eps_p + eps_q. An infinite q0 (a ray's parameter
+//     overflowing) or a NaN difference never passes, nor does an exact tie (|q0_p - q0_q|
+//     <= eps_p + eps_q there). The filter needs the scaling of step 2 to be exact.
+//     (c) Otherwise the sign of N_p D_q - N_q D_p, exactly. In W = F, except W = double for
+//     F = float, the 12 inputs are multiplied by 2^sigma, sigma = K - ilogb(M) (M the
+//     largest input magnitude, K = floor((emax - 10)/2): 507 at double, 8187 at long
+//     double; at float no scaling is needed). Each N_p is then a nonoverlapping expansion
+//     of at most three components (Grow-Expansion with zero elimination over c_i, -s_i,
+//     +-eta_i; two_sum is exact barring overflow, also where results are subnormal), each
+//     D_i one of at most two; N_p D_q - N_q D_p is the sum of at most 2 x 3 x 2 products of
+//     components, each split by two_prod (hi = fl(ab), lo = fma(a, b, -hi)), the 24 parts
+//     summed by Grow-Expansion (Shewchuk 1997, Theorem 10: the result is a nonoverlapping
+//     expansion of the exact sum, whose sign is that of its largest component).
+//     Overflow: a nonoverlapping expansion's components sum in magnitude to at most
+//     (1 + 5u) times its value, so the 24 parts sum to at most 2 * (3 * 2^(K+1)) *
+//     (2 * 2^(K+1)) (1 + 12u) < 2^(2K+6), and every intermediate of Grow-Expansion stays
+//     below twice that, 2^(2K+7) <= 2^(emax-3). At float in double: below 2^262.
+//     Underflow: two_prod(a, b) is exact when lsb(a) + lsb(b) >= dexp (lsb the exponent of
+//     the lowest set bit, 2^dexp = eta' the smallest subnormal): ab is then a multiple of
+//     2^dexp with at most 2p significant bits, and ab - fl(ab), a multiple of 2^dexp below
+//     ulp(fl(ab))/2, has at most p bits, so the fma returns it exactly. Otherwise (counted,
+//     k products) ab has a bit below 2^dexp and at most 2p bits, so |ab| < 2^(dexp + 2p)
+//     = 2^(emin_normal + p + 1), |ab - fl(ab)| <= 2^emin_normal, and the fma rounds it to
+//     the subnormal grid: |hi + lo - ab| <= eta. The computed sum S' is then within
+//     k eta' of the true S: S > 0 if the expansion S' - k eta' is positive, S < 0 if
+//     S' + k eta' is negative (both signs exact), and otherwise the comparison is
+//     uncertain and follows q0.
+//     Where that can happen: the scaled inputs are multiples of 2^(lam + sigma), lam the
+//     exponent of the lowest set bit of any nonzero input, and so is every component
+//     (two_sum of multiples of g gives multiples of g); hence k = 0 whenever
+//     2 (lam + sigma) >= dexp, that is
+//       2 (mu - lam) <= 2K - dexp,   mu = ilogb(M),                                    (**)
+//     a span of up to 1044 binades at double and 16409 at long double, and then the scaling
+//     (down only when mu > K) is exact as well (lam + sigma >= dexp/2 > dexp). At float, in
+//     double, inputs have lsb >= -149 and products >= -298 > dexp = -1074: never.
+//     (Step 2's scaling plays no part here, nor does its exactness.)
+//     Cost: the filter settles everything but near-ties (at F's resolution) and exact
+//     ties; the exact step is a few hundred flops, built once per query when first needed.
 //  6. Outputs. lambda_enter, lambda_exit: (*). The entry point: on the entering axis i the
 //     book's point lies on the face plane by construction, s_i + lambda (t_i - s_i) =
 //     c_i +- eta_i exactly, so it is fl(c_i +- eta_i), correctly rounded (0 ulps). On the
@@ -68,27 +123,22 @@
 //     source (when it is in the box: enters = false, lambda_enter = 0) is returned exactly.
 //     The normal is the book's unit vector of the entering face.
 //
-// decide(): the book hits iff lambda_p <= lambda_q for every entering plane p and exiting
-// plane q (step 5). A pair on one axis is ordered by geometry (h_i >= 0: the lower plane
-// comes first along r), so only pairs on different axes need the parameters. From (*),
-// |lambda^ - lambda| <= beta = (kappa |lambda^| + alpha) / (1 - kappa), kappa = u(1 + 18u),
-// alpha = 3 eta (1 + 1/r_min) (r_min the smallest |rh| of the planes crossed). A pair is
-// decided when fl(lambda^_q - lambda^_p) exceeds, in absolute value,
-//   B = fl(4u (lambda^_p + lambda^_q) + 16 eta' (2 + 1/r_min)),   eta' the smallest subnormal:
-// B is at least twice beta_p + beta_q, which absorbs the rounding of B and of the
-// difference (a few u relative). certain == true iff the outcodes decide (shared bit: miss;
-// no entering plane, or no exiting plane of a segment: hit), or the answer is hit and every
-// pair on different axes is decided, or it is miss and one pair is decided the other way;
-// the answer is then the book's at an exact type on the same inputs. B is infinite
-// (uncertain) where 1/r_min or the parameters overflow; exact ties between axes (through
-// an edge or a corner) are uncertain by design, as is everything after an inexact scaling.
+// decide(): value = the classification above; certain == false iff some comparison of
+// step 5 was left uncertain by (c), which (**) excludes: outside that (inputs mixing, at
+// double, magnitudes near 2^-1000 with ones near 2^+50) only where S is within k eta' of
+// 0 or the scaling of (c) was inexact. certain == true promises that robust::hit and
+// cast().hit equal book::hit at an exact type on the same inputs, ties included.
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <optional>
+#include <type_traits>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -150,9 +200,15 @@ Scaled<F> scaled(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& b, bool 
   Scaled<F> L;
   const int e = m > F(0) ? std::ilogb(m) : 0;
   if (e < 0 || e >= std::numeric_limits<F>::max_exponent - 6) L.scale = e;
+  // Multiplying by 2^-scale rounds exactly as ldexp does; where 2^-scale is not a normal
+  // number, ldexp itself. Scaling up (scale < 0) is exact (the result stays below 2).
+  const int k = -L.scale;
+  const bool by_mul = k >= std::numeric_limits<F>::min_exponent && k < std::numeric_limits<F>::max_exponent - 1;
+  const F f = by_mul ? std::ldexp(F(1), k) : F(1), inv = by_mul ? std::ldexp(F(1), -k) : F(1);
   auto sc = [&](F x) {
-    const F y = std::ldexp(x, -L.scale);
-    if (std::ldexp(y, L.scale) != x) L.exact = false;
+    if (L.scale == 0) return x;
+    const F y = by_mul ? F(x * f) : std::ldexp(x, k);
+    if (k < 0 && (by_mul ? F(y * inv) : std::ldexp(y, -k)) != x) L.exact = false;
     return y;
   };
   for (int i = 0; i < 3; ++i) {
@@ -201,6 +257,117 @@ F point_coordinate(F s, F t_or_d, F lambda, bool bounded) {
   return std::ldexp(F(x1 + x2), e);
 }
 
+// ---- Step 5: exact comparison of two parameters (see the header) ----
+
+// The type the exact comparison is carried out in: float's expansions are held in double,
+// where every product of two components is exact and nothing over- or underflows.
+template <class F>
+using Wide = std::conditional_t<std::is_same_v<F, float>, double, F>;
+
+// A nonoverlapping expansion (Shewchuk 1997), components in increasing magnitude, zeros
+// eliminated: its value is the exact sum, its sign that of its last component.
+template <class W, int Cap>
+struct Expansion {
+  W c[Cap];
+  int lsb[Cap];  // exponent of the lowest set bit of each component (filled by with_lsb())
+  int n = 0;
+  // Grow-Expansion: adds b exactly (Shewchuk's Theorem 10; in place, as m <= i).
+  void grow(W b) {
+    int m = 0;
+    W q = b;
+    for (int i = 0; i < n; ++i) {
+      const Pair<W> s = two_sum(q, c[i]);
+      q = s.hi;
+      if (s.lo != W(0)) c[m++] = s.lo;
+    }
+    if (q != W(0)) c[m++] = q;
+    n = m;
+  }
+  int sign() const { return n == 0 ? 0 : (c[n - 1] > W(0) ? 1 : -1); }
+  void with_lsb() {
+    for (int i = 0; i < n; ++i) {
+      int e = 0;
+      const W f = std::frexp(std::fabs(c[i]), &e);  // c = f 2^e, f in [1/2, 1)
+      constexpr int p = std::numeric_limits<W>::digits;
+      const auto q = static_cast<std::uint64_t>(std::ldexp(f, p));  // an integer below 2^p, exactly
+      lsb[i] = e - p + std::countr_zero(q);
+    }
+  }
+};
+
+// The exact data of step 5 in W: numerators N (per plane) and denominators D (per axis),
+// scaled by 2^sigma so that the largest input lies in [2^K, 2^(K+1)).
+template <class F>
+struct ExactData {
+  using W = Wide<F>;
+  Expansion<W, 4> N[6];
+  Expansion<W, 4> D[3];
+  bool exact = true;  // the scaling was exact
+
+  ExactData(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& b, bool bounded) {
+    W v[4][3];
+    W m(0);
+    for (int i = 0; i < 3; ++i) {
+      v[0][i] = W(s[i]), v[1][i] = W(t_or_d[i]), v[2][i] = W(b.center[i]), v[3][i] = W(b.extent[i]);
+      for (int k = 0; k < 4; ++k) m = std::max(m, W(std::fabs(v[k][i])));
+    }
+    if constexpr (std::is_same_v<W, F>) {
+      constexpr int K = (std::numeric_limits<W>::max_exponent - 10) / 2;
+      if (m > W(0)) {
+        const int sigma = K - std::ilogb(m);
+        for (auto& row : v)
+          for (W& x : row) {
+            const W y = std::ldexp(x, sigma);
+            if (sigma < 0 && std::ldexp(y, -sigma) != x) exact = false;
+            x = y;
+          }
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      D[i].grow(v[1][i]);
+      if (bounded) D[i].grow(-v[0][i]);
+      D[i].with_lsb();
+      for (int side = 0; side < 2; ++side) {
+        Expansion<W, 4>& n = N[2 * i + side];
+        n.grow(v[2][i]);
+        n.grow(-v[0][i]);
+        n.grow(side == 0 ? W(-v[3][i]) : v[3][i]);
+        n.with_lsb();
+      }
+    }
+  }
+
+  // sign(lambda_p - lambda_q) = sign(N_p D_q - N_q D_p) sign(D_p) sign(D_q), or 2 where it
+  // cannot be certified (an inexact scaling, or products below the underflow threshold
+  // whose error could change the sign).
+  int compare(int p, int q) const {
+    if (!exact) return 2;
+    constexpr int dexp = std::numeric_limits<W>::min_exponent - std::numeric_limits<W>::digits;  // denorm_min
+    Expansion<W, 26> S;
+    int inexact = 0;
+    auto add = [&](const Expansion<W, 4>& a, const Expansion<W, 4>& d, bool neg) {
+      for (int i = 0; i < a.n; ++i)
+        for (int j = 0; j < d.n; ++j) {
+          const Pair<W> pr = two_prod(a.c[i], d.c[j]);
+          if (a.lsb[i] + d.lsb[j] < dexp) ++inexact;
+          S.grow(neg ? W(-pr.lo) : pr.lo);
+          S.grow(neg ? W(-pr.hi) : pr.hi);
+        }
+    };
+    add(N[p], D[q / 2], false);
+    add(N[q], D[p / 2], true);
+    const int sd = D[p / 2].sign() * D[q / 2].sign();
+    if (inexact == 0) return S.sign() * sd;
+    const W margin = W(inexact) * std::numeric_limits<W>::denorm_min();
+    Expansion<W, 26> up = S, down = S;
+    up.grow(-margin);
+    down.grow(margin);
+    if (up.sign() > 0) return sd;
+    if (down.sign() < 0) return -sd;
+    return 2;
+  }
+};
+
 template <class F>
 struct Eval {
   Cast<F> cast;
@@ -217,57 +384,62 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
     return out;
   }
   const Scaled<F> L = scaled(s, t_or_d, box, bounded);
-  F enter(0), exit(1);
-  bool has_exit = bounded, exit_from_plane = false;
-  int face = -1;
-  F r_min = std::numeric_limits<F>::infinity();
-  F lam[6];
+  // Step 5a: the quick parameters q0 = fl(Nh / rh) of every plane crossed.
+  Pair<F> num[6];
+  F q0[6];
+  for (int plane = 0; plane < 6; ++plane) {
+    if (!((bs | bt) & (1u << plane))) continue;
+    num[plane] = numerator(L, plane);
+    q0[plane] = num[plane].hi / L.r[plane / 2].hi;
+  }
+  // Step 5b: sign(lambda_p - lambda_q), by the filter on q0, else exactly.
+  const F eight_u = std::numeric_limits<F>::epsilon() * F(4);
+  const F abs_term = F(4) * std::numeric_limits<F>::denorm_min();
+  std::optional<ExactData<F>> exact;  // built on the first comparison the filter leaves open
+  bool certain = true;
+  auto compare = [&](int p, int q) {
+    if (L.exact) {
+      const F diff = q0[p] - q0[q];
+      const F bound = eight_u * (std::fabs(q0[p]) + std::fabs(q0[q])) + abs_term;
+      if (diff > bound) return 1;
+      if (-diff > bound) return -1;
+    }
+    if (!exact) exact.emplace(s, t_or_d, box, bounded);
+    const int c = exact->compare(p, q);
+    if (c != 2) return c;
+    certain = false;  // fall back on the quick parameters
+    return q0[p] > q0[q] ? 1 : (q0[p] < q0[q] ? -1 : 0);
+  };
+  int face = -1, xplane = -1;
   for (int plane = 0; plane < 6; ++plane) {
     const unsigned bit = 1u << plane;
-    if (!((bs | bt) & bit)) continue;
-    const Pair<F>& r = L.r[plane / 2];
-    // Step 5: the exact parameters lie in [0, 1] (segment) or [0, inf) (ray).
-    const F q = quotient(numerator(L, plane), r);
-    lam[plane] = bounded ? std::clamp(q, F(0), F(1)) : std::max(q, F(0));
-    r_min = std::min(r_min, std::fabs(r.hi));
-    if (bs & bit) {
-      if (face < 0 || lam[plane] > enter) enter = lam[plane], face = plane;
-    } else if (!has_exit || !exit_from_plane || lam[plane] < exit) {
-      exit = lam[plane], has_exit = true, exit_from_plane = true;
+    if (bs & bit) {  // entering: the largest, the first in plane order on ties
+      if (face < 0 || compare(plane, face) > 0) face = plane;
+    } else if (bt & bit) {  // exiting: the smallest
+      if (xplane < 0 || compare(plane, xplane) < 0) xplane = plane;
     }
   }
-  const bool hit = !has_exit || enter <= exit;
-
-  // decide(): pairs (entering p, exiting q) on different axes, compared with the margin
-  // B; a pair on one axis is ordered by geometry (lower before upper along r).
-  out.decision.value = hit;
-  if (face < 0 || !exit_from_plane) {
-    out.decision.certain = true;
-  } else if (L.exact) {
-    const F four_u = std::numeric_limits<F>::epsilon() * F(2);
-    const F abs_term = F(16) * std::numeric_limits<F>::denorm_min() * (F(2) + F(1) / r_min);
-    bool all_below = true, some_above = false;
-    for (int p = 0; p < 6; ++p) {
-      if (!(bs & (1u << p))) continue;
-      for (int q = 0; q < 6; ++q) {
-        if (!(bt & (1u << q)) || p / 2 == q / 2) continue;
-        const F bound = four_u * (lam[p] + lam[q]) + abs_term;
-        const F diff = lam[q] - lam[p];
-        if (!(diff > bound)) all_below = false;
-        if (-diff > bound) some_above = true;
-      }
-    }
-    out.decision.certain = hit ? all_below : some_above;
-  }
+  const bool hit = face < 0 || xplane < 0 || compare(face, xplane) <= 0;
+  out.decision = {hit, certain};
   if (!hit) return out;
 
   // Step 6: outputs.
   Cast<F>& res = out.cast;
   res.hit = true;
   res.enters = face >= 0;
-  res.unbounded_exit = !has_exit;
+  res.unbounded_exit = !bounded && xplane < 0;
+  const auto accurate = [&](int plane) {
+    const F q = quotient(num[plane], L.r[plane / 2]);
+    return bounded ? std::clamp(q, F(0), F(1)) : std::max(q, F(0));
+  };
+  const F enter = face >= 0 && (w & (want_lambda_enter | want_point)) ? accurate(face) : F(0);
   if (w & want_lambda_enter) res.lambda_enter = enter;
-  if ((w & want_lambda_exit) && has_exit) res.lambda_exit = exit;
+  if (w & want_lambda_exit) {
+    if (xplane >= 0)
+      res.lambda_exit = accurate(xplane);
+    else if (bounded)
+      res.lambda_exit = F(1);
+  }
   if (w & want_point) {
     if (face < 0) {
       res.point = s;
