@@ -77,7 +77,8 @@
 // and tangent-at-range, segment and ray): lambda_enter is correctly rounded in every case
 // at float and double (0 ulps; the test suite: at most 0.5 ulps), lambda_exit within 1 ulp.
 //
-// Certificates (decide(), decision.hpp). Every decisive sign is taken from a value q^ with
+// Certificates (decide(), decision.hpp). dot2_cert (used by sphere_sphere.hpp, sphere_box.hpp,
+// segment_sphere.hpp): a decisive sign is taken from a value q^ with
 // a computed bound E, |q^ - q| <= E, and is certain iff |q^| > E. For dot2 over N terms
 // (eft.hpp) with S = sum |x_i y_i|: |q^ - q| <= u|q| + gamma_N^2 S, hence (solving for |q|)
 // |q^ - q| <= (u|q^| + gamma_N^2 S)/(1 - u). dot2_cert() returns
@@ -90,35 +91,43 @@
 // where `extra` counts the caller's own absolute errors in units of eta (for instance the
 // low parts of expansions scaled into the subnormal range).
 //
-// decide(Segment or Ray, Sphere): the cast's classification (value == hit()) and whether
-// the book's exact answer is certainly the same. The certificate does not depend on how
-// the cast computes: it bounds the exact D, b, c, a + b, a + 2b + c from a separate, cheaper
-// single-word evaluation (s = fl(source - c), r = fl(fl(t - c) - s), l_i = fma(-b/a, r_i, s_i),
-// the formulation before the double-words) and its derived bound below, and calls the
-// answer certain when the signs it certifies decide the book's formula and agree with the
-// cast's own value. (It is conservative: the double-word cast is right on many cases this
-// bound leaves uncertain, near tangency and at range.) The book decides (Algorithm 3.1 at an exact
-// type, a = |r|^2, b = s.r, c = |s|^2 - rho^2, sigma = b^2 - a c = a D):
+// decide(Segment or Ray, Sphere): the cast's classification (value == hit(): both run the
+// same steps 0-4) and whether the book's exact answer is certainly the same. The book decides
+// (Algorithm 3.1 at an exact type, a = |r|^2, b = s.r, c = |s|^2 - rho^2, sigma = b^2 - a c
+// = a D; its own equivalences for the roots against 0 and 1, book/ray_sphere.hpp):
 //   hit <=> D >= 0 and (b <= 0 or c <= 0) [lambda_2 >= 0] and, for a segment,
-//           (a + b >= 0 or a + 2b + c <= 0) [lambda_1 <= 1];  a = 0: hit <=> c <= 0.
-// Each of D, b, c, a + b, a + 2b + c is known from the formulation's computed value within a
-// bound, in the scaled units (max |s_i|, |r_i|, rho in [1,2)), with ns, nr upper bounds of
-// |s|, |r| (1-norms, inflated) and rmin = max |r_i| <= |r|:
-//   - the inputs: s = fl(source - c) is off by at most u|s|, r = fl(fl(t - c) - s) by at most
-//     u(|s| + |t| + |r|) <= 2u(|s| + |r|) (0 for a ray): dS, dR. Then |b - b*| <= dS nr +
-//     ns dR + dS dR, |a - a*| <= 2 nr dR + dR^2, |c - c*| <= 2 ns dS + dS^2, and the distance
-//     d of the centre to the line moves by at most E_in = dS + (ns + dS) dR / (rmin - dR)
-//     (d(p, r*) <= |p - lambda r*| <= d(p, r) + |lambda| |dR| at the foot lambda of r, with
-//     |lambda| <= |p| / |r|), so |d^2 - d*^2| <= E_in (2 nl + E_in), nl >= |l|;
-//   - the arithmetic: a, b, c by dot2_cert; f = b/a is within df = 3.1 u ns/rmin of b/a
-//     (b and a each within ~u ns nr and u a, one division), and the point s - f r of the line
-//     lies a (f - b/a)^2 <= (nr df)^2 farther (squared) from the centre than the foot; the
-//     fma rounding of l costs (2u + u^2)|l|^2; dot2_cert bounds D's last step.
-// All these are added and doubled (covering the rounding of the bound). A sign is known
-// where the value is farther from 0 than its bound; the truth is known when the known signs
-// decide the formula above, and certain = known and equal to the computed value.
-// (Scaling: s, r, rho are scaled exactly unless a component falls 2^(emin) below the
-// largest; an absolute 16 eta per input covers that.)
+//           (a + b >= 0 or a + 2b + c <= 0) [lambda_1 <= 1, a + 2b + c = |t|^2 - rho^2];
+//   r = 0: hit <=> c <= 0.
+// Each decisive sign is read from the double-word value the cast computes, with the bound of
+// item A on its error (scaled units; S2, R2, rho2, L2 computed upper bounds of |s|^2, |r|^2,
+// rho^2 and |l^|^2 from the high parts, x (1 + 8u); ns, nr, nl their square roots, x (1 + 2u)):
+//   c:  err_c = 55 u^2 (S2 + rho2) + 32 E                (0 when s = 0 and rho = 0: c = 0 exactly)
+//   b:  err_b = 51 u^2 ns nr + 32 E
+//   a:  err_a = 52 u^2 R2 + 32 E; a >= a_lo = a^(1 - 4u) - err_a, required > 0
+//   D:  err_D = 56 u^2 (rho2 + L2) + 2 (nl + e) e + e^2 + delta^2 R2 + 64 E,
+//       e = 33 u^2 ns (the foot's rounding), delta = err_b / a_lo + 60 u^2 |f^| (the quotient's),
+//       D^'s own sum being off by at most 55.5 u^2 (rho^2 + |l^|^2) (item A, for any |l|: its
+//       lows total at most 6u (rho^2 + |l^|^2)) and |l'|^2 = |l|^2 + delta^2 a, |l'| <= |l^| + e;
+//   a + b, a + 2b + c: an exact two_sum chain of the high parts (2b exact), the lows summed in
+//       F: err_a + err_b + 6 u^2 (|a^| + |b^|) + u |v^| and err_a + 2 err_b + err_c +
+//       14 u^2 (|a^| + 2|b^| + |c^|) + u |v^| (v^ the computed sum; its final rounding keeps
+//       its sign, the u |v^| covers reading the bound against v^).
+// A sign is known where the high part exceeds twice its bound (the factor 2 covers the
+// rounding of the bound, (1 + u)^k for its few dozen operations, and hi against hi + lo: a
+// normalized pair has the sign of its high part and |hi + lo| >= (1 - u)|hi|). The truth is
+// known when the known signs decide the formula above; certain = known and equal to the
+// cast's value. Near tangency the uncertain band is |D| <~ 2 u^2 (112 rho^2 + 66 rho |s|):
+// u^2 wide, where a single-word evaluation of D would leave a band u wide.
+// Measured (cdref campaign, seed 3, 1000 cases per cell, float, double, long double):
+// uncertain only on degenerate draws (exact zeros: 13-15% of them at double and long double,
+// 2-3% at float) and on at most 1 of the 13000 draws per query of the long-range and
+// tangent-at-range families at float; certain
+// but wrong never.
+// Preconditions (otherwise uncertain): the scaling exact (every scaled hi and lo zero or
+// normal, so E only covers products below the normal range); for r = 0 after scaling, the
+// input r exactly 0. What stays uncertain: exact zeros of a decisive quantity (a source
+// exactly on the sphere pointing outward, c = 0; a line exactly through a point sphere,
+// D = 0), which no bound decides.
 #pragma once
 
 #include <algorithm>
@@ -134,26 +143,6 @@
 namespace cdref::robust {
 
 namespace detail {
-
-template <class F>
-struct Local {
-  F s[3], r[3], rho;
-  int scale;  // inputs were multiplied by 2^-scale
-};
-
-template <class F>
-Local<F> scaled(const Vec3<F>& s, const Vec3<F>& r, F rho) {
-  F m = rho;
-  for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(s[i]), std::fabs(r[i])});
-  Local<F> L{};
-  L.scale = m > F(0) ? std::ilogb(m) : 0;
-  for (int i = 0; i < 3; ++i) {
-    L.s[i] = std::ldexp(s[i], -L.scale);
-    L.r[i] = std::ldexp(r[i], -L.scale);
-  }
-  L.rho = std::ldexp(rho, -L.scale);
-  return L;
-}
 
 // x 2^-e for every value of one query: one multiplication by 2^-e when that power is a
 // normal number (exact unless the product is subnormal), ldexp otherwise.
@@ -212,32 +201,41 @@ Pair<F> c_dw(const LocalDW<F>& L) {
   return two_sum(h3.hi, lo);
 }
 
-// The roots of a l^2 + 2 b l + c, a > 0, from the scaled inputs, each with one final rounding.
+// The double-word quantities of steps 2-3 (header): a = |r|^2, b = s.r, f = b/a, the foot
+// l = s - f r (its high parts kept for the certificate) and D = rho^2 - |l|^2.
 template <class F>
-Roots<F> roots(const LocalDW<F>& L, const Pair<F>& c) {
+struct Quantities {
+  Pair<F> a, b, f, D;
+  F lh[3];
+};
+
+template <class F>
+Quantities<F> quantities(const LocalDW<F>& L) {
   const auto& s = L.s;
   const auto& r = L.r;
+  Quantities<F> Q;
   // a = |r|^2 (no cancellation)
   const Pair<F> a0 = two_prod_split(r[0].hi, r[0].hi), a1 = two_prod_split(r[1].hi, r[1].hi),
                 a2 = two_prod_split(r[2].hi, r[2].hi);
   const Pair<F> ah1 = two_sum(a0.hi, a1.hi), ah2 = two_sum(ah1.hi, a2.hi);
   const F ax = r[0].hi * r[0].lo + r[1].hi * r[1].lo + r[2].hi * r[2].lo;
-  const Pair<F> a = fast_two_sum(ah2.hi, F(F(F(a0.lo + a1.lo) + F(a2.lo + ah1.lo)) + F(ah2.lo + F(2) * ax)));
+  Q.a = fast_two_sum(ah2.hi, F(F(F(a0.lo + a1.lo) + F(a2.lo + ah1.lo)) + F(ah2.lo + F(2) * ax)));
   // b = s.r
   const Pair<F> b0 = two_prod_split(s[0].hi, r[0].hi), b1 = two_prod_split(s[1].hi, r[1].hi),
                 b2 = two_prod_split(s[2].hi, r[2].hi);
   const Pair<F> bh1 = two_sum(b0.hi, b1.hi), bh2 = two_sum(bh1.hi, b2.hi);
   const F bx = F(F(s[0].hi * r[0].lo + s[0].lo * r[0].hi) + F(s[1].hi * r[1].lo + s[1].lo * r[1].hi)) +
                F(s[2].hi * r[2].lo + s[2].lo * r[2].hi);
-  const Pair<F> b = two_sum(bh2.hi, F(F(F(b0.lo + b1.lo) + F(b2.lo + bh1.lo)) + F(bh2.lo + bx)));
+  Q.b = two_sum(bh2.hi, F(F(F(b0.lo + b1.lo) + F(b2.lo + bh1.lo)) + F(bh2.lo + bx)));
   // the foot of the perpendicular, l = s - f r, f = b / a, each l_i a double-word
-  const Pair<F> f = div_pair(b, a);
+  Q.f = div_pair(Q.b, Q.a);
   Pair<F> l[3];
   for (int i = 0; i < 3; ++i) {
-    const Pair<F> P = two_prod_split(f.hi, r[i].hi);
+    const Pair<F> P = two_prod_split(Q.f.hi, r[i].hi);
     const Pair<F> T = two_sum(s[i].hi, F(-P.hi));
-    const F lo = F(F(T.lo + s[i].lo) - P.lo) - F(f.hi * r[i].lo + f.lo * r[i].hi);
+    const F lo = F(F(T.lo + s[i].lo) - P.lo) - F(Q.f.hi * r[i].lo + Q.f.lo * r[i].hi);
     l[i] = two_sum(T.hi, lo);
+    Q.lh[i] = l[i].hi;
   }
   // D = rho^2 - |l|^2
   const Pair<F> pr = two_prod_split(L.rho, L.rho), q0 = two_prod_split(l[0].hi, l[0].hi),
@@ -245,7 +243,17 @@ Roots<F> roots(const LocalDW<F>& L, const Pair<F>& c) {
   const Pair<F> dh1 = two_sum(pr.hi, F(-q0.hi)), dh2 = two_sum(dh1.hi, F(-q1.hi)), dh3 = two_sum(dh2.hi, F(-q2.hi));
   const F dx = l[0].hi * l[0].lo + l[1].hi * l[1].lo + l[2].hi * l[2].lo;
   const F dlo = F(F(pr.lo - q0.lo) - F(q1.lo + q2.lo)) + F(F(dh1.lo + dh2.lo) + dh3.lo) - F(2) * dx;
-  const Pair<F> D = two_sum(dh3.hi, dlo);
+  Q.D = two_sum(dh3.hi, dlo);
+  return Q;
+}
+
+// The roots of a l^2 + 2 b l + c, a > 0, from the double-word quantities, each with one
+// final rounding (step 4).
+template <class F>
+Roots<F> roots(const Quantities<F>& Q, const Pair<F>& c) {
+  const Pair<F>& a = Q.a;
+  const Pair<F>& b = Q.b;
+  const Pair<F>& D = Q.D;
   Roots<F> out;
   if (!(D.hi >= F(0))) return out;
   out.line_hits = true;
@@ -266,7 +274,42 @@ Roots<F> roots(const LocalDW<F>& L, const Pair<F>& c) {
   return out;
 }
 
+// Everything the classification needs, kept for decide() (cast_local() runs the same steps
+// and keeps only what its outputs need). hit is the cast's classification.
+template <class F>
+struct Analysis {
+  LocalDW<F> L;
+  bool zero = false;  // r = 0 exactly (a zero-length segment)
+  Pair<F> c{};
+  Quantities<F> Q{};
+  Roots<F> R;
+  bool hit = false;
+};
+
+// The cast's classification from its roots (a nonzero direction).
+template <class F>
+bool in_range(const Roots<F>& R, bool bounded) {
+  return R.line_hits && (!bounded || R.lambda1 <= F(1)) && R.lambda2 >= F(0);
+}
+
 // s = source - centre (pairs), r = the direction (pairs; exact: target - source for a segment)
+template <class F>
+Analysis<F> analyse(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho, bool bounded) {
+  Analysis<F> A;
+  A.L = scaled_dw(s, r, rho);
+  A.zero = A.L.r[0].hi == F(0) && A.L.r[1].hi == F(0) && A.L.r[2].hi == F(0);
+  A.c = c_dw(A.L);
+  if (A.zero) {  // a zero-length segment: a point test, as in the book
+    A.hit = A.c.hi <= F(0);
+    return A;
+  }
+  A.Q = quantities(A.L);
+  A.R = roots(A.Q, A.c);
+  A.hit = in_range(A.R, bounded);
+  return A;
+}
+
+// The same steps as analyse(), with nothing kept that the outputs do not need.
 template <class F>
 Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded, unsigned w) {
   Cast<F> res;
@@ -280,9 +323,9 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
       for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
     return res;
   }
-  const Roots<F> R = roots(L, c);
-  if (!R.line_hits || (bounded && !(R.lambda1 <= F(1))) || !(R.lambda2 >= F(0))) return res;
-  res.hit = true;
+  const Roots<F> R = roots(quantities(L), c);
+  res.hit = in_range(R, bounded);
+  if (!res.hit) return res;
   res.enters = R.lambda1 >= F(0);
   res.lambda_enter = res.enters ? R.lambda1 : F(0);
   if (w & want_lambda_exit) res.lambda_exit = bounded ? std::min(R.lambda2, F(1)) : R.lambda2;
@@ -368,63 +411,80 @@ F scale_down(F x, int e, bool& exact) {
   return y;
 }
 
+// A sum of double-words with its sign bound: v = the F sum of the terms' high parts (an
+// exact two_sum chain) and of their low parts and the chain's errors. err: the terms' own
+// errors (summed by the caller), the F sum of the lows (n_lo terms of total at most
+// 2u sum |hi|: gamma_{n_lo} of it) and the final rounding u |v|.
 template <class F>
-Decision decide_cast(const Vec3<F>& s, const Vec3<F>& r, const Sphere<F>& sp, bool bounded, bool zero_exact,
-                     bool value) {
-  Decision out;
-  out.value = value;
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(s[i]) || !std::isfinite(r[i])) return out;  // fl(source - c) overflowed
-  const Local<F> L = scaled(s, r, sp.radius);
+Bounded<F> sum_bounded(const Pair<F>& x, const Pair<F>& y, F err) {
   const F u = unit_roundoff<F>();
-  const F eta = std::numeric_limits<F>::denorm_min();
-  const bool zero = L.r[0] == F(0) && L.r[1] == F(0) && L.r[2] == F(0);
-  F ns = 0, nr = 0, rmin = 0;
+  const Pair<F> h = two_sum(x.hi, y.hi);
+  const F v = h.hi + F(F(h.lo + x.lo) + y.lo);
+  return {v, F(err + F(F(6) * u * u * F(std::fabs(x.hi) + std::fabs(y.hi)) + u * std::fabs(v)))};
+}
+template <class F>
+Bounded<F> sum_bounded(const Pair<F>& x, const Pair<F>& y, const Pair<F>& z, F err) {
+  const F u = unit_roundoff<F>();
+  const Pair<F> h1 = two_sum(x.hi, y.hi), h2 = two_sum(h1.hi, z.hi);
+  const F v = h2.hi + F(F(F(h1.lo + h2.lo) + F(x.lo + y.lo)) + z.lo);
+  return {v, F(err + F(F(14) * u * u * F(F(std::fabs(x.hi) + std::fabs(y.hi)) + std::fabs(z.hi)) + u * std::fabs(v)))};
+}
+
+// The certificate of the header ("Certificates"), from the cast's own double-word
+// quantities. s, r: the exact pairs cast() starts from.
+template <class F>
+Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded) {
+  using std::fabs;
+  Decision out;
+  const Analysis<F> A = analyse(s, r, sp.radius, bounded);
+  out.value = A.hit;
+  const F u = unit_roundoff<F>();
+  const F E = std::numeric_limits<F>::denorm_min();
+  const F tiny = std::numeric_limits<F>::min();
+  const LocalDW<F>& L = A.L;
+  // the scaling must have been exact: every scaled value zero or normal (and finite)
+  auto ok = [tiny](F x) { return x == F(0) || (std::isfinite(x) && fabs(x) >= tiny); };
+  if (!ok(L.rho)) return out;
+  bool r_zero = true;
   for (int i = 0; i < 3; ++i) {
-    ns += std::fabs(L.s[i]);
-    nr += std::fabs(L.r[i]);
-    rmin = std::max(rmin, std::fabs(L.r[i]));
+    if (!ok(L.s[i].hi) || !ok(L.s[i].lo) || !ok(L.r[i].hi) || !ok(L.r[i].lo)) return out;
+    r_zero = r_zero && r[i].hi == F(0);
   }
-  ns = ns * F(1 + 4 * u) + F(16) * eta;
-  nr = nr * F(1 + 4 * u) + F(16) * eta;
-  const F dS = F(1.01) * u * ns + F(16) * eta;
-  const F dR = bounded ? F(2.02) * u * (ns + nr) + F(16) * eta : F(0);
-  const Bounded<F> c0 = dot2_cert({L.s[0], L.s[1], L.s[2], L.rho}, {L.s[0], L.s[1], L.s[2], F(-L.rho)});
-  const Bounded<F> c{c0.value, F(2) * (c0.err + F(2) * ns * dS + dS * dS)};
-  if (zero) {
-    if (!zero_exact) return out;  // r rounded to 0 but the exact r is not
-    const Tri t = le0(c);
+  // upper bounds of |s|^2, rho^2 (scaled; |s_i| <= (1 + u) |sh_i|)
+  const F S2 = F(L.s[0].hi * L.s[0].hi + L.s[1].hi * L.s[1].hi + L.s[2].hi * L.s[2].hi) * F(1 + 8 * u);
+  const F rho2 = F(L.rho * L.rho) * F(1 + 2 * u);
+  const F g = F(2);  // safety factor: the rounding of the bounds themselves, hi against hi + lo
+  // c = 0 exactly when s = 0 and rho = 0 (every term of its sum is 0)
+  const bool c_exact = S2 == F(0) && L.rho == F(0);
+  const Bounded<F> c{A.c.hi, c_exact ? F(0) : g * F(F(55) * u * u * F(S2 + rho2) + F(32) * E)};
+  if (A.zero) {
+    if (!r_zero) return out;  // r underflowed in the scaling, the exact r is not 0
+    const Tri t = c_exact ? Tri::yes : le0(c);
     out.certain = t != Tri::unknown && (t == Tri::yes) == out.value;
     return out;
   }
-  if (!(rmin > F(2) * dR)) return out;  // the direction itself is not known well enough
-  const Bounded<F> a0 = dot2_cert(L.r, L.r);
-  const Bounded<F> b0 = dot2_cert(L.s, L.r);
-  const Bounded<F> a{a0.value, F(2) * (a0.err + F(2) * nr * dR + dR * dR)};
-  const Bounded<F> b{b0.value, F(2) * (b0.err + dS * nr + ns * dR + dS * dR)};
-  // D exactly as roots() computes it
-  const F f = b.value / a.value;
-  const F l[3] = {std::fma(-f, L.r[0], L.s[0]), std::fma(-f, L.r[1], L.s[1]), std::fma(-f, L.r[2], L.s[2])};
-  const Bounded<F> D0 = dot2_cert({L.rho, l[0], l[1], l[2]}, {L.rho, F(-l[0]), F(-l[1]), F(-l[2])});
-  const F df = F(3.1) * u * ns / rmin;
-  F nl = 0, ll = 0;
-  for (int i = 0; i < 3; ++i) {
-    nl += std::fabs(l[i]);
-    ll += l[i] * l[i];
-  }
-  nl = nl * F(1 + 4 * u) + nr * df;
-  const F e_in = dS + (ns + dS) * dR / (rmin - dR);
-  const F e_D = D0.err + F(2.01) * u * ll + (nr * df) * (nr * df) + e_in * (F(2) * nl + e_in) + F(16) * eta;
-  const Bounded<F> D{D0.value, F(2) * e_D};
+  const Quantities<F>& Q = A.Q;
+  const F R2 = F(Q.a.hi * F(1 + 8 * u)) + F(64) * E;
+  const F ns = std::sqrt(S2) * F(1 + 2 * u), nr = std::sqrt(R2) * F(1 + 2 * u);
+  const F err_a = F(52) * u * u * R2 + F(32) * E;
+  const F err_b = F(51) * u * u * F(ns * nr) + F(32) * E;
+  const F a_lo = Q.a.hi * F(1 - 4 * u) - err_a;  // a lower bound of a
+  if (!(a_lo > F(0))) return out;
+  // D: its own sum, the foot's rounding e and the quotient's error delta (header)
+  const F L2 = F(Q.lh[0] * Q.lh[0] + Q.lh[1] * Q.lh[1] + Q.lh[2] * Q.lh[2]) * F(1 + 8 * u);
+  const F nl = std::sqrt(L2) * F(1 + 2 * u);
+  const F e = F(33) * u * u * ns;
+  const F delta = err_b / a_lo + F(60) * u * u * F(fabs(Q.f.hi) * F(1 + 4 * u));
+  const F err_D = F(F(F(56) * u * u * F(rho2 + L2) + F(2) * F(nl + e) * e) + F(e * e + F(delta * delta) * R2)) + F(64) * E;
+  const Bounded<F> D{Q.D.hi, g * err_D};
+  const Bounded<F> b{Q.b.hi, g * err_b};
   Tri truth = ge0(D);
   truth = tri_and(truth, tri_or(le0(b), le0(c)));
   if (bounded) {
-    const F ab = a.value + b.value;
-    const F abc = a.value + F(2) * b.value + c.value;
-    const Bounded<F> AB{ab, F(2) * (a.err + b.err + u * std::fabs(ab))};
-    const Bounded<F> ABC{abc, F(2) * (a.err + F(2) * b.err + c.err +
-                                      F(2) * u * (a.value + F(2) * std::fabs(b.value) + std::fabs(c.value)))};
-    truth = tri_and(truth, tri_or(ge0(AB), le0(ABC)));
+    const Pair<F> b2{F(2) * Q.b.hi, F(2) * Q.b.lo};
+    const Bounded<F> AB = sum_bounded(Q.a, Q.b, F(err_a + err_b));
+    const Bounded<F> ABC = sum_bounded(Q.a, b2, A.c, F(F(err_a + F(2) * err_b) + c.err / g));
+    truth = tri_and(truth, tri_or(ge0(Bounded<F>{AB.value, g * AB.err}), le0(Bounded<F>{ABC.value, g * ABC.err})));
   }
   out.certain = truth != Tri::unknown && (truth == Tri::yes) == out.value;
   return out;
@@ -464,19 +524,26 @@ bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
   return cast(ray, sp, 0).hit;
 }
 
-// The cast's classification with its certificate (decision.hpp; bound in the header).
+// The cast's classification with its certificate (decision.hpp; bound in the header): the
+// cast's own computation and a bound on each decisive sign.
 template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
-  const bool value = hit(seg, sp);  // checks the inputs
-  const Vec3<F> s = seg.source - sp.center;
-  const Vec3<F> t = seg.target - sp.center;
-  return detail::decide_cast(s, Vec3<F>(t - s), sp, true, seg.source == seg.target, value);
+  check(seg, "segment");
+  check(sp, "sphere");
+  Pair<F> s[3], r[3];
+  detail::diff_pairs(seg.source, sp.center, s);
+  detail::diff_pairs(seg.target, seg.source, r);
+  return detail::decide_cast(s, r, sp, true);
 }
 
 template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
-  const bool value = hit(ray, sp);  // checks the inputs
-  return detail::decide_cast(Vec3<F>(ray.source - sp.center), ray.direction, sp, false, false, value);
+  check(ray, "ray");
+  check(sp, "sphere");
+  Pair<F> s[3];
+  detail::diff_pairs(ray.source, sp.center, s);
+  const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
+  return detail::decide_cast(s, r, sp, false);
 }
 
 }  // namespace cdref::robust
