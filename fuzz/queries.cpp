@@ -140,7 +140,10 @@ Answer eval_robust(Query q, const Inputs& in) {
   }
   if (d.value != a.cls) {
     std::string where;
-    for (std::size_t i = 0; i < info(q).inputs.size(); ++i) where += " " + hexfloat(in[i]);
+    for (std::size_t i = 0; i < info(q).inputs.size(); ++i) {
+      where += ' ';
+      where += hexfloat(in[i]);
+    }
     throw std::logic_error(std::string("robust::decide and the robust query disagree on ") + info(q).name +
                            " at" + where);
   }
