@@ -13,8 +13,10 @@
 // most u |r| in round to nearest, plus eta = 2^-1074 for a product or quotient that
 // underflows; a sum that underflows is exact):
 //   a + b: (s, t) = two_sum(a.hi, b.hi) is exact; w1 = fl(t + a.lo), w = fl(w1 + b.lo)
-//          round twice; (hi, lo) = two_sum(s, w) is exact. So
-//          e' = ea + eb + u (|w1| + |w|).
+//          round twice, and two_sum gives each rounding error r1, r2 exactly;
+//          (hi, lo) = two_sum(s, w) is exact. So a + b = hi + lo + r1 + r2 exactly and
+//          e' = ea + eb + |r1| + |r2| (0 when both roundings were exact: a sum of exact
+//          values that fits in a double word stays exact, ties included).
 //   a * b: with a = ah + al, b = bh + bl: (p, pe) = two_prod(ah, bh) is exact when
 //          |p| >= 2^-968 (then ah bh - p is a multiple of 2^-1073 below 2^53 of them),
 //          else off by at most eta; c1 = fl(ah bl), c2 = fl(al bh), al bl left out;
@@ -41,10 +43,13 @@
 // Signs: certain when |hi| > |lo| + e (then sign = sign(hi)), or when hi = lo = e = 0.
 // Rounding to double: hi is the double nearest to hi + lo; the exact value rounds to hi
 // when [v - e, v + e] lies strictly inside hi's rounding interval (the midpoints to both
-// neighbours), checked with the differences to the midpoints computed exactly.
+// neighbours), checked with the differences to the midpoints computed exactly; an exact
+// value (e = 0) on a midpoint rounds to the even neighbour, as IEEE does.
 #pragma once
 
 #include <Eigen/Core>
+#include <bit>
+#include <cstdint>
 #include <cdref/number_traits.hpp>
 #include <cmath>
 #include <limits>
@@ -72,13 +77,13 @@ class Bounded2 {
 
   friend Bounded2 operator-(const Bounded2& a) { return make(-a.hi_, -a.lo_, a.e_); }
   friend Bounded2 operator+(const Bounded2& a, const Bounded2& b) {
-    double s, t;
+    double s, t, w1, r1, w, r2;
     two_sum(a.hi_, b.hi_, s, t);
-    const double w1 = t + a.lo_;
-    const double w = w1 + b.lo_;
+    two_sum(t, a.lo_, w1, r1);  // the two roundings, each with its exact error
+    two_sum(w1, b.lo_, w, r2);
     Bounded2 r;
     two_sum(s, w, r.hi_, r.lo_);
-    const double err = a.e_ + b.e_ + u * (std::fabs(w1) + std::fabs(w));
+    const double err = a.e_ + b.e_ + std::fabs(r1) + std::fabs(r2);
     r.e_ = err == 0 ? 0 : err * grow;
     return r;
   }
@@ -176,6 +181,12 @@ class Bounded2 {
     // (hi - below, hi + above); the value lies in [hi + lo - e, hi + lo + e].
     const double below = std::isinf(dn) ? (up - hi_) / 2 : (hi_ - dn) / 2;
     const double above = std::isinf(up) ? (hi_ - dn) / 2 : (up - hi_) / 2;
+    // An exact value on a midpoint: ties to even (the neighbour with an even last bit).
+    if (e_ == 0 && (lo_ == above || -lo_ == below) && above > 0 && below > 0) {
+      const double other = lo_ > 0 ? up : dn;
+      if (std::isinf(other)) throw uncertain();  // the overflow threshold: left to the exact path
+      return (std::bit_cast<std::uint64_t>(hi_) & 1) == 0 ? hi_ : other;
+    }
     // above - lo and below + lo: |lo| <= half an ulp of hi, so each is a sum of two
     // numbers within a factor 2^54 of one another, rounded once: shrink it by 2u.
     const double room = std::min(above - lo_, below + lo_) * (1 - 2 * u);
