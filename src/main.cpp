@@ -200,8 +200,8 @@ int campaign(Args& a, bool defaults) {
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms at float,\n"
-                 "double and long double against the exact answer, "
+    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms and the\n"
+                 "robust versions at float, double and long double against the exact answer, "
               << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);
