@@ -493,19 +493,21 @@ void write_csv(std::ostream& o, const std::vector<QueryReport>& reps) {
 
 // Cost against error, log-log, one panel per query and one point per row: x the time, y the
 // max error of the first output in ulps (box-box: the share misclassified on the hard
-// families). Exact rows sit on the bottom line; MPFR's error is not measured and is left out.
+// families). Exact rows (open circles, slanted labels) sit on the bottom line; MPFR's error
+// is not measured and is left out.
 void write_svg(const std::string& out, const std::vector<QueryReport>& reps) {
   const std::string dat = out + ".dat";
   {
     std::ofstream d(dat);
     for (std::size_t i = 0; i < reps.size(); ++i) {
       const bool values = !info(reps[i].q).outputs.empty();
-      d << "# " << info(reps[i].q).name << ": name ns error\n";
+      d << "# " << info(reps[i].q).name << ": name ns error exact\n";
       for (const Row& row : reps[i].rows) {
         if (!row.measured && row.error_note != "exact") continue;
         const double err = !row.measured ? 0 : values ? double(row.max) : row.miss_hard;
         const double floor = values ? 0.5 : 1e-5;
-        d << "\"" << row.name << "\" " << row.ns << " " << std::max(err, floor) << "\n";
+        d << "\"" << row.name << "\" " << row.ns << " " << std::max(err, floor) << " " << (row.measured ? 0 : 1)
+          << "\n";
       }
       d << "\n\n";  // a gnuplot index per query
     }
@@ -517,16 +519,19 @@ void write_svg(const std::string& out, const std::vector<QueryReport>& reps) {
                "set terminal svg size 1200,%d dynamic font 'sans,10' background rgb 'white'\nset output '%s'\n"
                "set multiplot layout %d,%d title 'cdref report: cost against error (one point per implementation)'\n"
                "set logscale xy\nset grid\nset xlabel 'ns per query'\nset format y '10^{%%L}'\nunset key\n",
-               360 * nrows, out.c_str(), nrows, cols);
+               420 * nrows, out.c_str(), nrows, cols);
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const bool values = !info(reps[i].q).outputs.empty();
     std::fprintf(gp, "set title '%s'\nset ylabel '%s'\nset yrange [%s:*]\n", info(reps[i].q).name,
                  values ? "max error of the first output, ulps (exact: 0.5)" : "misclassified, hard families (exact: 1e-5)",
                  values ? "0.3" : "5e-6");
     std::fprintf(gp,
-                 "plot '%s' index %zu u 2:3 w p pt 7 ps 0.8 lc 1, '' index %zu u 2:3:1 w labels left offset 0.6,0 "
-                 "font ',7' noenhanced\n",
-                 dat.c_str(), i, i);
+                 "plot '%s' index %zu u 2:($4 == 0 ? $3 : 1/0) w p pt 7 ps 0.8 lc 1, "
+                 "'' index %zu u 2:($4 == 0 ? $3 : 1/0):1 w labels left offset 0.6,0 font ',7' noenhanced, "
+                 "'' index %zu u 2:($4 == 1 ? $3 : 1/0) w p pt 6 ps 0.8 lc 2, "
+                 "'' index %zu u 2:($4 == 1 ? $3 : 1/0):1 w labels rotate by 50 left offset 0.3,0.5 font ',6' "
+                 "noenhanced tc lt 2\n",
+                 dat.c_str(), i, i, i, i);
   }
   std::fprintf(gp, "unset multiplot\n");
   if (pclose(gp) != 0) throw std::runtime_error("gnuplot failed drawing " + out);
