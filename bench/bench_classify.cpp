@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/primitives_of.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <string>
 #include <vector>
@@ -16,31 +17,6 @@ using namespace cdref::fuzz;
 namespace staged = cdref::oracle::staged;
 
 namespace {
-
-Vec3<double> v3(const Inputs& in, int k) { return Vec3<double>(in[k], in[k + 1], in[k + 2]); }
-
-// The query's primitives from the case columns, handed to f(a, b, alg32).
-template <class F>
-auto dispatch(Query q, const Inputs& in, F&& f) {
-  switch (q) {
-    case Query::sphere_sphere:
-      return f(Sphere<double>{v3(in, 0), in[3]}, Sphere<double>{v3(in, 4), in[7]}, false);
-    case Query::segment_sphere_cast:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
-    case Query::ray_sphere_cast:
-      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
-    case Query::segment_sphere:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, true);
-    case Query::box_box:
-      return f(Box<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    case Query::segment_box_cast:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    case Query::ray_box_cast:
-      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    default:
-      return f(Sphere<double>{v3(in, 0), in[3]}, Box<double>{v3(in, 4), v3(in, 7)}, false);
-  }
-}
 
 template <class A, class B>
 bool book_decision(const A& a, const B& b, bool alg32) {
@@ -80,7 +56,7 @@ Cases<A, B> make(Query q, const char* family, int scale) {
   const Family& f = family_by_name(q, family);
   for (std::uint64_t i = 0; i < 1024; ++i) {
     const Inputs in = make_case(1, q, f, scale, i);
-    dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+    with_primitives<double>(q, in, [&](const auto& a, const auto& b, bool alg32) {
       if constexpr (std::is_same_v<std::decay_t<decltype(a)>, A> && std::is_same_v<std::decay_t<decltype(b)>, B>) {
         c.a.push_back(a);
         c.b.push_back(b);

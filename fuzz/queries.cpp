@@ -6,6 +6,7 @@
 #include <cdref/oracle/classify.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/eval.hpp>
+#include <cdref/fuzz/primitives_of.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/robust/ray_sphere.hpp>
@@ -195,42 +196,14 @@ Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used) 
 Answer oracle_classify(Query q, const Inputs& in, bool* exact_used) {
   // exact/cdref/oracle/classify.hpp: a semi-static filter, then exact floating-point
   // expansions, then the book at Gmpq; the answer is always the exact classification.
-  using detail::v3;
   oracle::Stage stage = oracle::Stage::filter;
-  bool c = false;
-  switch (q) {
-    case Query::sphere_sphere:
-      c = oracle::classify(Sphere<double>{v3<double>(in, 0), in[3]}, Sphere<double>{v3<double>(in, 4), in[7]}, &stage);
-      break;
-    case Query::segment_sphere_cast:
-      c = oracle::classify(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
-                           Sphere<double>{v3<double>(in, 6), in[9]}, &stage);
-      break;
-    case Query::ray_sphere_cast:
-      c = oracle::classify(Ray<double>{v3<double>(in, 0), v3<double>(in, 3)}, Sphere<double>{v3<double>(in, 6), in[9]},
-                           &stage);
-      break;
-    case Query::segment_sphere:
-      c = oracle::classify_segment_sphere(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
-                                          Sphere<double>{v3<double>(in, 6), in[9]}, &stage);
-      break;
-    case Query::box_box:
-      c = oracle::classify(Box<double>{v3<double>(in, 0), v3<double>(in, 3)},
-                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
-      break;
-    case Query::segment_box_cast:
-      c = oracle::classify(Segment<double>{v3<double>(in, 0), v3<double>(in, 3)},
-                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
-      break;
-    case Query::ray_box_cast:
-      c = oracle::classify(Ray<double>{v3<double>(in, 0), v3<double>(in, 3)},
-                           Box<double>{v3<double>(in, 6), v3<double>(in, 9)}, &stage);
-      break;
-    case Query::sphere_box:
-      c = oracle::classify(Sphere<double>{v3<double>(in, 0), in[3]}, Box<double>{v3<double>(in, 4), v3<double>(in, 7)},
-                           &stage);
-      break;
-  }
+  const bool c = with_primitives<double>(q, in, [&stage](const auto& a, const auto& b, bool algorithm_3_2) {
+    using A = std::decay_t<decltype(a)>;
+    using B = std::decay_t<decltype(b)>;
+    if constexpr (std::is_same_v<A, Segment<double>> && std::is_same_v<B, Sphere<double>>)
+      if (algorithm_3_2) return oracle::classify_segment_sphere(a, b, &stage);
+    return oracle::classify(a, b, &stage);
+  });
   if (exact_used) *exact_used = stage != oracle::Stage::filter;
   Answer a;
   a.cls = a.pred = c;  // at exact types the full query and the predicate agree (tested)

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/eval.hpp>
+#include <cdref/fuzz/primitives_of.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -18,31 +19,6 @@ using oracle::Stage;
 namespace staged = cdref::oracle::staged;
 
 namespace {
-
-Vec3<double> v3(const Inputs& in, int k) { return Vec3<double>(in[k], in[k + 1], in[k + 2]); }
-
-// Runs f(a, b, tag...) on the query's primitives built from the case's columns.
-template <class F>
-auto dispatch(Query q, const Inputs& in, F&& f) {
-  switch (q) {
-    case Query::sphere_sphere:
-      return f(Sphere<double>{v3(in, 0), in[3]}, Sphere<double>{v3(in, 4), in[7]}, false);
-    case Query::segment_sphere_cast:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
-    case Query::ray_sphere_cast:
-      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, false);
-    case Query::segment_sphere:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Sphere<double>{v3(in, 6), in[9]}, true);
-    case Query::box_box:
-      return f(Box<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    case Query::segment_box_cast:
-      return f(Segment<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    case Query::ray_box_cast:
-      return f(Ray<double>{v3(in, 0), v3(in, 3)}, Box<double>{v3(in, 6), v3(in, 9)}, false);
-    default:
-      return f(Sphere<double>{v3(in, 0), in[3]}, Box<double>{v3(in, 4), v3(in, 7)}, false);
-  }
-}
 
 template <class A, class B>
 bool classify_any(const A& a, const B& b, bool alg32, Stage* st) {
@@ -78,20 +54,20 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
           const Answer truth = eval<CGAL::Gmpq, double>(q, in, false);
           INFO(info(q).name << " " << f.name << "/" << k << " case " << i);
           Stage st = Stage::rational;
-          const bool got = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+          const bool got = with_primitives<double>(q, in, [&](const auto& a, const auto& b, bool alg32) {
             return classify_any(a, b, alg32, &st);
           });
           REQUIRE(got == truth.cls);
           REQUIRE(got == truth.pred);
           ++shares[std::string(info(q).name) + " " + f.name].n[int(st)];
           ++total;
-          const int fil = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+          const int fil = with_primitives<double>(q, in, [&](const auto& a, const auto& b, bool alg32) {
             return stage_any(Stage::filter, a, b, alg32);
           });
-          const int exp = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+          const int exp = with_primitives<double>(q, in, [&](const auto& a, const auto& b, bool alg32) {
             return stage_any(Stage::expansion, a, b, alg32);
           });
-          const int rat = dispatch(q, in, [&](const auto& a, const auto& b, bool alg32) {
+          const int rat = with_primitives<double>(q, in, [&](const auto& a, const auto& b, bool alg32) {
             return stage_any(Stage::rational, a, b, alg32);
           });
           REQUIRE(rat == int(truth.cls));
@@ -105,8 +81,8 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
           }
           if (q == Query::segment_sphere_cast || q == Query::segment_sphere) {
             // Algorithm 3.1's hit and Algorithm 3.2's intersect are the same decision.
-            const Segment<double> s{v3(in, 0), v3(in, 3)};
-            const Sphere<double> sp{v3(in, 6), in[9]};
+            const Segment<double> s{column3<double>(in, 0), column3<double>(in, 3)};
+            const Sphere<double> sp{column3<double>(in, 6), in[9]};
             REQUIRE(staged::rational(s, sp) == staged::rational(s, sp, staged::alg32{}));
             REQUIRE(staged::expansion(s, sp) == staged::expansion(s, sp, staged::alg32{}));
           }
