@@ -283,12 +283,13 @@ inline bool normalize(double* x, int n) {
   double m = 0;
   for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
   if (m == 0) return true;
-  if (m >= 0x1p100 || m < 0x1p-100) {
-    const int e = std::ilogb(m);
-    for (int i = 0; i < n; ++i) x[i] = std::ldexp(x[i], -e);
-  }
+  // Judged on the inputs before scaling: a value the scaling would flush to zero (or make
+  // subnormal) is refused too, not only one that stays nonzero and tiny.
+  const int e = (m >= 0x1p100 || m < 0x1p-100) ? std::ilogb(m) : 0;
   for (int i = 0; i < n; ++i)
-    if (x[i] != 0 && std::fabs(x[i]) < 0x1p-180) return false;
+    if (x[i] != 0 && std::fabs(std::ldexp(x[i], -e)) < 0x1p-180) return false;
+  if (e != 0)
+    for (int i = 0; i < n; ++i) x[i] = std::ldexp(x[i], -e);
   return true;
 }
 inline int pack(const Vec3<double>& v, const Vec3<double>& w, double* x) {
