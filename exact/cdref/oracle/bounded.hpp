@@ -59,13 +59,17 @@ class Bounded {
   friend Bounded operator*(const Bounded& a, const Bounded& b) {
     const double p = a.v_ * b.v_;
     if (a.e_ == 0 && b.e_ == 0) return {p, (rounding(p) + eta) * grow};
-    return {p, (std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + rounding(p) + eta) * grow};
+    // the four products of the bound may underflow: one eta each, and one for p
+    return {p, (std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + rounding(p) + 5 * eta) * grow};
   }
   friend Bounded operator/(const Bounded& a, const Bounded& b) {
     const double ab = std::fabs(b.v_);
     if (!(ab > b.e_)) throw uncertain();  // the divisor may be zero
     const double q = a.v_ / b.v_;
-    const double prop = (a.e_ * ab + b.e_ * std::fabs(a.v_)) / (ab * (ab - b.e_));
+    // (ea |b| + eb |a|) / (|b| (|b| - eb)) = (ea + eb |a/b|) / (|b| - eb), with |a/b| <=
+    // |q| (1 + u) / (1 - u) covered by grow, and eta for an underflowing eb |q|: written so
+    // that no product of the bound underflows before the division by a small |b|
+    const double prop = (a.e_ + b.e_ * std::fabs(q) * grow + (b.e_ != 0 ? eta : 0)) / ((ab - b.e_) * (1 - 2 * u));
     return {q, (prop * grow + rounding(q) + eta) * grow};
   }
   Bounded& operator+=(const Bounded& b) { return *this = *this + b; }

@@ -22,7 +22,8 @@
 //          else off by at most eta; c1 = fl(ah bl), c2 = fl(al bh), al bl left out;
 //          w1 = fl(pe + c1), w = fl(w1 + c2); (hi, lo) = two_sum(p, w). The propagated
 //          error of exact values x = a + da, y = b + db is |a db + b da + da db| <=
-//          (|ah| + |al|) eb + (|bh| + |bl|) ea + ea eb, so
+//          (|ah| + |al|) eb + (|bh| + |bl|) ea + ea eb (plus 3 eta: these three products of
+//          the bound may underflow, and a bound that underflows to 0 would claim exactness), so
 //          e' = that + |al| |bl| + u (|c1| + |c2| + |w1| + |w|) + 3 eta (c1, c2, al bl
 //          may underflow), plus eta for pe when |p| < 2^-968.
 //   a / b: q = fl(fl(ah / bh) + correction) (one step of long division), then bounded
@@ -102,7 +103,7 @@ class Bounded2 {
     }
     if (a.e_ != 0 || b.e_ != 0)
       err += (std::fabs(a.hi_) + std::fabs(a.lo_)) * b.e_ + (std::fabs(b.hi_) + std::fabs(b.lo_)) * a.e_ +
-             a.e_ * b.e_;
+             a.e_ * b.e_ + 3 * eta;  // each of the three products may underflow
     Bounded2 r;
     two_sum(p, w, r.hi_, r.lo_);
     r.e_ = err == 0 ? 0 : err * grow;
@@ -122,7 +123,7 @@ class Bounded2 {
     // a posteriori: R = a - q b on the exact parts
     const Bounded2 R = exact_part(a) - exact_part(b) * q;
     const double qmag = std::fabs(q.hi_) + std::fabs(q.lo_);
-    const double num = (std::fabs(R.hi_) + std::fabs(R.lo_) + R.e_ + a.e_ + qmag * b.e_) * grow;
+    const double num = (std::fabs(R.hi_) + std::fabs(R.lo_) + R.e_ + a.e_ + qmag * b.e_ + (b.e_ != 0 ? eta : 0)) * grow;
     q.e_ = num == 0 ? 0 : (num / bmin) * grow + eta;
     if (!q.finite()) throw uncertain();
     return q;

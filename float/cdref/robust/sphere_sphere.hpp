@@ -105,7 +105,9 @@ F norm_of_pairs(const F (&v)[3], const F (&l)[3]) {
 template <class F>
 void unit_of_pairs(const F (&h)[3], const F (&l)[3], F (&n)[3]) {
   const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
-  const int e = std::ilogb(top);
+  // (a zero or non-finite top -- v underflowed, or overflowed upstream -- is not scaled:
+  // ilogb would return INT_MIN or INT_MAX there)
+  const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
   F hs[3], ls[3];
   for (int i = 0; i < 3; ++i) {
     hs[i] = std::ldexp(h[i], -e);
