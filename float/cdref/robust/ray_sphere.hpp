@@ -533,7 +533,7 @@ Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
-  return detail::decide_cast(s, r, sp, true);
+  return within_range(detail::decide_cast(s, r, sp, true), seg, sp);
 }
 
 template <class F>
@@ -543,7 +543,7 @@ Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
-  return detail::decide_cast(s, r, sp, false);
+  return within_range(detail::decide_cast(s, r, sp, false), ray, sp);
 }
 
 }  // namespace cdref::robust

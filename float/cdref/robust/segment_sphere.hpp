@@ -252,7 +252,7 @@ Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   // outside means the segment (farther from the centre than its line) does not.
   if (!R.branch_certain)
     certain = R.branch == detail::Branch::interior ? R.q.sign() > 0 : (exact_zero || R.q.sign() < 0);
-  return {R.q.value <= F(0), L.exact && certain};
+  return within_range(Decision{R.q.value <= F(0), L.exact && certain}, seg, sp);
 }
 
 template <class F>

@@ -126,9 +126,9 @@ Decision decide(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
   const auto L = detail::sph_box_local(sp, box);
-  if (!L.outside) return {true, L.exact};
+  if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
   const detail::Bounded<F> q = detail::sph_box_q(L);
-  return {q.value <= F(0), L.exact && q.sign() != 0};
+  return within_range(Decision{q.value <= F(0), L.exact && q.sign() != 0}, sp, box);
 }
 
 template <class F>

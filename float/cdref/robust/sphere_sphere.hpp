@@ -155,9 +155,9 @@ Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
   const auto L = detail::sphere_sphere_local(a, b);
-  if (L.all_zero) return {true, L.exact};
+  if (L.all_zero) return within_range(Decision{true, L.exact}, a, b);
   const detail::Bounded<F> q = detail::sphere_sphere_q(L);
-  return {q.value <= F(0), L.exact && q.sign() != 0};
+  return within_range(Decision{q.value <= F(0), L.exact && q.sign() != 0}, a, b);
 }
 
 template <class F>
