@@ -72,7 +72,15 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   const bool g_refused = refuses<CGAL::Gmpq>(q, in, g);
   const bool l_refused = refuses<CGAL::Epeck::FT>(q, in, l);
   if (g_refused != l_refused) violated(q, in, "Gmpq and Epeck::FT disagree on refusing the input");
-  if (g_refused != d_refused) violated(q, in, "double and the exact types disagree on refusing the input");
+  // box-box: the predicate column converts to min-max corners c +- e in the implementation's
+  // type; at double they may overflow where the exact types hold them (the book at double
+  // then refuses the min-max form: a documented limit of that conversion, not a disagreement)
+  bool corners_overflow = false;
+  if (q == Query::box_box)
+    for (int k : {0, 1, 2, 6, 7, 8})
+      corners_overflow = corners_overflow || !std::isfinite(in[k] + in[k + 3]) || !std::isfinite(in[k] - in[k + 3]);
+  if (g_refused != d_refused && !(corners_overflow && d_refused))
+    violated(q, in, "double and the exact types disagree on refusing the input");
   if (g_refused) return;
   if (g.cls != l.cls || g.pred != l.pred) violated(q, in, "Gmpq and Epeck::FT classify differently");
   for (int k = 0; k < max_values; ++k)
@@ -87,7 +95,13 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   if (oc.cls != g.cls || oc.pred != g.pred) violated(q, in, "the classification oracle differs from Gmpq");
   // the robust versions: a classification they call certain is the exact one
   for (const char* name : {"robust-double", "robust-long-double"}) {
-    const Answer r = implementation_by_name(name).run(q, in);  // double inputs are exact in long double
+    Answer r;
+    try {
+      r = implementation_by_name(name).run(q, in);  // double inputs are exact in long double
+    } catch (const invalid_input&) {
+      if (corners_overflow) continue;  // the min-max predicate column, as above
+      violated(q, in, "a robust version refused an input the exact types take");
+    }
     if (!r.certified) violated(q, in, "a robust version gave no certificate");
     if (r.certain && r.cls != g.cls) violated(q, in, "a robust version is certain and wrong");
   }

@@ -7,6 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-10}"
+# A fixed seed by default, so that a run explores the same inputs first wherever it runs
+# (CDREF_FUZZ_SEED=0 asks libFuzzer for a random one).
+seed="${CDREF_FUZZ_SEED:-1}"
 bash scripts/deps.sh
 bash scripts/deps.sh clang-14 libclang-rt-14-dev
 cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
@@ -20,7 +23,7 @@ for t in "${targets[@]}"; do
   echo "cdref: fuzzing $t for ${seconds}s"
   # libFuzzer exits nonzero on a crash or a violated check (and leaves crash-* in build/fuzz)
   set +e
-  (cd build/fuzz && "./fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 "corpus/$t" "../../fuzz/corpus/$t" \
+  (cd build/fuzz && "./fuzz_$t" -max_total_time="$seconds" -seed="$seed" -print_final_stats=1 "corpus/$t" "../../fuzz/corpus/$t" \
      > "fuzz-$t.log" 2>&1)
   status=$?
   set -e
