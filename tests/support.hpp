@@ -135,6 +135,10 @@ Segment<Q> convert_prim_exact(const Segment<T>& p) {
   return {exact_vec(p.source), exact_vec(p.target)};
 }
 template <class T>
+Ray<Q> convert_prim_exact(const Ray<T>& p) {
+  return {exact_vec(p.source), exact_vec(p.direction)};
+}
+template <class T>
 bool finite_in(const Vec3<double>& v) {
   for (int i = 0; i < 3; ++i)
     if (!number_traits<T>::is_finite(from_double<T>(v[i]))) return false;

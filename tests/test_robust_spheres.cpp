@@ -6,7 +6,6 @@
 // rounded correctly to long double, in ulps of F at max(|truth|, m), m the size of the terms
 // that make the value (stated per output in each header). Each bound asserted here is the
 // one derived in the header, evaluated for the case.
-#include <catch2/catch.hpp>
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
 #include <cdref/fuzz/campaign.hpp>
@@ -20,37 +19,12 @@
 #include <limits>
 #include <vector>
 
+#include "support.hpp"
+
 namespace {
 
 using namespace cdref;
-using Q = CGAL::Gmpq;
-using QS = Quad<Q>;
-
-Q exact_of(float x) { return Q(static_cast<double>(x)); }
-Q exact_of(double x) { return Q(x); }
-Q exact_of(long double x) { return exact::gmpq_of(x); }
-
-template <class F>
-Vec3<Q> ev(const Vec3<F>& v) {
-  return Vec3<Q>(exact_of(v[0]), exact_of(v[1]), exact_of(v[2]));
-}
-template <class F>
-Sphere<Q> ex(const Sphere<F>& s) {
-  return {ev(s.center), exact_of(s.radius)};
-}
-template <class F>
-Box<Q> ex(const Box<F>& b) {
-  return {ev(b.center), ev(b.extent)};
-}
-template <class F>
-Segment<Q> ex(const Segment<F>& s) {
-  return {ev(s.source), ev(s.target)};
-}
-template <class F>
-Ray<Q> ex(const Ray<F>& s) {
-  return {ev(s.source), ev(s.direction)};
-}
-
+using namespace cdref::test;
 long double ld(const QS& x) { return exact::round_long_double(x); }
 
 template <class F>
@@ -61,7 +35,7 @@ constexpr long double unit() {
 // |got - truth| in ulps of F at max(|truth|, m).
 template <class F>
 long double ulps(F got, const QS& truth, long double m = 0) {
-  const long double err = std::fabs(ld(QS(exact_of(got)) - truth));
+  const long double err = std::fabs(ld(QS(exact_q(got)) - truth));
   if (err == 0) return 0;
   const long double mag = std::max(std::fabs(ld(truth)), m);
   if (mag == 0) return std::numeric_limits<long double>::infinity();
@@ -134,7 +108,7 @@ TEMPLATE_TEST_CASE("robust sphere-sphere: every output within its derived bound 
   int book_bad = 0;
   for (const auto& c : sphere_sphere_hard<F>()) {
     INFO(c.name);
-    const auto sa = ex(c.a), sb = ex(c.b);
+    const auto sa = convert_prim_exact(c.a), sb = convert_prim_exact(c.b);
     const auto ref = book::proximity(sa, sb);
     const auto got = robust::proximity(c.a, c.b);
     const auto dec = robust::decide(c.a, c.b);
@@ -241,8 +215,8 @@ TEMPLATE_TEST_CASE("robust segment-sphere: every output within its derived bound
   int book_bad = 0;
   for (const auto& c : segment_sphere_hard<F>()) {
     INFO(c.name);
-    const auto sq = ex(c.seg);
-    const auto pq = ex(c.sp);
+    const auto sq = convert_prim_exact(c.seg);
+    const auto pq = convert_prim_exact(c.sp);
     const auto ref = book::proximity(sq, pq);
     const auto got = robust::proximity(c.seg, c.sp);
     const auto dec = robust::decide_closest(c.seg, c.sp);
@@ -365,8 +339,8 @@ TEMPLATE_TEST_CASE("robust sphere-box: every output within its derived bound on 
   int book_bad = 0;
   for (const auto& c : sphere_box_hard<F>()) {
     INFO(c.name);
-    const auto sq = ex(c.sp);
-    const auto bq = ex(c.box);
+    const auto sq = convert_prim_exact(c.sp);
+    const auto bq = convert_prim_exact(c.box);
     const auto ref = book::proximity(sq, bq);
     const auto got = robust::proximity(c.sp, c.box);
     const auto dec = robust::decide(c.sp, c.box);
@@ -509,14 +483,14 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
                             n, [](const fuzz::Inputs& in) {
                               const Sphere<F> a{at<F>(in, 0), F(in[3])}, b{at<F>(in, 4), F(in[7])};
                               const auto d = robust::decide(a, b);
-                              return std::tuple{d, book::intersect(ex(a), ex(b)), d.value == robust::intersect(a, b)};
+                              return std::tuple{d, book::intersect(convert_prim_exact(a), convert_prim_exact(b)), d.value == robust::intersect(a, b)};
                             });
   const Tally sb = sweep<F>(Query::sphere_box, 10, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
                             n, [](const fuzz::Inputs& in) {
                               const Sphere<F> s{at<F>(in, 0), F(in[3])};
                               const Box<F> b{at<F>(in, 4), at<F>(in, 7)};
                               const auto d = robust::decide(s, b);
-                              return std::tuple{d, book::intersect(ex(s), ex(b)), d.value == robust::intersect(s, b)};
+                              return std::tuple{d, book::intersect(convert_prim_exact(s), convert_prim_exact(b)), d.value == robust::intersect(s, b)};
                             });
   std::vector<std::string> segf;
   for (const auto& f : fuzz::families(Query::segment_sphere)) segf.push_back(f.name);
@@ -524,7 +498,7 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
     const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide_closest(s, p);
-    return std::tuple{d, book::intersect(ex(s), ex(p)), d.value == robust::intersect(s, p)};
+    return std::tuple{d, book::intersect(convert_prim_exact(s), convert_prim_exact(p)), d.value == robust::intersect(s, p)};
   });
   std::vector<std::string> castf;
   for (const auto& f : fuzz::families(Query::segment_sphere_cast)) castf.push_back(f.name);
@@ -532,7 +506,7 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
     const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide(s, p);
-    return std::tuple{d, book::hit(ex(s), ex(p)), d.value == robust::hit(s, p)};
+    return std::tuple{d, book::hit(convert_prim_exact(s), convert_prim_exact(p)), d.value == robust::hit(s, p)};
   });
   std::vector<std::string> rayf;
   for (const auto& f : fuzz::families(Query::ray_sphere_cast)) rayf.push_back(f.name);
@@ -540,7 +514,7 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
     const Ray<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide(s, p);
-    return std::tuple{d, book::hit(ex(s), ex(p)), d.value == robust::hit(s, p)};
+    return std::tuple{d, book::hit(convert_prim_exact(s), convert_prim_exact(p)), d.value == robust::hit(s, p)};
   });
   for (const Tally* t : {&ss, &sb, &gs, &cs, &rs}) {
     REQUIRE(t->n > 500);
@@ -609,8 +583,8 @@ void check_cast(const CastIn<F>& c, CastStats& st) {
   const Cast<F> got = c.ray ? robust::cast(Ray<F>{c.s, c.t}, c.sp) : robust::cast(Segment<F>{c.s, c.t}, c.sp);
   const robust::Decision dec = c.ray ? robust::decide(Ray<F>{c.s, c.t}, c.sp) : robust::decide(Segment<F>{c.s, c.t}, c.sp);
   REQUIRE(dec.value == got.hit);
-  const Sphere<Q> spq = ex(c.sp);
-  const Vec3<Q> sq = ev(c.s), tq = ev(c.t);
+  const Sphere<Q> spq = convert_prim_exact(c.sp);
+  const Vec3<Q> sq = exact_vec(c.s), tq = exact_vec(c.t);
   const Cast<QS> ref = c.ray ? book::cast(Ray<Q>{sq, tq}, spq) : book::cast(Segment<Q>{sq, tq}, spq);
   if (dec.certain) REQUIRE(got.hit == ref.hit);
   if (got.hit != ref.hit) ++st.misclassified;
@@ -759,12 +733,12 @@ std::vector<FamilyShare> cast_certain_shares(fuzz::Query q, int n) {
             const Ray<F> r{at<F>(in, 0), at<F>(in, 3)};
             d = robust::decide(r, p);
             value = robust::hit(r, p);
-            truth = book::hit(ex(r), ex(p));
+            truth = book::hit(convert_prim_exact(r), convert_prim_exact(p));
           } else {
             const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
             d = robust::decide(s, p);
             value = robust::hit(s, p);
-            truth = book::hit(ex(s), ex(p));
+            truth = book::hit(convert_prim_exact(s), convert_prim_exact(p));
           }
         } catch (const invalid_input&) {
           continue;
