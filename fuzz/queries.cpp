@@ -72,73 +72,29 @@ const std::vector<QueryInfo>& table() {
 // the certificate of robust::decide.
 template <class F>
 Answer eval_robust(Query q, const Inputs& in) {
-  using detail::v3;
   Answer a;
-  robust::Decision d;
-  switch (q) {
-    case Query::sphere_sphere: {
-      const Sphere<F> A{v3<F>(in, 0), F(in[3])}, B{v3<F>(in, 4), F(in[7])};
-      detail::put_prox<F>(a, robust::proximity(A, B));
-      a.pred = robust::intersect(A, B);
-      d = robust::decide(A, B);
-      break;
+  const robust::Decision d = with_primitives<F>(q, in, [&a](const auto& x, const auto& y, bool algorithm_3_2) {
+    using A = std::decay_t<decltype(x)>;
+    if constexpr (std::is_same_v<A, Box<F>>) {  // box-box: the predicate column is the min-max form
+      a.cls = robust::intersect(x, y);
+      a.pred = robust::intersect(to_min_max(x), to_min_max(y));
+      return robust::decide(x, y);
+    } else if constexpr (std::is_same_v<A, Sphere<F>>) {  // sphere-sphere, sphere-box
+      detail::put_prox<F>(a, robust::proximity(x, y));
+      a.pred = robust::intersect(x, y);
+      return robust::decide(x, y);
+    } else {
+      if constexpr (std::is_same_v<A, Segment<F>> && std::is_same_v<std::decay_t<decltype(y)>, Sphere<F>>)
+        if (algorithm_3_2) {
+          detail::put_prox<F>(a, robust::proximity(x, y));
+          a.pred = robust::intersect(x, y);
+          return robust::decide_closest(x, y);
+        }
+      detail::put_cast<F>(a, robust::cast(x, y));  // the casts on a sphere or a box
+      a.pred = robust::hit(x, y);
+      return robust::decide(x, y);
     }
-    case Query::segment_sphere_cast: {
-      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
-      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
-      detail::put_cast<F>(a, robust::cast(s, sp));
-      a.pred = robust::hit(s, sp);
-      d = robust::decide(s, sp);
-      break;
-    }
-    case Query::ray_sphere_cast: {
-      const Ray<F> r{v3<F>(in, 0), v3<F>(in, 3)};
-      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
-      detail::put_cast<F>(a, robust::cast(r, sp));
-      a.pred = robust::hit(r, sp);
-      d = robust::decide(r, sp);
-      break;
-    }
-    case Query::segment_sphere: {
-      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
-      const Sphere<F> sp{v3<F>(in, 6), F(in[9])};
-      detail::put_prox<F>(a, robust::proximity(s, sp));
-      a.pred = robust::intersect(s, sp);
-      d = robust::decide_closest(s, sp);
-      break;
-    }
-    case Query::box_box: {
-      const Box<F> A{v3<F>(in, 0), v3<F>(in, 3)}, B{v3<F>(in, 6), v3<F>(in, 9)};
-      a.cls = robust::intersect(A, B);
-      a.pred = robust::intersect(to_min_max(A), to_min_max(B));
-      d = robust::decide(A, B);
-      break;
-    }
-    case Query::segment_box_cast: {
-      const Segment<F> s{v3<F>(in, 0), v3<F>(in, 3)};
-      const Box<F> b{v3<F>(in, 6), v3<F>(in, 9)};
-      detail::put_cast<F>(a, robust::cast(s, b));
-      a.pred = robust::hit(s, b);
-      d = robust::decide(s, b);
-      break;
-    }
-    case Query::ray_box_cast: {
-      const Ray<F> r{v3<F>(in, 0), v3<F>(in, 3)};
-      const Box<F> b{v3<F>(in, 6), v3<F>(in, 9)};
-      detail::put_cast<F>(a, robust::cast(r, b));
-      a.pred = robust::hit(r, b);
-      d = robust::decide(r, b);
-      break;
-    }
-    case Query::sphere_box: {
-      const Sphere<F> sp{v3<F>(in, 0), F(in[3])};
-      const Box<F> b{v3<F>(in, 4), v3<F>(in, 7)};
-      detail::put_prox<F>(a, robust::proximity(sp, b));
-      a.pred = robust::intersect(sp, b);
-      d = robust::decide(sp, b);
-      break;
-    }
-  }
+  });
   if (d.value != a.cls) {
     std::string where;
     for (std::size_t i = 0; i < info(q).inputs.size(); ++i) {

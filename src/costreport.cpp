@@ -25,6 +25,7 @@
 #include <cdref/float/mpfr.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/eval.hpp>
+#include <cdref/fuzz/primitives_of.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/robust/ray_sphere.hpp>
@@ -52,8 +53,6 @@ using namespace cdref::fuzz;
 
 namespace {
 
-using fuzz::detail::v3;
-
 // The primitives of each query, in the column order of the campaign's case files.
 template <class T>
 struct Pair2 {
@@ -65,42 +64,20 @@ struct Pair2 {
   std::vector<Box<T>> bb;
 };
 
+template <class T> void keep(Pair2<T>& p, const Sphere<T>& x, bool first) { (first ? p.sa : p.sb).push_back(x); }
+template <class T> void keep(Pair2<T>& p, const Box<T>& x, bool first) { (first ? p.ba : p.bb).push_back(x); }
+template <class T> void keep(Pair2<T>& p, const Segment<T>& x, bool) { p.seg.push_back(x); }
+template <class T> void keep(Pair2<T>& p, const Ray<T>& x, bool) { p.ray.push_back(x); }
+
 template <class T>
 std::shared_ptr<Pair2<T>> prepare(Query q, const std::vector<Inputs>& cases) {
   auto p = std::make_shared<Pair2<T>>();
-  for (const Inputs& in : cases) {
-    switch (q) {
-      case Query::sphere_sphere:
-        p->sa.push_back({v3<T>(in, 0), T(in[3])});
-        p->sb.push_back({v3<T>(in, 4), T(in[7])});
-        break;
-      case Query::segment_sphere_cast:
-      case Query::segment_sphere:
-        p->seg.push_back({v3<T>(in, 0), v3<T>(in, 3)});
-        p->sb.push_back({v3<T>(in, 6), T(in[9])});
-        break;
-      case Query::ray_sphere_cast:
-        p->ray.push_back({v3<T>(in, 0), v3<T>(in, 3)});
-        p->sb.push_back({v3<T>(in, 6), T(in[9])});
-        break;
-      case Query::box_box:
-        p->ba.push_back({v3<T>(in, 0), v3<T>(in, 3)});
-        p->bb.push_back({v3<T>(in, 6), v3<T>(in, 9)});
-        break;
-      case Query::segment_box_cast:
-        p->seg.push_back({v3<T>(in, 0), v3<T>(in, 3)});
-        p->bb.push_back({v3<T>(in, 6), v3<T>(in, 9)});
-        break;
-      case Query::ray_box_cast:
-        p->ray.push_back({v3<T>(in, 0), v3<T>(in, 3)});
-        p->bb.push_back({v3<T>(in, 6), v3<T>(in, 9)});
-        break;
-      case Query::sphere_box:
-        p->sa.push_back({v3<T>(in, 0), T(in[3])});
-        p->bb.push_back({v3<T>(in, 4), v3<T>(in, 7)});
-        break;
-    }
-  }
+  for (const Inputs& in : cases)
+    with_primitives<T>(q, in, [&p](const auto& a, const auto& b, bool) {
+      keep(*p, a, true);
+      keep(*p, b, false);
+      return 0;
+    });
   return p;
 }
 
