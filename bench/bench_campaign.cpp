@@ -7,18 +7,18 @@
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
-#include <cdref/fuzz/eval.hpp>
 
 using namespace cdref::fuzz;
 
 namespace {
 
-const Family& fam(const char* name) { return family_by_name(Query::segment_sphere_cast, name); }
+const Query cast = query_by_name("segment-sphere-cast");
+const Family& fam(const char* name) { return family_by_name(cast, name); }
 
 void campaign(benchmark::State& st, const char* family) {
   const std::uint64_t n = 4096;
   Spec s;
-  s.queries = {Query::segment_sphere_cast};
+  s.queries = {cast};
   s.impls = {"book-double"};
   s.families = {family};
   s.scales = {fam(family).scales.front()};
@@ -30,48 +30,51 @@ void campaign(benchmark::State& st, const char* family) {
 
 void generate(benchmark::State& st) {
   std::uint64_t i = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i++));
+  for (auto _ : st) benchmark::DoNotOptimize(make_case(1, cast, fam("uniform"), 0, i++));
   st.SetItemsProcessed(st.iterations());
 }
 
 void book_double(benchmark::State& st) {
   const Implementation& im = implementation_by_name("book-double");
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, cast, fam("uniform"), 0, i));
   std::size_t k = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(im.run(Query::segment_sphere_cast, cases[k++ & 1023]));
+  for (auto _ : st) benchmark::DoNotOptimize(im.run(cast, cases[k++ & 1023]));
   st.SetItemsProcessed(st.iterations());
 }
 
 void exact_truth(benchmark::State& st) {
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, cast, fam("uniform"), 0, i));
   std::size_t k = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(truth(Query::segment_sphere_cast, cases[k++ & 1023], 53));
+  for (auto _ : st) benchmark::DoNotOptimize(truth(cast, cases[k++ & 1023], 53));
   st.SetItemsProcessed(st.iterations());
 }
 
 void oracle_all(benchmark::State& st, const char* family) {
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam(family), fam(family).scales.back(), i));
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, cast, fam(family), fam(family).scales.back(), i));
   std::size_t k = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(oracle_truth(Query::segment_sphere_cast, cases[k++ & 1023], 53));
+  for (auto _ : st) benchmark::DoNotOptimize(oracle_truth(cast, cases[k++ & 1023], 53));
   st.SetItemsProcessed(st.iterations());
 }
 
 void oracle_classification(benchmark::State& st, const char* family) {
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam(family), fam(family).scales.back(), i));
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, cast, fam(family), fam(family).scales.back(), i));
   std::size_t k = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(oracle_classify(Query::segment_sphere_cast, cases[k++ & 1023]));
+  for (auto _ : st) benchmark::DoNotOptimize(oracle_classify(cast, cases[k++ & 1023]));
   st.SetItemsProcessed(st.iterations());
 }
 
 void book_double_classification(benchmark::State& st) {
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, Query::segment_sphere_cast, fam("uniform"), 0, i));
+  for (std::uint64_t i = 0; i < 1024; ++i) cases.push_back(make_case(1, cast, fam("uniform"), 0, i));
   std::size_t k = 0;
-  for (auto _ : st) benchmark::DoNotOptimize(eval<double, double>(Query::segment_sphere_cast, cases[k++ & 1023], false));
+  TimedRow row;
+  for (TimedRow& r : info(cast).timed_rows(cases, cases, ""))
+    if (r.name == "book double, classification") row = std::move(r);
+  for (auto _ : st) benchmark::DoNotOptimize(row.run(k++ & 1023));
   st.SetItemsProcessed(st.iterations());
 }
 

@@ -221,7 +221,6 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       valid[k] = false;
     }
   }
-  const bool is_cast = qi.outputs.size() == 4 && qi.outputs[0] == "lambda_enter";
 
   for (const Implementation* im : impls) {
     if (!im->supports(cell.q)) continue;
@@ -258,17 +257,21 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       ++(a.pred ? st.pred_fp : st.pred_fn);
       st.pred_example.offer(0, i, seen, a.pred, t.pred);
     }
-    if (is_cast && !(a.cls && t.cls)) continue;  // lambdas and points exist only on a hit
     int c = 0;
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
-      const int w = qi.widths[g];
+      const Output& out = qi.outputs[g];
+      const int w = out.width;
+      const int at_c = c;
+      c += w;
+      // a cast's lambdas and points exist only on a hit, a separating axis only on a miss
+      if (out.when != Output::always && !(a.cls == t.cls && a.cls == (out.when == Output::on_hit))) continue;
       OutputStats& os = st.out[g];
       bool nonfinite = false;
       std::uint64_t worst = 0;
-      int at = c;
-      for (int k = c; k < c + w; ++k) {
+      int at = at_c;
+      for (int k = at_c; k < at_c + w; ++k) {
         if (!std::isfinite(a.v[k]) && std::isfinite(t.v[k])) nonfinite = true;
-        const std::uint64_t d = ulp_distance(a.v[k], t.v[k], im->precision);
+        const std::uint64_t d = out.label ? std::uint64_t(a.v[k] != t.v[k]) : ulp_distance(a.v[k], t.v[k], im->precision);
         if (d > worst) worst = d, at = k;
       }
       if (nonfinite)
@@ -277,7 +280,6 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
         os.hist.add(worst);
         os.worst.offer(worst, i, seen, a.v[at], t.v[at]);
       }
-      c += w;
     }
   }
 }

@@ -6,7 +6,7 @@
 // lying in face planes, degenerate placements, and magnitudes from 1e-300 to 1e300 (10^k
 // applied to a uniform case, k = -320..300: squares overflow past 1e154 and underflow below
 // 1e-154, and at k = -310 and -320 the coordinates themselves are subnormal).
-#include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/families.hpp>
 #include <cmath>
 #include <stdexcept>
 
@@ -403,14 +403,13 @@ std::vector<Family> box_shot_families(bool ray) {
 
 }  // namespace
 
-const std::vector<Family>& families(Query q) {
-  static const std::vector<std::vector<Family>> all = {
-      sphere_sphere_families(), sphere_shot_families(false), sphere_shot_families(true),
-      sphere_shot_families(false), box_box_families(), box_shot_families(false),
-      box_shot_families(true), sphere_box_families(),
-  };
-  return all.at(static_cast<std::size_t>(q));
-}
+std::vector<Family> sphere_sphere_family_list() { return sphere_sphere_families(); }
+std::vector<Family> sphere_shot_family_list(bool ray) { return sphere_shot_families(ray); }
+std::vector<Family> sphere_box_family_list() { return sphere_box_families(); }
+std::vector<Family> box_box_family_list() { return box_box_families(); }
+std::vector<Family> box_shot_family_list(bool ray) { return box_shot_families(ray); }
+
+const std::vector<Family>& families(Query q) { return info(q).families; }
 
 const Family& family_by_name(Query q, const std::string& name) {
   std::string names;
@@ -431,7 +430,7 @@ static std::uint64_t mix(std::uint64_t z) {
 
 Inputs make_case(std::uint64_t seed, Query q, const Family& f, int scale, std::uint64_t i) {
   std::uint64_t key = mix(seed);
-  key = mix(key ^ std::uint64_t(static_cast<int>(q)));
+  key = mix(key ^ std::uint64_t(q.id));
   for (char ch : f.name) key = mix(key ^ std::uint64_t(static_cast<unsigned char>(ch)));
   key = mix(key ^ std::uint64_t(std::int64_t(scale)));
   key = mix(key ^ i);

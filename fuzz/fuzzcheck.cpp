@@ -1,5 +1,5 @@
 // fuzz/fuzzcheck.cpp - the checks behind the fuzz targets (see fuzzcheck.hpp).
-#include <cdref/fuzz/eval.hpp>
+#include <cdref/error.hpp>
 #include <cdref/fuzz/fuzzcheck.hpp>
 #include <cmath>
 #include <cstdio>
@@ -25,10 +25,10 @@ bool same_value(long double a, long double b) {
   return (a == b && std::signbit(a) == std::signbit(b)) || (std::isnan(a) && std::isnan(b));
 }
 
-template <class T>
-bool refuses(Query q, const Inputs& in, Answer& out) {
+template <class Run>
+bool refuses(Run run, Answer& out) {
   try {
-    out = eval<T, double>(q, in);
+    out = run();
     return false;
   } catch (const invalid_input&) {
     return true;
@@ -58,84 +58,112 @@ bool decode_inputs(Query q, const std::uint8_t* data, std::size_t size, Inputs& 
 void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   Inputs in{};
   if (!decode_inputs(q, data, size, in)) return;
+  const QueryInfo& qi = info(q);
   Answer d, f;
-  const bool d_refused = refuses<double>(q, in, d);
+  const bool d_refused = refuses([&] { return qi.book(53, in); }, d);
   // float runs for crashes and undefined behaviour; what it refuses depends on its own
   // rounding of the inputs (overflow, a direction that underflows to zero)
-  refuses<float>(q, float_inputs(q, in), f);
-  for (std::size_t i = 0; i < info(q).inputs.size(); ++i)
+  const Inputs fin = float_inputs(q, in);
+  refuses([&] { return qi.book(24, fin); }, f);
+  for (std::size_t i = 0; i < qi.inputs.size(); ++i)
     if (!std::isfinite(in[i])) {
       if (!d_refused) violated(q, in, "a non-finite input was not refused");
-      return;  // exact types cannot hold it
+      // the exact paths refuse it by name, without a signal
+      Answer t;
+      if (!refuses([&] { return truth(q, in, 53); }, t)) violated(q, in, "the truth took a non-finite input");
+      if (!refuses([&] { return oracle_classify(q, in); }, t)) violated(q, in, "the oracle took a non-finite input");
+      return;
     }
   Answer g, l;
-  const bool g_refused = refuses<CGAL::Gmpq>(q, in, g);
-  const bool l_refused = refuses<CGAL::Epeck::FT>(q, in, l);
+  const bool g_refused = refuses([&] { return qi.book_exact(Exact::gmpq, in); }, g);
+  const bool l_refused = refuses([&] { return qi.book_exact(Exact::epeck, in); }, l);
   if (g_refused != l_refused) violated(q, in, "Gmpq and Epeck::FT disagree on refusing the input");
-  // box-box: the predicate column converts to min-max corners c +- e in the implementation's
-  // type; at double they may overflow where the exact types hold them (the book at double
-  // then refuses the min-max form: a documented limit of that conversion, not a disagreement)
-  bool corners_overflow = false;
-  if (q == Query::box_box)
-    for (int k : {0, 1, 2, 6, 7, 8})
-      corners_overflow = corners_overflow || !std::isfinite(in[k] + in[k + 3]) || !std::isfinite(in[k] - in[k + 3]);
-  if (g_refused != d_refused && !(corners_overflow && d_refused))
+  const bool may_refuse = qi.double_may_refuse && qi.double_may_refuse(in);
+  if (g_refused != d_refused && !(may_refuse && d_refused))
     violated(q, in, "double and the exact types disagree on refusing the input");
   if (g_refused) return;
   if (g.cls != l.cls || g.pred != l.pred) violated(q, in, "Gmpq and Epeck::FT classify differently");
   for (int k = 0; k < max_values; ++k)
     if (!same_value(g.v[k], l.v[k])) violated(q, in, "Gmpq and Epeck::FT give different values");
-  if (g.cls != g.pred) violated(q, in, "at an exact type the predicate and the full query disagree");
+  // the truth (the book at an exact type, or the query's exact formulation where the book
+  // assumes more than its inputs give)
+  const Answer t = truth(q, in, 53);
+  if (qi.book_is_truth) {
+    if (g.cls != g.pred) violated(q, in, "at an exact type the predicate and the full query disagree");
+    if (g.cls != t.cls) violated(q, in, "the truth differs from the book at Gmpq");
+  }
+  if (t.cls != t.pred) violated(q, in, "the truth's two formulations disagree");
   // the oracle (filter first, exact when it cannot decide) gives exactly the exact answer
   const Answer o = oracle_truth(q, in, 53);
-  if (o.cls != g.cls || o.pred != g.pred) violated(q, in, "the oracle classifies differently from Gmpq");
+  if (o.cls != t.cls || o.pred != t.pred) violated(q, in, "the oracle classifies differently from the truth");
   for (int k = 0; k < max_values; ++k)
-    if (!same_value(o.v[k], g.v[k])) violated(q, in, "the oracle's values differ from Gmpq's");
+    if (!same_value(o.v[k], t.v[k])) violated(q, in, "the oracle's values differ from the truth's");
   const Answer oc = oracle_classify(q, in);
-  if (oc.cls != g.cls || oc.pred != g.pred) violated(q, in, "the classification oracle differs from Gmpq");
+  if (oc.cls != t.cls || oc.pred != t.pred) violated(q, in, "the classification oracle differs from the truth");
   // the robust versions: a classification they call certain is the exact one
-  for (const char* name : {"robust-double", "robust-long-double"}) {
+  for (int precision : {53, 64}) {
     Answer r;
     try {
-      r = implementation_by_name(name).run(q, in);  // double inputs are exact in long double
+      r = qi.robust(precision, in);  // double inputs are exact in long double
     } catch (const invalid_input&) {
-      if (corners_overflow) continue;  // the min-max predicate column, as above
+      if (may_refuse) continue;  // as above
       violated(q, in, "a robust version refused an input the exact types take");
     }
     if (!r.certified) violated(q, in, "a robust version gave no certificate");
-    if (r.certain && r.cls != g.cls) violated(q, in, "a robust version is certain and wrong");
+    if (r.certain && r.cls != t.cls) violated(q, in, "a robust version is certain and wrong");
   }
   {
-    const Inputs fin = float_inputs(q, in);
     bool finite = true;
-    for (std::size_t i = 0; i < info(q).inputs.size(); ++i) finite = finite && std::isfinite(fin[i]);
-    Answer gf;
-    if (finite && !refuses<CGAL::Gmpq>(q, fin, gf)) {
+    for (std::size_t i = 0; i < qi.inputs.size(); ++i) finite = finite && std::isfinite(fin[i]);
+    Answer tf;
+    if (finite && !refuses([&] { return truth(q, fin, 53); }, tf)) {
       try {
-        const Answer r = implementation_by_name("robust-float").run(q, fin);
-        if (r.certain && r.cls != gf.cls) violated(q, fin, "robust float is certain and wrong");
+        const Answer r = qi.robust(24, fin);
+        if (r.certain && r.cls != tf.cls) violated(q, fin, "robust float is certain and wrong");
       } catch (const invalid_input&) {
         // float refuses what underflows in float (a direction rounded to zero)
       }
     }
   }
-  if (q == Query::segment_sphere) {
-    const Segment<CGAL::Gmpq> s{detail::v3<CGAL::Gmpq>(in, 0), detail::v3<CGAL::Gmpq>(in, 3)};
-    const Sphere<CGAL::Gmpq> sp{detail::v3<CGAL::Gmpq>(in, 6), CGAL::Gmpq(in[9])};
-    if (book::hit(s, sp) != g.cls) violated(q, in, "Algorithm 3.1 and Algorithm 3.2 disagree at Gmpq");
-  }
+  if (qi.fuzz_extra)
+    if (const char* why = qi.fuzz_extra(in)) violated(q, in, why);
 }
 
 void check_case_reader(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return;
   const Query q = all_queries()[data[0] % all_queries().size()];
-  std::istringstream text(std::string(reinterpret_cast<const char*>(data + 1), size - 1));
+  // Bytes 0xf0..0xff stand for the tokens a case file must survive, so that mutations make
+  // them often: non-finite values, literals beyond double's range, subnormals, empty fields.
+  static const char* const tokens[16] = {"nan", "-nan", "inf", "-inf", "1e400", "-1e400", "0x1p+2000",
+                                         "4.9406564584124654e-324", "0x1p-1074", "1e-400", "-0", "",
+                                         "0x1.fffffffffffffp+1023", "NaN", "Infinity", "2.2250738585072009e-308"};
+  std::string text;
+  for (std::size_t i = 1; i < size; ++i) {
+    const std::uint8_t b = data[i];
+    if (b >= 0xf0)
+      text += tokens[b - 0xf0];
+    else
+      text += char(b);
+  }
+  std::istringstream in(text);
   int bad = 0;
+  std::vector<cli::CaseRow> rows;
   try {
-    const auto rows = cli::parse_cases(q, text, "fuzz", bad);
+    rows = cli::parse_cases(q, in, "fuzz", bad);
     if (rows.size() > size) std::abort();  // at most one row a line
   } catch (const std::runtime_error&) {
-    // a header without the query's columns: refused by name, as documented
+    return;  // a header without the query's columns: refused by name, as documented
+  }
+  // every row is answered as `cdref oracle` answers it, or refused by name (never a signal)
+  std::size_t answered = 0;
+  for (const cli::CaseRow& r : rows) {
+    if (answered++ >= 16) break;
+    for (int precision : {53, 24}) {
+      try {
+        cli::answer_case(q, r, precision);
+      } catch (const invalid_input&) {
+      }
+    }
   }
 }
 

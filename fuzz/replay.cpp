@@ -1,6 +1,10 @@
 // fuzz/replay.cpp - replays a fuzz corpus through the same checks as the libFuzzer targets,
-// in any build (g++ included): cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...
-// TARGET is a query name or "casefile". Prints the number of inputs replayed.
+// in any build (g++ included):
+//   cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...   TARGET is a query name or "casefile"
+//   cdref_fuzz_replay --all CORPUS                  every query's CORPUS/<query> and
+//                                                   CORPUS/casefile, each required non-empty
+//   cdref_fuzz_replay --list                        the targets, one a line
+// Prints the number of inputs replayed per target.
 #include <cdref/fuzz/fuzzcheck.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -9,21 +13,17 @@
 #include <string>
 #include <vector>
 
-int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...\n");
-    return 2;
-  }
-  const std::string target = argv[1];
+namespace {
+
+std::size_t replay(const std::string& target, const std::vector<std::filesystem::path>& paths) {
   const bool casefile = target == "casefile";
-  const cdref::fuzz::Query q = casefile ? cdref::fuzz::Query::sphere_sphere : cdref::fuzz::query_by_name(target);
+  const cdref::fuzz::Query q = casefile ? cdref::fuzz::Query{} : cdref::fuzz::query_by_name(target);
   std::vector<std::filesystem::path> files;
-  for (int i = 2; i < argc; ++i) {
-    const std::filesystem::path p = argv[i];
+  for (const auto& p : paths) {
     if (std::filesystem::is_directory(p)) {
       for (const auto& e : std::filesystem::directory_iterator(p))
         if (e.is_regular_file()) files.push_back(e.path());
-    } else {
+    } else if (std::filesystem::exists(p)) {
       files.push_back(p);
     }
   }
@@ -37,5 +37,33 @@ int main(int argc, char** argv) {
       cdref::fuzz::check_query(q, data, bytes.size());
   }
   std::printf("%s: %zu inputs replayed, all checks held\n", target.c_str(), files.size());
-  return files.empty() ? 1 : 0;
+  return files.size();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string first = argc > 1 ? argv[1] : "";
+  std::vector<std::string> targets;
+  for (cdref::fuzz::Query q : cdref::fuzz::all_queries()) targets.push_back(cdref::fuzz::info(q).name);
+  targets.push_back("casefile");
+  if (first == "--list") {
+    for (const auto& t : targets) std::printf("%s\n", t.c_str());
+    return 0;
+  }
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: cdref_fuzz_replay TARGET FILE-OR-DIRECTORY... | --all CORPUS | --list\n");
+    return 2;
+  }
+  if (first == "--all") {
+    int empty = 0;
+    for (const auto& t : targets)
+      if (replay(t, {std::filesystem::path(argv[2]) / t}) == 0) {
+        std::fprintf(stderr, "%s: no corpus in %s/%s\n", t.c_str(), argv[2], t.c_str());
+        ++empty;
+      }
+    return empty ? 1 : 0;
+  }
+  std::vector<std::filesystem::path> paths(argv + 2, argv + argc);
+  return replay(first, paths) ? 0 : 1;
 }

@@ -3,20 +3,22 @@
 
 usage: scripts/make_corpus.py CDREF
 
-For each query: two cases of every family (from `cdref cases`), encoded as the fuzz
-targets decode them (a mode byte 0xff then 8 raw bytes per input), plus small exact
-cases in the dyadic encoding (a mode byte k < 192, then an int8: the value int8 / 2^(k%8)).
-For the case-file reader: small case files, good and malformed.
+For each query (`cdref describe`): two cases of every family (from `cdref cases`), encoded as
+the fuzz targets decode them (a mode byte 0xff then 8 raw bytes per input), plus small exact
+cases in the dyadic encoding (a mode byte k < 192, then an int8: the value int8 / 2^(k%8)):
+the hand-made ones below, or else the degenerate family's first cases rounded to halves.
+For the case-file reader: small case files, good and malformed, and with the tokens a case file
+must survive (non-finite values, literals beyond double's range, subnormals, empty fields).
 """
 import os, struct, subprocess, sys
 
 cdref = sys.argv[1]
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus")
-queries = ["sphere-sphere", "segment-sphere-cast", "ray-sphere-cast", "segment-sphere", "box-box",
-           "segment-box-cast", "ray-box-cast", "sphere-box"]
 
 def run(*args):
     return subprocess.run([cdref, *args], check=True, capture_output=True, text=True).stdout
+
+queries = [line.split(":")[0] for line in run("describe").splitlines() if line and not line.startswith(" ")]
 
 def families(q):
     out = run("describe")
@@ -45,6 +47,15 @@ exact = {
     "sphere-box": [[3, 5, 9, 7, 0, 0, 0, 1, 2, 3], [1, 0, 0, 1, 0, 0, 0, 1, 2, 3], [0, 0, 0, 1, 0, 0, 0, 0, 0, 0]],
 }
 
+def halves(q):
+    """The degenerate (or uniform) family's first cases, rounded to multiples of 1/2 within int8."""
+    fam = "degenerate" if "degenerate" in families(q) else "uniform"
+    lines = run("cases", "--query", q, "--family", fam, "--n", "3", "--seed", "5").splitlines()[1:]
+    return [[max(-128, min(127, round(2 * float.fromhex(c)))) for c in row.split(",")[3:]] for row in lines]
+
+def halves_encoded(vals):
+    return b"".join(bytes([1, v & 0xff]) for v in vals)
+
 for q in queries:
     d = os.path.join(root, q)
     os.makedirs(d, exist_ok=True)
@@ -56,12 +67,13 @@ for q in queries:
             data = b"".join(b"\xff" + struct.pack("<d", float.fromhex(c)) for c in cells[3:])
             with open(os.path.join(d, f"{fam}-{cells[0]}.bin"), "wb") as f:
                 f.write(data)
-    for i, vals in enumerate(exact[q]):
+    cases = [dyadic(v) for v in exact[q]] if q in exact else [halves_encoded(v) for v in halves(q)]
+    for i, data in enumerate(cases):
         with open(os.path.join(d, f"exact-{i}.bin"), "wb") as f:
-            f.write(dyadic(vals))
+            f.write(data)
     # non-finite inputs, which must be refused
     with open(os.path.join(d, "nan.bin"), "wb") as f:
-        f.write(b"\xff" + struct.pack("<d", float("nan")) + dyadic(exact[q][0][1:]))
+        f.write(b"\xff" + struct.pack("<d", float("nan")) + cases[0][2:])
 
 d = os.path.join(root, "casefile")
 os.makedirs(d, exist_ok=True)
@@ -73,6 +85,12 @@ samples = {
     "bad-number": bytes([1]) + (good + "8,uniform,0,x,1,2,3,4,5,6,7,8,9\n").encode(),
     "no-header": bytes([0]) + b"1,2,3\n",
     "empty": bytes([2]),
+    # bytes 0xf0.. stand for tokens (fuzz/fuzzcheck.cpp): nan, -nan, inf, -inf, 1e400, -1e400,
+    # 0x1p+2000, the smallest subnormal (decimal and hex), 1e-400, -0, an empty field, ...
+    "nonfinite-tokens": bytes([1]) + good.encode() + b"".join(
+        b"%d,uniform,0" % (10 + t) + (b"," + bytes([0xf0 + t])) + b",1" * 9 + b"\n" for t in range(16)),
+    "nonfinite-literal": bytes([1]) + (good + "40,uniform,0,nan,1,2,3,inf,5,6,-inf,8,1e400\n"
+                                       "41,uniform,0,0x1p+2000,1,2,3,4,5,6,7,8,4.9e-324\n").encode(),
 }
 for name, data in samples.items():
     with open(os.path.join(d, name + ".txt"), "wb") as f:

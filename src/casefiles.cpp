@@ -69,6 +69,15 @@ bool parse_id(const std::string& t, std::uint64_t& x) {
   return end == t.c_str() + t.size();
 }
 
+// A literal beyond double's range (1e400, 0x1p+2000) is read as infinity: named here, since
+// the refusal of the infinity later could not show what was written ("" when none is).
+std::string overflowing_literal(const QueryInfo& qi, const CaseRow& r, const std::vector<std::string>& tokens) {
+  for (std::size_t k = 0; k < qi.inputs.size(); ++k)
+    if (std::isinf(r.in[k]) && tokens[k].find_first_of("iI") == std::string::npos)
+      return qi.inputs[k] + " '" + tokens[k] + "' is beyond the range of double";
+  return "";
+}
+
 std::string fmt_real(double x, bool decimal) {
   char b[64];
   std::snprintf(b, sizeof b, decimal ? "%.17g" : "%a", x);
@@ -100,18 +109,13 @@ std::vector<Column> answer_columns(Query q) {
   std::vector<Column> cols = {{qi.cls_name, 0, 0, -1}, {"predicate", 1, 0, -1}};
   int k = 0;
   for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
-    if (qi.widths[g] == 1) {
-      cols.push_back({qi.outputs[g], 2, k++, int(g)});
+    if (qi.outputs[g].width == 1) {
+      cols.push_back({qi.outputs[g].name, 2, k++, int(g)});
     } else {
-      for (const char* ax : {"_x", "_y", "_z"}) cols.push_back({qi.outputs[g] + ax, 2, k++, int(g)});
+      for (const char* ax : {"_x", "_y", "_z"}) cols.push_back({qi.outputs[g].name + ax, 2, k++, int(g)});
     }
   }
   return cols;
-}
-
-bool is_cast(Query q) {
-  const QueryInfo& qi = info(q);
-  return !qi.outputs.empty() && qi.outputs[0] == "lambda_enter";
 }
 
 struct Opts {
@@ -211,15 +215,32 @@ std::vector<CaseRow> parse_cases(Query q, std::istream& in, const std::string& p
       continue;
     }
     bool ok = true;
-    for (std::size_t k = 0; k < qi.inputs.size() && ok; ++k)
+    std::vector<std::string> tokens;
+    for (std::size_t k = 0; k < qi.inputs.size() && ok; ++k) {
+      tokens.push_back(cells[where[k]]);
       if (!parse_real(cells[where[k]], r.in[k])) {
         complain(qi.inputs[k] + " '" + cells[where[k]] + "' is not a number");
         ok = false;
       }
-    if (ok) rows.push_back(r);
+    }
+    if (!ok) continue;
+    r.refusal = overflowing_literal(qi, r, tokens);
+    rows.push_back(r);
   }
   if (id_col < 0) throw std::runtime_error(path + ": no header line");
   return rows;
+}
+
+Answer answer_case(Query q, const CaseRow& r, int precision) {
+  if (!r.refusal.empty()) throw invalid_input(r.refusal);
+  if (precision == 24) {
+    const Inputs in = float_inputs(q, r.in);
+    for (std::size_t k = 0; k < info(q).inputs.size(); ++k)
+      if (std::isfinite(r.in[k]) && !std::isfinite(in[k]))
+        throw invalid_input(info(q).inputs[k] + " is beyond the range of float (" + hexfloat(r.in[k]) + ")");
+    return truth(q, in, precision);
+  }
+  return truth(q, r.in, precision);
 }
 
 namespace {
@@ -237,15 +258,9 @@ int cases_command(std::vector<std::string> args) {
     for (const auto& c : qi.inputs) std::cout << "," << c;
     std::cout << "\n(family and scale columns, when present, are ignored on reading)\n\nanswer file columns: case";
     for (const auto& c : answer_columns(q)) std::cout << "," << c.name;
-    std::cout << "\n  " << qi.cls_name << ": 1/0, the full query's classification (" << (is_cast(q) ? "cast().hit" : "proximity().intersect")
-              << ")\n  predicate: 1/0, the root- and division-free test (" << qi.pred_name << ")\n";
-    if (is_cast(q))
-      std::cout << "  lambda_enter, lambda_exit: the hit interval (graded only where both say hit)\n"
-                   "  point_[xyz]: the entry point; normal_[xyz]: the outward unit normal there (0 when the\n"
-                   "  source is inside)\n";
-    else if (!qi.outputs.empty())
-      std::cout << "  distance, depth: distance and penetration depth\n"
-                   "  witness_a_[xyz], witness_b_[xyz]: the witness points on the first and second argument\n";
+    std::cout << "\n  " << qi.cls_name << ": 1/0, the full query's classification (" << qi.full_call
+              << ")\n  predicate: 1/0, the other formulation of the classification (" << qi.pred_name << ")\n"
+              << qi.answer_help;
     std::cout << "An answer file may give any subset of these columns; only those are graded.\n";
     return 0;
   }
@@ -284,10 +299,9 @@ int oracle_command(std::vector<std::string> args) {
   for (const CaseRow& r : rows) {
     // at precision 24 the answer is for the inputs rounded to float, as a float
     // implementation receives them
-    const Inputs in = precision == 24 ? float_inputs(q, r.in) : r.in;
     Answer t;
     try {
-      t = truth(q, in, precision);
+      t = answer_case(q, r, precision);
     } catch (const invalid_input& e) {
       std::cerr << "case " << r.id << ": " << e.what() << "; no answer\n";
       ++bad;
@@ -367,18 +381,19 @@ int score_command(std::vector<std::string> args) {
   std::map<int, ColStats> stats;
   std::uint64_t unanswered = 0, graded_cases = 0;
   for (const CaseRow& r : rows) {
-    auto it = answers.find(r.id);
-    if (it == answers.end()) {
-      ++unanswered;
-      continue;
-    }
+    // a case outside the query's domain is refused by name, answered or not
+    const auto it = answers.find(r.id);
     const Inputs in = precision == 24 ? float_inputs(q, r.in) : r.in;
     Answer t;
     try {
-      t = truth(q, in, precision);
+      t = answer_case(q, r, precision);
     } catch (const invalid_input& e) {
       std::cerr << "case " << r.id << ": " << e.what() << "; not graded\n";
       ++bad;
+      continue;
+    }
+    if (it == answers.end()) {
+      ++unanswered;
       continue;
     }
     // their classification, if given, gates the values of a cast
@@ -417,14 +432,18 @@ int score_command(std::vector<std::string> args) {
         }
         continue;
       }
-      if (is_cast(q) && !(t.cls && their_hit.value_or(true))) continue;  // values exist only on a hit
+      // a cast's values exist only on a hit, a separating axis only on a miss: graded where
+      // both the truth and the answer (when it gives its classification) say so
+      const Output& out = info(q).outputs[col.group];
+      if (out.when == Output::on_hit && !(t.cls && their_hit.value_or(true))) continue;
+      if (out.when == Output::on_miss && !(!t.cls && !their_hit.value_or(false))) continue;
       ++cs.graded;
       const long double want = t.v[col.index];
       if (!std::isfinite(vals[c]) && std::isfinite(want)) {
         ++cs.s.nonfinite;
         continue;
       }
-      const std::uint64_t d = ulp_distance(vals[c], want, precision);
+      const std::uint64_t d = out.label ? std::uint64_t(vals[c] != want) : ulp_distance(vals[c], want, precision);
       cs.s.hist.add(d);
       cs.s.worst.offer(d, r.id, in, vals[c], want);
     }

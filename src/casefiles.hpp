@@ -14,12 +14,21 @@ namespace cdref::cli {
 struct CaseRow {
   std::uint64_t id;
   fuzz::Inputs in{};
+  std::string refusal;  // why no exact answer exists (a non-finite input, by column), or ""
 };
 
 // Reads a case file of query q. Malformed lines are reported on standard error with
 // `source` and their line number, counted in `bad`, and skipped; a header without the
-// query's columns throws std::runtime_error.
+// query's columns throws std::runtime_error. A well-formed line whose numbers are not finite
+// (nan, inf, or a literal beyond double's range such as 1e400) is kept with its `refusal`:
+// `oracle` and `score` refuse that case by name and answer the rest.
 std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::string& source, int& bad);
+
+// The exact answer to a case at the precision (24: for the inputs rounded to float, as a float
+// implementation receives them), as `cdref oracle` writes it. Throws cdref::invalid_input
+// naming the problem for a case outside the query's domain, non-finite inputs included (they
+// are refused by column before any exact conversion).
+fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision);
 
 int cases_command(std::vector<std::string> args);
 int oracle_command(std::vector<std::string> args);

@@ -18,27 +18,14 @@
 // oracle's equality with the exact path is tested); MPFR's error is not measured here.
 // Output: the table, and on request CSV, JSON and an SVG of cost against error (log-log, one
 // point per row, one panel per query; gnuplot).
-#include <cdref/exact/cgal_kernels.hpp>
-
 #include <algorithm>
-#include <cdref/exact.hpp>
-#include <cdref/float/mpfr.hpp>
 #include <cdref/fuzz/campaign.hpp>
-#include <cdref/fuzz/eval.hpp>
-#include <cdref/fuzz/primitives_of.hpp>
-#include <cdref/robust/box_box.hpp>
-#include <cdref/robust/ray_box.hpp>
-#include <cdref/robust/ray_sphere.hpp>
-#include <cdref/robust/segment_sphere.hpp>
-#include <cdref/robust/sphere_box.hpp>
-#include <cdref/robust/sphere_sphere.hpp>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -53,184 +40,8 @@ using namespace cdref::fuzz;
 
 namespace {
 
-// The primitives of each query, in the column order of the campaign's case files.
-template <class T>
-struct Pair2 {
-  std::vector<Sphere<T>> sa;
-  std::vector<Segment<T>> seg;
-  std::vector<Ray<T>> ray;
-  std::vector<Box<T>> ba;
-  std::vector<Sphere<T>> sb;
-  std::vector<Box<T>> bb;
-};
-
-template <class T> void keep(Pair2<T>& p, const Sphere<T>& x, bool first) { (first ? p.sa : p.sb).push_back(x); }
-template <class T> void keep(Pair2<T>& p, const Box<T>& x, bool first) { (first ? p.ba : p.bb).push_back(x); }
-template <class T> void keep(Pair2<T>& p, const Segment<T>& x, bool) { p.seg.push_back(x); }
-template <class T> void keep(Pair2<T>& p, const Ray<T>& x, bool) { p.ray.push_back(x); }
-
-template <class T>
-std::shared_ptr<Pair2<T>> prepare(Query q, const std::vector<Inputs>& cases) {
-  auto p = std::make_shared<Pair2<T>>();
-  for (const Inputs& in : cases)
-    with_primitives<T>(q, in, [&p](const auto& a, const auto& b, bool) {
-      keep(*p, a, true);
-      keep(*p, b, false);
-      return 0;
-    });
-  return p;
-}
-
-// What a row does with case k: Mode::full computes every output, Mode::classify the
-// classification alone (book::hit / book::intersect); Mode::first_rounded computes every
-// output and rounds the first correctly to double (exact types).
-enum class Mode { full, classify, first_rounded };
-
-template <class X>
-double first_rounded(const X& x) {
-  return round_double(x);
-}
-
-// The book (namespace B = book) or the robust versions (B = robust) on prepared case k.
-#define CDREF_REPORT_DISPATCH(NS)                                                                        \
-  template <class T>                                                                                   \
-  bool NS##_run(Query q, const Pair2<T>& p, std::size_t k, Mode m) {                                   \
-    switch (q) {                                                                                       \
-      case Query::sphere_sphere:                                                                       \
-        if (m == Mode::classify) return NS::intersect(p.sa[k], p.sb[k]);                               \
-        return finish(NS::proximity(p.sa[k], p.sb[k]), m);                                             \
-      case Query::segment_sphere_cast:                                                                 \
-        if (m == Mode::classify) return NS::hit(p.seg[k], p.sb[k]);                                    \
-        return finish(NS::cast(p.seg[k], p.sb[k]), m);                                                 \
-      case Query::ray_sphere_cast:                                                                     \
-        if (m == Mode::classify) return NS::hit(p.ray[k], p.sb[k]);                                    \
-        return finish(NS::cast(p.ray[k], p.sb[k]), m);                                                 \
-      case Query::segment_sphere:                                                                      \
-        if (m == Mode::classify) return NS::intersect(p.seg[k], p.sb[k]);                              \
-        return finish(NS::proximity(p.seg[k], p.sb[k]), m);                                            \
-      case Query::box_box:                                                                             \
-        return NS::intersect(p.ba[k], p.bb[k]);                                                        \
-      case Query::segment_box_cast:                                                                    \
-        if (m == Mode::classify) return NS::hit(p.seg[k], p.bb[k]);                                    \
-        return finish(NS::cast(p.seg[k], p.bb[k]), m);                                                 \
-      case Query::ray_box_cast:                                                                        \
-        if (m == Mode::classify) return NS::hit(p.ray[k], p.bb[k]);                                    \
-        return finish(NS::cast(p.ray[k], p.bb[k]), m);                                                 \
-      case Query::sphere_box:                                                                          \
-        if (m == Mode::classify) return NS::intersect(p.sa[k], p.bb[k]);                               \
-        return finish(NS::proximity(p.sa[k], p.bb[k]), m);                                             \
-    }                                                                                                  \
-    return false;                                                                                      \
-  }
-
-template <class S>
-bool finish(const Cast<S>& c, Mode m) {
-  if (m == Mode::first_rounded) return c.hit != (first_rounded(c.lambda_enter) < 0);  // never negative
-  return c.hit;
-}
-template <class S>
-bool finish(const Proximity<S>& p, Mode m) {
-  if (m == Mode::first_rounded) return p.intersect != (first_rounded(p.distance) < 0);  // never negative
-  return p.intersect;
-}
-
-CDREF_REPORT_DISPATCH(book)
-CDREF_REPORT_DISPATCH(robust)
-#undef CDREF_REPORT_DISPATCH
-
-// CGAL's kernels, classification in closed-solid semantics.
-template <class K>
-struct CgalCases {
-  std::vector<typename K::Sphere_3> sa, sb;
-  std::vector<typename K::Segment_3> seg;
-  std::vector<typename K::Ray_3> ray;
-  std::vector<typename K::Iso_cuboid_3> ba, bb;
-};
-
-template <class K>
-std::shared_ptr<CgalCases<K>> prepare_cgal(Query q, const std::vector<Inputs>& cases) {
-  using FT = typename K::FT;
-  using P = typename K::Point_3;
-  auto pt = [](const Inputs& in, int i) { return P(FT(in[i]), FT(in[i + 1]), FT(in[i + 2])); };
-  auto sphere = [&](const Inputs& in, int c, int r) {
-    const FT rho(in[r]);
-    return typename K::Sphere_3(pt(in, c), rho * rho);  // CGAL takes the squared radius
-  };
-  auto cuboid = [](const Inputs& in, int c, int h) {
-    FT lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = FT(in[c + i]) - FT(in[h + i]);
-      hi[i] = FT(in[c + i]) + FT(in[h + i]);
-    }
-    return typename K::Iso_cuboid_3(P(lo[0], lo[1], lo[2]), P(hi[0], hi[1], hi[2]));
-  };
-  auto p = std::make_shared<CgalCases<K>>();
-  for (const Inputs& in : cases) {
-    switch (q) {
-      case Query::sphere_sphere:
-        p->sa.push_back(sphere(in, 0, 3));
-        p->sb.push_back(sphere(in, 4, 7));
-        break;
-      case Query::segment_sphere_cast:
-      case Query::segment_sphere:
-        p->seg.emplace_back(pt(in, 0), pt(in, 3));
-        p->sb.push_back(sphere(in, 6, 9));
-        break;
-      case Query::ray_sphere_cast:
-        p->ray.emplace_back(pt(in, 0), typename K::Vector_3(FT(in[3]), FT(in[4]), FT(in[5])));
-        p->sb.push_back(sphere(in, 6, 9));
-        break;
-      case Query::box_box:
-        p->ba.push_back(cuboid(in, 0, 3));
-        p->bb.push_back(cuboid(in, 6, 9));
-        break;
-      case Query::segment_box_cast:
-        p->seg.emplace_back(pt(in, 0), pt(in, 3));
-        p->bb.push_back(cuboid(in, 6, 9));
-        break;
-      case Query::ray_box_cast:
-        p->ray.emplace_back(pt(in, 0), typename K::Vector_3(FT(in[3]), FT(in[4]), FT(in[5])));
-        p->bb.push_back(cuboid(in, 6, 9));
-        break;
-      case Query::sphere_box:
-        p->sa.push_back(sphere(in, 0, 3));
-        p->bb.push_back(cuboid(in, 4, 7));
-        break;
-    }
-  }
-  return p;
-}
-
-template <class K>
-bool cgal_run(Query q, const CgalCases<K>& p, std::size_t k) {
-  switch (q) {
-    case Query::sphere_sphere:  // surfaces meet, or one centre inside the other ball
-      return CGAL::do_intersect(p.sa[k], p.sb[k]) || p.sa[k].bounded_side(p.sb[k].center()) != CGAL::ON_UNBOUNDED_SIDE ||
-             p.sb[k].bounded_side(p.sa[k].center()) != CGAL::ON_UNBOUNDED_SIDE;
-    case Query::segment_sphere_cast:
-    case Query::segment_sphere:  // the surface, or a segment inside the open ball
-      return CGAL::do_intersect(p.seg[k], p.sb[k]) || p.sb[k].has_on_bounded_side(p.seg[k].source());
-    case Query::ray_sphere_cast:
-      return CGAL::do_intersect(p.ray[k], p.sb[k]);
-    case Query::box_box:
-      return CGAL::do_intersect(p.ba[k], p.bb[k]);
-    case Query::segment_box_cast:
-      return CGAL::do_intersect(p.seg[k], p.bb[k]);
-    case Query::ray_box_cast:
-      return CGAL::do_intersect(p.ray[k], p.bb[k]);
-    case Query::sphere_box:
-      return CGAL::do_intersect(p.sa[k], p.bb[k]);
-  }
-  return false;
-}
-
-struct Row {
-  std::string name;
-  std::string campaign_impl;  // the campaign implementation measuring its error ("" none)
-  std::string error_note;     // shown when there is no campaign row
-  std::function<bool(std::size_t)> run;  // evaluates prepared case k; returns the classification
+struct Row : TimedRow {
   double ns = 0;
-  bool hard = false;  // timed on the near-boundary cases instead of the uniform ones
   // errors, from the campaign
   bool measured = false;
   double miss_uniform = 0, miss_hard = 0;
@@ -260,42 +71,6 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   std::vector<Inputs> cases;
   for (std::uint64_t i = 0; i < n; ++i) cases.push_back(make_case(1, q, uni, uni.scales.front(), i));
 
-  auto pf = prepare<float>(q, cases);
-  auto pd = prepare<double>(q, cases);
-  auto pl = prepare<long double>(q, cases);
-  auto pq = prepare<CGAL::Gmpq>(q, cases);
-  auto pe = prepare<CGAL::Epeck::FT>(q, cases);
-  auto px = prepare<CORE::Expr>(q, cases);
-  auto ck = prepare_cgal<CGAL::Epick>(q, cases);
-  auto ce = prepare_cgal<CGAL::Epeck>(q, cases);
-  const bool values = !info(q).outputs.empty();
-  const Mode full = values ? Mode::full : Mode::classify;
-
-  QueryReport rep{q, {}, 0, 0};
-  auto& rows = rep.rows;
-  rows.push_back({"book float", "book-float", "", [=](std::size_t k) { return book_run(q, *pf, k, full); }});
-  rows.push_back({"book double", "book-double", "", [=](std::size_t k) { return book_run(q, *pd, k, full); }});
-  if (values)
-    rows.push_back({"book double, classification", "", "as above",
-                    [=](std::size_t k) { return book_run(q, *pd, k, Mode::classify); }});
-  rows.push_back(
-      {"book long double", "book-long-double", "", [=](std::size_t k) { return book_run(q, *pl, k, full); }});
-  for (int bits : {128, 256}) {
-    const mpfr_precision at{bits};  // inputs made at this precision
-    auto pm = prepare<mpfr::mpreal>(q, cases);
-    rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured", [=](std::size_t k) {
-                      const mpfr_precision again{bits};  // and the constants it makes
-                      return book_run(q, *pm, k, full);
-                    }});
-  }
-  rows.push_back({"robust float", "robust-float", "", [=](std::size_t k) { return robust_run(q, *pf, k, full); }});
-  rows.push_back({"robust double", "robust-double", "", [=](std::size_t k) { return robust_run(q, *pd, k, full); }});
-  rows.push_back({"robust long double", "robust-long-double", "",
-                  [=](std::size_t k) { return robust_run(q, *pl, k, full); }});
-  rows.push_back({"oracle, classification", "", "exact", [q, &cases](std::size_t k) { return oracle_classify(q, cases[k]).cls; }});
-  if (values)
-    rows.push_back({"oracle, every output rounded", "", "exact",
-                    [q, &cases](std::size_t k) { return oracle_truth(q, cases[k], 53).cls; }});
   // the oracle where its filters fail by nature: the query's near-boundary family at its
   // hardest scale (2^-52 from tangency or touching, or grazing edges and corners)
   const Family* hp = nullptr;
@@ -308,20 +83,12 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   for (std::uint64_t i = 0; i < std::max<std::uint64_t>(1, n / 4); ++i)
     hard_cases.push_back(make_case(1, q, hard, hard.scales.back(), i));
   const std::string hard_name = " (" + hard.name + " " + std::to_string(hard.scales.back()) + ")";
-  rows.push_back({"oracle, classification" + hard_name, "", "exact",
-                  [q, &hard_cases](std::size_t k) { return oracle_classify(q, hard_cases[k]).cls; }});
-  rows.back().hard = true;
-  if (values) {
-    rows.push_back({"oracle, every output" + hard_name, "", "exact",
-                    [q, &hard_cases](std::size_t k) { return oracle_truth(q, hard_cases[k], 53).cls; }});
-    rows.back().hard = true;
+  QueryReport rep{q, {}, 0, 0};
+  auto& rows = rep.rows;
+  for (TimedRow& t : info(q).timed_rows(cases, hard_cases, hard_name)) {
+    rows.emplace_back();
+    static_cast<TimedRow&>(rows.back()) = std::move(t);
   }
-  const Mode exact_mode = values ? Mode::first_rounded : Mode::classify;
-  rows.push_back({"book at Gmpq", "", "exact", [=](std::size_t k) { return book_run(q, *pq, k, exact_mode); }});
-  rows.push_back({"book at Epeck::FT", "", "exact", [=](std::size_t k) { return book_run(q, *pe, k, exact_mode); }});
-  rows.push_back({"book at CORE::Expr", "", "exact", [=](std::size_t k) { return book_run(q, *px, k, exact_mode); }});
-  rows.push_back({"CGAL do_intersect, Epick", "", "exact", [=](std::size_t k) { return cgal_run(q, *ck, k); }});
-  rows.push_back({"CGAL do_intersect, Epeck", "", "exact", [=](std::size_t k) { return cgal_run(q, *ce, k); }});
 
   // timing: every row over the same inputs, `reps` times, interleaved; the median per row.
   // Every row must agree with the oracle's classification on every input it times (the
@@ -350,7 +117,7 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     std::sort(times[j].begin(), times[j].end());
     rows[j].ns = times[j][times[j].size() / 2];
   }
-  rep.base = rows[1].ns;
+  rep.base = rows.at(1).ns;  // the second row is the book at double
   rep.sink = sink;
 
   // accuracy: a campaign over every family of the query

@@ -249,7 +249,7 @@ int describe() {
     for (const auto& c : qi.inputs) std::cout << " " << c;
     std::cout << "\n  outputs: " << qi.cls_name << " (full query), " << qi.pred_name << " (predicate)";
     for (std::size_t g = 0; g < qi.outputs.size(); ++g)
-      std::cout << ", " << qi.outputs[g] << (qi.widths[g] == 3 ? "[xyz]" : "");
+      std::cout << ", " << qi.outputs[g].name << (qi.outputs[g].width == 3 ? "[xyz]" : "");
     std::cout << "\n  families:\n";
     for (const Family& f : families(q)) {
       std::cout << "    " << f.name << " (scales";

@@ -44,7 +44,7 @@ int plot_command(std::vector<std::string> args) {
   if (!output.empty()) {
     group = -1;
     for (std::size_t g = 0; g < qi.outputs.size(); ++g)
-      if (qi.outputs[g] == output) group = int(g);
+      if (qi.outputs[g].name == output) group = int(g);
     if (group < 0) throw std::invalid_argument("query " + query + " has no output '" + output + "'");
   }
   if (out.empty()) out = "drift-" + query + "-" + family + ".svg";
@@ -84,7 +84,7 @@ int plot_command(std::vector<std::string> args) {
   }
   FILE* gp = popen("gnuplot", "w");
   if (!gp) throw std::runtime_error("cannot run gnuplot (install gnuplot-nox)");
-  const std::string what = group >= 0 ? qi.outputs[group] : "";
+  const std::string what = group >= 0 ? qi.outputs[group].name : "";
   // columns: 1 scale, then per implementation i: 2+4i misclassified, 3+4i predicate, 4+4i p99, 5+4i max
   std::string miss_plot, err_plot;
   for (std::size_t i = 0; i < spec.impls.size(); ++i) {

@@ -96,7 +96,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     s.nonfinite += w.nonfinite;
     if (w.group >= 0 && w.max >= s.max) {
       s.max = w.max;
-      s.max_where = info(k.query).outputs[w.group] + " in " + k.family + "/" + std::to_string(k.scale);
+      s.max_where = info(k.query).outputs[w.group].name + " in " + k.family + "/" + std::to_string(k.scale);
     }
   }
   char line[512];
@@ -159,7 +159,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     const std::string p = std::to_string(st->pred_fp) + "/" + std::to_string(st->pred_fn);
     std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
                   info(k.query).name, k.impl.c_str(), fam.c_str(), (unsigned long long)st->n, c.c_str(), p.c_str(),
-                  w.group < 0 ? "-" : info(k.query).outputs[w.group].c_str(), num(double(w.p50)).c_str(),
+                  w.group < 0 ? "-" : info(k.query).outputs[w.group].name.c_str(), num(double(w.p50)).c_str(),
                   num(double(w.p99)).c_str(), num(double(w.max)).c_str());
     o << line;
   }
@@ -200,7 +200,7 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
     o << ",\n     \"outputs\": {";
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];
-      o << (g ? ", " : "") << "\n       " << json_str(qi.outputs[g]) << ": {\"count\": " << os.hist.total()
+      o << (g ? ", " : "") << "\n       " << json_str(qi.outputs[g].name) << ": {\"count\": " << os.hist.total()
         << ", \"nonfinite\": " << os.nonfinite << ", \"p50\": " << os.hist.quantile(0.5)
         << ", \"p99\": " << os.hist.quantile(0.99) << ", \"max\": " << (os.worst.set ? os.worst.metric : 0)
         << ", \"histogram_pow2\": {";
@@ -240,7 +240,7 @@ void write_csv(std::ostream& o, const Results& r) {
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];
       head();
-      o << qi.outputs[g] << "," << os.hist.total() << "," << os.nonfinite << "," << os.hist.quantile(0.5) << ","
+      o << qi.outputs[g].name << "," << os.hist.total() << "," << os.nonfinite << "," << os.hist.quantile(0.5) << ","
         << os.hist.quantile(0.99) << "," << (os.worst.set ? os.worst.metric : 0) << ","
         << (os.worst.set ? std::to_string(os.worst.index) : "") << "\n";
     }

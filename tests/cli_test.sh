@@ -8,8 +8,10 @@ trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# every query: cases -> oracle -> score grades the oracle as exact
-for q in sphere-sphere segment-sphere-cast ray-sphere-cast segment-sphere box-box segment-box-cast ray-box-cast sphere-box; do
+# every query (from its descriptor): cases -> oracle -> score grades the oracle as exact
+queries=$("$cdref" describe | awk -F: '/^[a-z]/ {print $1}')
+[ "$(echo "$queries" | wc -l)" -ge 8 ] || fail "describe lists $(echo "$queries" | wc -l) queries"
+for q in $queries; do
   "$cdref" cases --query "$q" --family degenerate --n 60 --seed 3 --out c.csv
   [ "$(wc -l < c.csv)" = 61 ] || fail "$q: cases wrote $(wc -l < c.csv) lines"
   "$cdref" oracle --query "$q" --cases c.csv --out a.csv
@@ -55,6 +57,33 @@ set -e
 grep -q "badc.csv:4: expected 13 fields, found 5" err.txt || fail "malformed case not named: $(cat err.txt)"
 [ "$(wc -l < a2.csv)" = 50 ] || fail "oracle lost the other cases"
 
+# non-finite inputs and literals beyond double's range are refused by name, per case, for
+# every query; every finite case is still answered, and nothing dies of a signal
+for q in $queries; do
+  "$cdref" cases --query "$q" --n 6 --seed 9 --out c.csv
+  awk -F, 'BEGIN{OFS=","} NR==3 {$4="nan"} NR==4 {$NF="-inf"} NR==5 {$5="1e400"} NR==6 {$4="0x1p+2000"} {print}' c.csv > nf.csv
+  for p in 53 24; do
+    set +e
+    "$cdref" oracle --query "$q" --cases nf.csv --precision $p --out a.csv 2> err.txt
+    status=$?
+    set -e
+    [ $status = 1 ] || fail "$q: oracle with non-finite cases exited $status: $(cat err.txt)"
+    [ "$(wc -l < a.csv)" = 3 ] || fail "$q: oracle answered $(($(wc -l < a.csv) - 1)) of the 2 finite cases"
+    grep -q "^case 1: .* is not finite (nan); no answer" err.txt || fail "$q: nan not named: $(cat err.txt)"
+    grep -q "^case 2: .* is not finite (-inf); no answer" err.txt || fail "$q: -inf not named: $(cat err.txt)"
+    grep -q "^case 3: .* '1e400' is beyond the range of double; no answer" err.txt || fail "$q: 1e400: $(cat err.txt)"
+    grep -q "^case 4: .* '0x1p+2000' is beyond the range of double; no answer" err.txt || fail "$q: 0x1p+2000"
+  done
+  set +e
+  "$cdref" oracle --query "$q" --cases nf.csv --out a.csv 2> /dev/null
+  "$cdref" score --query "$q" --cases nf.csv --answers a.csv > s.txt 2> err.txt
+  status=$?
+  set -e
+  grep -q "6 cases, 2 answered and graded, 0 unanswered, 4 malformed or refused" s.txt && [ $status = 1 ] ||
+    fail "$q: score with non-finite cases: $status $(cat s.txt err.txt)"
+  grep -q "^case 1: .* is not finite (nan); not graded" err.txt || fail "$q: score: nan not named: $(cat err.txt)"
+done
+
 # shards merge into exactly the unsharded result
 args=(campaign --query sphere-box --query ray-box-cast --family near-touching --family grazing --n 300 --seed 4 --quiet)
 "$cdref" "${args[@]}" --out whole.txt --json whole.json
@@ -85,14 +114,16 @@ python3 -c "import json,sys; d=json.load(open('whole.json')); assert len(d['cell
 "$cdref" "${args[@]}" --csv out.csv
 head -1 out.csv | grep -q "^query,impl,family,scale,cases" || fail "CSV header"
 # the cost report: every row of every query measured in one run, as a table, CSV, JSON and
-# SVG (7 queries with values have 18 rows, box-box 15)
+# SVG (the queries of Sections 3.1-3.2 with values have 18 rows, box-box 15)
 "$cdref" report --n 40 --reps 1 --error-n 10 --csv report.csv --json report.json --svg report.svg > report.txt
-[ "$(tail -n +2 report.csv | wc -l)" = 141 ] || fail "report rows: $(cat report.txt)"
+[ "$(grep -c '^segment-sphere-cast,' report.csv)" = 18 ] || fail "report rows: $(cat report.txt)"
+[ "$(grep -c '^box-box,' report.csv)" = 15 ] || fail "report rows: $(cat report.txt)"
 grep -q "^  book double  *[0-9.]*  *1.00 " report.txt || fail "report: no book double baseline row"
 python3 -c "
 import json
 d = json.load(open('report.json'))
-assert len(d['queries']) == 8
+assert len(d['queries']) == len(set(l.split(',')[0] for l in open('report.csv').readlines()[1:]))
+assert sum(len(q['rows']) for q in d['queries']) == len(open('report.csv').readlines()) - 1
 for q in d['queries']:
     assert all(r['ns_per_query'] > 0 for r in q['rows']), q['query']
 " || fail "report JSON"

@@ -21,7 +21,7 @@ namespace {
 
 Spec small_spec() {
   Spec s;
-  s.queries = {Query::segment_sphere_cast, Query::sphere_box, Query::box_box, Query::ray_box_cast};
+  s.queries = {query_by_name("segment-sphere-cast"), query_by_name("sphere-box"), query_by_name("box-box"), query_by_name("ray-box-cast")};
   s.impls = {"book-float", "book-double", "book-long-double", "robust-double"};  // robust: certificates too
   s.families = {"near-tangent", "near-touching", "grazing", "degenerate"};
   s.scales = {0, 8, 24, 52};
@@ -172,7 +172,7 @@ TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterru
   REQUIRE(killed_mid_way);
 
   Spec s;  // as the command line above
-  s.queries = {Query::segment_sphere_cast, Query::sphere_sphere};
+  s.queries = {query_by_name("segment-sphere-cast"), query_by_name("sphere-sphere")};
   s.impls = {"book-float", "book-double", "book-long-double", "robust-double"};
   s.families = {"near-tangent", "near-touching"};
   s.scales = {8, 24};
@@ -202,15 +202,15 @@ TEST_CASE("the engine sees the book's long-range failure near tangency", "[campa
   // right (its error in sigma is ~1e-16 of the band); from 1e4 radii its error in
   // sigma, ~R^2 2^-53 = 1e-8 relative, is ten times the band, and a large share flips.
   Spec s;
-  s.queries = {Query::segment_sphere_cast};
+  s.queries = {query_by_name("segment-sphere-cast")};
   s.impls = {"book-double"};
   s.families = {"tangent-at-range"};
   s.scales = {0, 4};
   s.n = 2000;
   s.threads = 2;
   const Results r = run(s);
-  const CellStats& near = r.cells.at({Query::segment_sphere_cast, "book-double", "tangent-at-range", 0});
-  const CellStats& far = r.cells.at({Query::segment_sphere_cast, "book-double", "tangent-at-range", 4});
+  const CellStats& near = r.cells.at({query_by_name("segment-sphere-cast"), "book-double", "tangent-at-range", 0});
+  const CellStats& far = r.cells.at({query_by_name("segment-sphere-cast"), "book-double", "tangent-at-range", 4});
   REQUIRE(near.cls_fp + near.cls_fn == 0);
   const double share = double(far.cls_fp + far.cls_fn) / double(far.n);
   INFO("misclassified at 1e4 radii: " << share);

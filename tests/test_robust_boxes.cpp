@@ -386,7 +386,7 @@ bool finite3(const Vec3<F>& v) {
 TEMPLATE_TEST_CASE("robust box-box equals the exact book on every generated case", "[robust-boxes]", float, double,
                    long double) {
   using F = TestType;
-  const fuzz::Query q = fuzz::Query::box_box;
+  const fuzz::Query q = fuzz::query_by_name("box-box");
   std::uint64_t n_cases = 0;
   for (const fuzz::Family& f : fuzz::families(q)) {
     for (int k : f.scales) {
@@ -506,8 +506,8 @@ void decide_query(fuzz::Query q, const char* qname) {
 TEMPLATE_TEST_CASE("robust ray-box decide(): exact on every generated case, certain outside the documented range",
                    "[robust-boxes]", float, double, long double) {
   using F = TestType;
-  decide_query<F, Segment<F>>(fuzz::Query::segment_box_cast, "segment-box");
-  decide_query<F, Ray<F>>(fuzz::Query::ray_box_cast, "ray-box");
+  decide_query<F, Segment<F>>(fuzz::query_by_name("segment-box-cast"), "segment-box");
+  decide_query<F, Ray<F>>(fuzz::query_by_name("ray-box-cast"), "ray-box");
 }
 
 // Inputs beyond (**): magnitudes from near the smallest subnormal to far above 1 in one

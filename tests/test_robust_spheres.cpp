@@ -479,13 +479,13 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
   // 100% for every query (sphere-sphere, sphere-box, segment-sphere, segment and ray casts)
   // at float, double and long double. No certain answer was wrong on any family.
   const int n = 2000;
-  const Tally ss = sweep<F>(Query::sphere_sphere, 8, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
+  const Tally ss = sweep<F>(fuzz::query_by_name("sphere-sphere"), 8, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
                             n, [](const fuzz::Inputs& in) {
                               const Sphere<F> a{at<F>(in, 0), F(in[3])}, b{at<F>(in, 4), F(in[7])};
                               const auto d = robust::decide(a, b);
                               return std::tuple{d, book::intersect(convert_prim_exact(a), convert_prim_exact(b)), d.value == robust::intersect(a, b)};
                             });
-  const Tally sb = sweep<F>(Query::sphere_box, 10, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
+  const Tally sb = sweep<F>(fuzz::query_by_name("sphere-box"), 10, {"uniform", "near-touching", "long-range", "degenerate", "magnitude"},
                             n, [](const fuzz::Inputs& in) {
                               const Sphere<F> s{at<F>(in, 0), F(in[3])};
                               const Box<F> b{at<F>(in, 4), at<F>(in, 7)};
@@ -493,24 +493,24 @@ TEMPLATE_TEST_CASE("robust decide: certain answers equal the book at Gmpq", "[ro
                               return std::tuple{d, book::intersect(convert_prim_exact(s), convert_prim_exact(b)), d.value == robust::intersect(s, b)};
                             });
   std::vector<std::string> segf;
-  for (const auto& f : fuzz::families(Query::segment_sphere)) segf.push_back(f.name);
-  const Tally gs = sweep<F>(Query::segment_sphere, 10, segf, n, [](const fuzz::Inputs& in) {
+  for (const auto& f : fuzz::families(fuzz::query_by_name("segment-sphere"))) segf.push_back(f.name);
+  const Tally gs = sweep<F>(fuzz::query_by_name("segment-sphere"), 10, segf, n, [](const fuzz::Inputs& in) {
     const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide_closest(s, p);
     return std::tuple{d, book::intersect(convert_prim_exact(s), convert_prim_exact(p)), d.value == robust::intersect(s, p)};
   });
   std::vector<std::string> castf;
-  for (const auto& f : fuzz::families(Query::segment_sphere_cast)) castf.push_back(f.name);
-  const Tally cs = sweep<F>(Query::segment_sphere_cast, 10, castf, n, [](const fuzz::Inputs& in) {
+  for (const auto& f : fuzz::families(fuzz::query_by_name("segment-sphere-cast"))) castf.push_back(f.name);
+  const Tally cs = sweep<F>(fuzz::query_by_name("segment-sphere-cast"), 10, castf, n, [](const fuzz::Inputs& in) {
     const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide(s, p);
     return std::tuple{d, book::hit(convert_prim_exact(s), convert_prim_exact(p)), d.value == robust::hit(s, p)};
   });
   std::vector<std::string> rayf;
-  for (const auto& f : fuzz::families(Query::ray_sphere_cast)) rayf.push_back(f.name);
-  const Tally rs = sweep<F>(Query::ray_sphere_cast, 10, rayf, n, [](const fuzz::Inputs& in) {
+  for (const auto& f : fuzz::families(fuzz::query_by_name("ray-sphere-cast"))) rayf.push_back(f.name);
+  const Tally rs = sweep<F>(fuzz::query_by_name("ray-sphere-cast"), 10, rayf, n, [](const fuzz::Inputs& in) {
     const Ray<F> s{at<F>(in, 0), at<F>(in, 3)};
     const Sphere<F> p{at<F>(in, 6), F(in[9])};
     const auto d = robust::decide(s, p);
@@ -655,7 +655,7 @@ void check_cast(const CastIn<F>& c, CastStats& st) {
 
 template <class F>
 CastIn<F> cast_in(fuzz::Query q, const fuzz::Inputs& in, const std::string& name) {
-  return {name, at<F>(in, 0), at<F>(in, 3), q == fuzz::Query::ray_sphere_cast, {at<F>(in, 6), F(in[9])}};
+  return {name, at<F>(in, 0), at<F>(in, 3), q == fuzz::query_by_name("ray-sphere-cast"), {at<F>(in, 6), F(in[9])}};
 }
 
 }  // namespace
@@ -671,7 +671,7 @@ TEMPLATE_TEST_CASE("robust ray-sphere casts: lambda_enter within the derived bou
   REQUIRE(hard.misclassified == 0);
   REQUIRE(hard.unbounded == 0);
   REQUIRE(hard.graded >= 12);
-  for (fuzz::Query q : {fuzz::Query::segment_sphere_cast, fuzz::Query::ray_sphere_cast}) {
+  for (fuzz::Query q : {fuzz::query_by_name("segment-sphere-cast"), fuzz::query_by_name("ray-sphere-cast")}) {
     for (const std::string fam_name : {"uniform", "long-range", "near-tangent", "tangent-at-range"}) {
       const auto& fam = fuzz::family_by_name(q, fam_name);
       const int per = std::max<int>(20, 400 / int(fam.scales.size()));
@@ -729,7 +729,7 @@ std::vector<FamilyShare> cast_certain_shares(fuzz::Query q, int n) {
         robust::Decision d;
         bool value = false, truth = false;
         try {
-          if (q == fuzz::Query::ray_sphere_cast) {
+          if (q == fuzz::query_by_name("ray-sphere-cast")) {
             const Ray<F> r{at<F>(in, 0), at<F>(in, 3)};
             d = robust::decide(r, p);
             value = robust::hit(r, p);
@@ -763,7 +763,7 @@ TEMPLATE_TEST_CASE("robust ray-sphere decide: certain answers equal the book at 
   // uniform, long-range, near-tangent and tangent-at-range draws at double (segments and
   // rays); the uncertain cases are degenerate ones with an exact zero (a source exactly
   // on the sphere, a line exactly through a point sphere), where no bound can decide.
-  for (fuzz::Query q : {fuzz::Query::segment_sphere_cast, fuzz::Query::ray_sphere_cast}) {
+  for (fuzz::Query q : {fuzz::query_by_name("segment-sphere-cast"), fuzz::query_by_name("ray-sphere-cast")}) {
     const std::vector<FamilyShare> shares = cast_certain_shares<F>(q, 1000);
     for (const FamilyShare& sh : shares) {
       if (std::getenv("CDREF_TEST_REPORT"))

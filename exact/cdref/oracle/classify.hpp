@@ -84,11 +84,10 @@
 
 #include <cdref/cdref.hpp>
 #include <cdref/exact.hpp>
+#include <cdref/oracle/stage.hpp>
 #include <cmath>
 
 namespace cdref::oracle {
-
-enum class Stage { filter, expansion, rational };
 
 namespace staged {
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -26,34 +27,20 @@
 namespace cdref::fuzz {
 
 // ---- queries ----
-enum class Query : int {
-  sphere_sphere,
-  segment_sphere_cast,
-  ray_sphere_cast,
-  segment_sphere,
-  box_box,
-  segment_box_cast,
-  ray_box_cast,
-  sphere_box,
+// A query is described once, by its descriptor (a QueryInfo, built from the query's spec in
+// fuzz/queries/: its columns, how its primitives are made from them, its book, robust and
+// oracle calls, its families). Campaigns, case files, the oracle, scoring, the report, the
+// fuzz targets and the benchmarks iterate over the descriptors.
+//
+// A Query is the descriptor's stable id: its place in the registry, mixed into the case
+// generator (so an id is never reused or renumbered: the cases of a query stay the same).
+struct Query {
+  int id = -1;
+  auto operator<=>(const Query&) const = default;
 };
-inline constexpr int query_count = 8;
 
-struct QueryInfo {
-  Query q;
-  const char* name;
-  const char* cls_name;                   // the classification: "hit" or "intersect"
-  const char* pred_name;                  // the root- and division-free predicate
-  std::vector<std::string> inputs;        // input columns, in order
-  std::vector<std::string> outputs;       // output groups (each 1 or 3 components)
-  std::vector<int> widths;                // components per output group
-  const char* describe;                   // what the query computes
-};
-const QueryInfo& info(Query q);
-const std::vector<Query>& all_queries();
-Query query_by_name(const std::string& name);  // throws std::invalid_argument naming the choices
-
-inline constexpr int max_inputs = 12;
-inline constexpr int max_values = 8;
+inline constexpr int max_inputs = 64;
+inline constexpr int max_values = 12;
 
 using Inputs = std::array<double, max_inputs>;
 
@@ -71,6 +58,34 @@ struct Answer {
   std::array<long double, max_values> v{};  // exact for float, double and long double
 };
 
+// ---- families ----
+struct Family {
+  std::string name;
+  std::string describe;
+  std::vector<int> scales;  // the scale parameter k; its meaning is in `describe`
+  // Makes case inputs from a stream of 64-bit random words.
+  std::function<Inputs(std::function<std::uint64_t()>& next, int scale)> make;
+};
+
+// An output group of a query: 1 or 3 components (`name`, or `name_x`, `name_y`, `name_z`).
+struct Output {
+  enum When { always, on_hit, on_miss };
+  std::string name;
+  int width = 1;
+  When when = always;  // graded where the implementation and the truth both classify so
+                       // (a cast's lambdas exist only on a hit, a separating axis only on a miss)
+  bool label = false;  // an index, graded as right (0) or wrong (1), not in ulps
+};
+
+// A timed row of the cost report: case k of the prepared inputs evaluated one way.
+struct TimedRow {
+  std::string name;           // "book double", ...
+  std::string campaign_impl;  // the campaign implementation measuring its error ("" none)
+  std::string error_note;     // shown when there is no campaign row ("exact", "not measured", ...)
+  std::function<bool(std::size_t)> run;  // evaluates prepared case k; returns the classification
+  bool hard = false;          // timed on the near-boundary cases instead of the uniform ones
+};
+
 // ---- implementations under test ----
 struct Implementation {
   std::string name;    // "book-double", ...
@@ -81,6 +96,57 @@ struct Implementation {
     return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
   }
 };
+enum class Exact { gmpq, epeck };  // the exact number types the fuzz checks compare
+
+struct QueryInfo {
+  Query q;
+  const char* name;
+  const char* cls_name;                   // the classification: "hit" or "intersect"
+  const char* pred_name;                  // the other formulation in the predicate column
+  std::vector<std::string> inputs;        // input columns, in order
+  std::vector<Output> outputs;            // output groups
+  const char* describe;                   // what the query computes
+  const char* full_call;                  // the full query's call ("cast().hit", ...)
+  const char* answer_help;                // what the answer columns mean (cdref cases --describe)
+  std::vector<Family> families;
+  bool book_is_truth = true;  // the book at an exact type is the truth (false: the book
+                              // assumes what the inputs do not give, e.g. orthonormal axes)
+  // Evaluations on double inputs, each converting them itself (precision 24: float, 53:
+  // double, 64: long double; values reported in that type).
+  std::function<Answer(int precision, const Inputs&)> book;
+  std::function<Answer(int precision, const Inputs&)> robust;  // with robust::decide's certificate
+  std::function<Answer(Exact, const Inputs&)> book_exact;  // the book at an exact type, values rounded to double
+  // The exact answer, each value rounded correctly to the precision.
+  std::function<Answer(const Inputs&, int precision)> truth;
+  // The same from the fast oracle (a filter with a rigorous error bound, the exact path when
+  // it cannot decide); `exact_used` tells which path answered.
+  std::function<Answer(const Inputs&, int precision, bool* exact_used)> oracle_truth;
+  // The exact classification alone (cls = pred), from oracle::classify.
+  std::function<Answer(const Inputs&, bool* exact_used)> oracle_classify;
+  // A stage of the classification oracle alone (0 filter, 1 expansion, 2 rational): the
+  // decision, or -1 when that stage cannot decide. Empty for queries without stages.
+  std::function<int(int stage, const Inputs&)> oracle_stage;
+  // The rows of the cost report over prepared uniform and near-boundary cases (`hard_name`
+  // names the latter in the rows timed on them).
+  std::function<std::vector<TimedRow>(const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,
+                                      const std::string& hard_name)>
+      timed_rows;
+  // Checks of the fuzz targets beyond the common ones (may be empty): abort with a message.
+  std::function<const char*(const Inputs&)> fuzz_extra;
+  // Inputs the book at double may refuse although the exact types take them (a documented
+  // limit of a conversion, e.g. min-max corners that overflow). May be empty.
+  std::function<bool(const Inputs&)> double_may_refuse;
+  // Implementations of this query alone (a campaign may name them like the built-in ones):
+  // the patched float variants engines ship, the book at an exact type where it is not the
+  // truth. Each has `queries` = {q}; variants of several queries may share a name.
+  std::vector<Implementation> variants;
+};
+const QueryInfo& info(Query q);
+const std::vector<Query>& all_queries();
+Query query_by_name(const std::string& name);  // throws std::invalid_argument naming the choices
+
+// The book and robust versions at float, double and long double (every query), then the
+// queries' own variants.
 const std::vector<Implementation>& builtin_implementations();
 const Implementation& implementation_by_name(const std::string& name);
 
@@ -88,29 +154,15 @@ const Implementation& implementation_by_name(const std::string& name);
 // 24), double (53) or long double (64).
 Answer truth(Query q, const Inputs& in, int precision);
 
-// The same answer from the fast oracle: the book run on oracle::Bounded2 (a double word
-// with a rigorous error bound, exact/cdref/oracle/bounded2.hpp), accepted when every
-// comparison and every rounding is certain, and otherwise the exact path above (always at
-// precision 64: a double word cannot certify a long double rounding of long double
-// inputs). `exact_used` (if given) tells which path answered.
+// The same answer from the fast oracle (see QueryInfo::oracle_truth).
 Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used = nullptr);
 
-// The oracle for the classifications alone (Answer::cls and Answer::pred; no values):
-// exact/cdref/oracle/classify.hpp (a semi-static filter, then exact floating-point
-// expansions, then Gmpq). `exact_used`: the filter could not decide.
+// The oracle for the classifications alone (Answer::cls and Answer::pred; no values).
 Answer oracle_classify(Query q, const Inputs& in, bool* exact_used = nullptr);
 
 // The inputs as a float implementation sees them (each rounded to float, back in double).
 Inputs float_inputs(Query q, const Inputs& in);
 
-// ---- families ----
-struct Family {
-  std::string name;
-  std::string describe;
-  std::vector<int> scales;  // the scale parameter k; its meaning is in `describe`
-  // Makes case inputs from a stream of 64-bit random words.
-  std::function<Inputs(std::function<std::uint64_t()>& next, int scale)> make;
-};
 const std::vector<Family>& families(Query q);
 const Family& family_by_name(Query q, const std::string& name);
 

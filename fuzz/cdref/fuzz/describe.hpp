@@ -1,0 +1,194 @@
+// cdref/fuzz/describe.hpp - describe<Spec>(): a query's spec (see spec.hpp) as its
+// type-erased descriptor, with every instantiation the campaign, the case files, the fuzz
+// checks and the cost report need. Included only by the few translation units that list
+// the queries (fuzz/queries_*.cpp): each instantiation of the exact types costs compile time.
+#pragma once
+
+#include <cdref/exact/cgal_kernels.hpp>
+
+#include <cdref/float/mpfr.hpp>
+#include <cdref/fuzz/spec.hpp>
+#include <memory>
+
+namespace cdref::fuzz::spec {
+
+// ---- the rows of the cost report ----
+// What a row does with case k: `full` computes every output, `classify` the book's other
+// formulation (hit / intersect), `first_rounded` every output with the first rounded
+// correctly to double (exact types).
+enum class Mode { full, classify, first_rounded };
+
+template <class S>
+bool finish(const Cast<S>& c, Mode m) {
+  if (m == Mode::first_rounded) return c.hit != (round_double(c.lambda_enter) < 0);  // never negative
+  return c.hit;
+}
+template <class S>
+bool finish(const Proximity<S>& p, Mode m) {
+  if (m == Mode::first_rounded) return p.intersect != (round_double(p.distance) < 0);  // never negative
+  return p.intersect;
+}
+inline bool finish(bool intersect, Mode) { return intersect; }
+
+template <class Spec, class T>
+auto prepare(const std::vector<Inputs>& cases) {
+  using P = decltype(Spec::template make<T>(cases.front()));
+  auto p = std::make_shared<std::vector<P>>();
+  p->reserve(cases.size());
+  for (const Inputs& in : cases) p->push_back(Spec::template make<T>(in));
+  return p;
+}
+
+template <class Spec, class T>
+std::function<bool(std::size_t)> book_row(const std::vector<Inputs>& cases, Mode m) {
+  auto p = prepare<Spec, T>(cases);
+  return [p, m](std::size_t k) {
+    const auto& [a, b] = (*p)[k];
+    if (m == Mode::classify) return Spec::book_pred(a, b);
+    return finish(Spec::book(a, b, unsigned(want_all)), m);
+  };
+}
+// The truth's formulation at an exact type T (the book, unless the spec says otherwise).
+template <class Spec, class T>
+std::function<bool(std::size_t)> exact_row(const std::vector<Inputs>& cases, Mode m) {
+  if constexpr (Spec::book_is_truth) {
+    return book_row<Spec, T>(cases, m);
+  } else {
+    auto p = prepare<Spec, T>(cases);
+    return [p, m](std::size_t k) {
+      const auto& [a, b] = (*p)[k];
+      if (m == Mode::classify) return Spec::truth_pred(a, b);
+      return finish(Spec::truth(a, b, unsigned(want_all)), m);
+    };
+  }
+}
+template <class Spec, class K>
+auto prepare_cgal(const std::vector<Inputs>& cases) {
+  using P = decltype(Spec::template cgal_make<K>(cases.front()));
+  auto p = std::make_shared<std::vector<P>>();
+  for (const Inputs& in : cases) p->push_back(Spec::template cgal_make<K>(in));
+  return p;
+}
+template <class Spec, class T>
+std::function<bool(std::size_t)> robust_row(const std::vector<Inputs>& cases) {
+  auto p = prepare<Spec, T>(cases);
+  return [p](std::size_t k) {
+    const auto& [a, b] = (*p)[k];
+    return finish(Spec::robust(a, b), Mode::full);
+  };
+}
+
+// Rows (each answers the same prepared inputs; a row that computes a query's outputs asks
+// for all of them): the book at float, double (all outputs, and the classification alone),
+// long double, MPFR-128 and MPFR-256; robust at float, double and long double; the oracle
+// (the classification alone, and every output correctly rounded), on the uniform cases and on
+// the hard ones; the book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its
+// first output rounded correctly to double); CGAL's own do_intersect in its filtered (Epick)
+// and exact (Epeck) kernels where CGAL has the pair.
+template <class Spec>
+std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,
+                                 const std::string& hard_name) {
+  const bool values = !Spec::outputs().empty();
+  const Mode full = values ? Mode::full : Mode::classify;
+  std::vector<TimedRow> rows;
+  rows.push_back({"book float", "book-float", "", book_row<Spec, float>(cases, full)});
+  rows.push_back({"book double", "book-double", "", book_row<Spec, double>(cases, full)});
+  if (values) rows.push_back({"book double, classification", "", "as above", book_row<Spec, double>(cases, Mode::classify)});
+  rows.push_back({"book long double", "book-long-double", "", book_row<Spec, long double>(cases, full)});
+  for (int bits : {128, 256}) {
+    const mpfr_precision at{bits};  // inputs made at this precision
+    auto row = book_row<Spec, mpfr::mpreal>(cases, full);
+    rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured", [row, bits](std::size_t k) {
+                      const mpfr_precision again{bits};  // and the constants it makes
+                      return row(k);
+                    }});
+  }
+  rows.push_back({"robust float", "robust-float", "", robust_row<Spec, float>(cases)});
+  rows.push_back({"robust double", "robust-double", "", robust_row<Spec, double>(cases)});
+  rows.push_back({"robust long double", "robust-long-double", "", robust_row<Spec, long double>(cases)});
+  auto uni = std::make_shared<std::vector<Inputs>>(cases);
+  auto hc = std::make_shared<std::vector<Inputs>>(hard);
+  rows.push_back({"oracle, classification", "", "exact", [uni](std::size_t k) {
+                    return oracle_classify_of<Spec>((*uni)[k], nullptr).cls;
+                  }});
+  if (values)
+    rows.push_back({"oracle, every output rounded", "", "exact", [uni](std::size_t k) {
+                      return oracle_truth_of<Spec>((*uni)[k], 53, nullptr).cls;
+                    }});
+  rows.push_back({"oracle, classification" + hard_name, "", "exact",
+                  [hc](std::size_t k) { return oracle_classify_of<Spec>((*hc)[k], nullptr).cls; }, true});
+  if (values)
+    rows.push_back({"oracle, every output" + hard_name, "", "exact",
+                    [hc](std::size_t k) { return oracle_truth_of<Spec>((*hc)[k], 53, nullptr).cls; }, true});
+  const Mode exact_mode = values ? Mode::first_rounded : Mode::classify;
+  const std::string at = Spec::book_is_truth ? "book at " : "exact formulation at ";
+  rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq>(cases, exact_mode)});
+  rows.push_back({at + "Epeck::FT", "", "exact", exact_row<Spec, CGAL::Epeck::FT>(cases, exact_mode)});
+  rows.push_back({at + "CORE::Expr", "", "exact", exact_row<Spec, CORE::Expr>(cases, exact_mode)});
+  if constexpr (requires(const Inputs& in) { Spec::template cgal_make<CGAL::Epick>(in); }) {
+    auto ck = prepare_cgal<Spec, CGAL::Epick>(cases);
+    auto ce = prepare_cgal<Spec, CGAL::Epeck>(cases);
+    rows.push_back({"CGAL do_intersect, Epick", "", "exact", [ck](std::size_t k) {
+                      const auto& [a, b] = (*ck)[k];
+                      return Spec::cgal(a, b);
+                    }});
+    rows.push_back({"CGAL do_intersect, Epeck", "", "exact", [ce](std::size_t k) {
+                      const auto& [a, b] = (*ce)[k];
+                      return Spec::cgal(a, b);
+                    }});
+  }
+  return rows;
+}
+
+// ---- the descriptor ----
+template <class Spec>
+QueryInfo describe() {
+  QueryInfo qi;
+  qi.q = Query{Spec::id};
+  qi.name = Spec::name;
+  qi.cls_name = Spec::cls_name;
+  qi.pred_name = Spec::pred_name;
+  qi.inputs = Spec::inputs();
+  qi.outputs = Spec::outputs();
+  qi.describe = Spec::describe;
+  qi.full_call = Spec::full_call;
+  qi.answer_help = Spec::answer_help;
+  qi.families = Spec::families();
+  qi.book_is_truth = Spec::book_is_truth;
+  qi.book = [](int precision, const Inputs& in) {
+    if (precision == 24) return book_at<Spec, float, float>(in, true);
+    if (precision == 64) return book_at<Spec, long double, long double>(in, true);
+    return book_at<Spec, double, double>(in, true);
+  };
+  qi.robust = [](int precision, const Inputs& in) {
+    if (precision == 24) return robust_at<Spec, float>(in);
+    if (precision == 64) return robust_at<Spec, long double>(in);
+    return robust_at<Spec, double>(in);
+  };
+  qi.book_exact = [](Exact t, const Inputs& in) {
+    return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)
+                            : book_at<Spec, CGAL::Epeck::FT, double>(in, true);
+  };
+  qi.truth = truth_of<Spec>;
+  qi.oracle_truth = oracle_truth_of<Spec>;
+  qi.oracle_classify = oracle_classify_of<Spec>;
+  if constexpr (requires(const Inputs& in) {
+                  Spec::stage(oracle::Stage::filter, Spec::template make<double>(in).first,
+                              Spec::template make<double>(in).second);
+                }) {
+    qi.oracle_stage = [](int stage, const Inputs& in) {
+      const auto [a, b] = Spec::template make<double>(in);
+      const int r = Spec::stage(static_cast<oracle::Stage>(stage), a, b);
+      return r == 0 || r == 1 ? r : -1;
+    };
+  }
+  qi.timed_rows = [](const std::vector<Inputs>& cases, const std::vector<Inputs>& hard, const std::string& hard_name) {
+    return timed_rows<Spec>(cases, hard, hard_name);
+  };
+  if constexpr (requires(const Inputs& in) { Spec::fuzz_extra(in); }) qi.fuzz_extra = Spec::fuzz_extra;
+  if constexpr (requires(const Inputs& in) { Spec::double_may_refuse(in); }) qi.double_may_refuse = Spec::double_may_refuse;
+  if constexpr (requires { Spec::variants(); }) qi.variants = Spec::variants();
+  return qi;
+}
+
+}  // namespace cdref::fuzz::spec

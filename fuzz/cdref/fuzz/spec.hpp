@@ -1,0 +1,256 @@
+// cdref/fuzz/spec.hpp - how a query's spec becomes its descriptor.
+//
+// A query is described in one place, its spec (fuzz/queries/<query>.hpp): a struct with
+//   id, name, cls_name, pred_name, describe   the descriptor's names (id: see Query)
+//   inputs(), outputs(), families()           its case columns, output groups and families
+//   make<T>(in)                               its two primitives from a case's columns, over T
+//   book(a, b, w), book_pred(a, b)            the book: the full query (a Cast, a Proximity, a
+//                                             bool or a Separation; w: the want_* mask) and the
+//                                             other formulation of its classification
+//   book_is_truth                             false when the book at an exact type is not the
+//                                             truth; then truth(a, b, w), truth_pred(a, b) are
+//   robust(a, b), robust_pred(a, b), robust_decide(a, b)    the robust versions
+//   oracle(a, b, Stage*)                      the exact classification (oracle::classify)
+// and, where they exist:
+//   stage(Stage, a, b)                        one stage of the classification oracle alone
+//   cgal_make<K>(in), cgal(a, b)              CGAL's do_intersect on the same solids
+//   fuzz_extra(in)                            further checks of the fuzz target
+//   double_may_refuse(in)                     inputs the book at double may refuse
+//   variants()                                the query's own implementations
+// describe<Spec>() instantiates every number type the campaign, the case files, the fuzz
+// checks and the cost report need and returns the type-erased QueryInfo.
+#pragma once
+
+#include <cdref/exact.hpp>
+#include <cdref/exact/long_double.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cdref/oracle/bounded2.hpp>
+#include <cdref/oracle/stage.hpp>
+#include <cdref/robust/decision.hpp>
+#include <cmath>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace cdref::fuzz::spec {
+
+// ---- columns ----
+template <class T>
+Vec3<T> col3(const Inputs& in, int k) {
+  return Vec3<T>(T(in[k]), T(in[k + 1]), T(in[k + 2]));
+}
+
+// Column names: ("center", 3) is center_x, center_y, center_z; ("radius", 1) is radius.
+inline std::vector<std::string> cols(std::initializer_list<std::pair<const char*, int>> parts) {
+  std::vector<std::string> out;
+  for (const auto& [name, n] : parts) {
+    if (n == 1) {
+      out.push_back(name);
+    } else {
+      for (const char* ax : {"x", "y", "z"}) out.push_back(std::string(name) + "_" + ax);
+    }
+  }
+  return out;
+}
+
+// CGAL's solids from a case's columns (kernel K): a point, a ball (CGAL's Sphere_3 takes the
+// squared radius), an axis-aligned box from its centre and extent.
+template <class K>
+typename K::Point_3 cgal_point(const Inputs& in, int i) {
+  using FT = typename K::FT;
+  return typename K::Point_3(FT(in[i]), FT(in[i + 1]), FT(in[i + 2]));
+}
+template <class K>
+typename K::Vector_3 cgal_vector(const Inputs& in, int i) {
+  using FT = typename K::FT;
+  return typename K::Vector_3(FT(in[i]), FT(in[i + 1]), FT(in[i + 2]));
+}
+template <class K>
+typename K::Sphere_3 cgal_ball(const Inputs& in, int c, int r) {
+  const typename K::FT rho(in[r]);
+  return typename K::Sphere_3(cgal_point<K>(in, c), rho * rho);
+}
+template <class K>
+typename K::Iso_cuboid_3 cgal_cuboid(const Inputs& in, int c, int h) {
+  using FT = typename K::FT;
+  FT lo[3], hi[3];
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = FT(in[c + i]) - FT(in[h + i]);
+    hi[i] = FT(in[c + i]) + FT(in[h + i]);
+  }
+  return typename K::Iso_cuboid_3(typename K::Point_3(lo[0], lo[1], lo[2]), typename K::Point_3(hi[0], hi[1], hi[2]));
+}
+
+inline constexpr const char* cast_help =
+    "  lambda_enter, lambda_exit: the hit interval (graded only where both say hit)\n"
+    "  point_[xyz]: the entry point; normal_[xyz]: the outward unit normal there (0 when the\n"
+    "  source is inside)\n";
+inline constexpr const char* prox_help =
+    "  distance, depth: distance and penetration depth\n"
+    "  witness_a_[xyz], witness_b_[xyz]: the witness points on the first and second argument\n";
+
+inline std::vector<Output> cast_outputs() {
+  return {{"lambda_enter", 1, Output::on_hit},
+          {"lambda_exit", 1, Output::on_hit},
+          {"point", 3, Output::on_hit},
+          {"normal", 3, Output::on_hit}};
+}
+inline std::vector<Output> prox_outputs() {
+  return {{"distance", 1}, {"depth", 1}, {"witness_a", 3}, {"witness_b", 3}};
+}
+
+// ---- values ----
+// A value of the sqrt type S as the implementation of type F reports it (exact values
+// rounded correctly to F).
+template <class F, class S>
+long double value(const S& x) {
+  if constexpr (std::is_same_v<S, oracle::Bounded2>) {
+    // the filter: certain, or it throws
+    if constexpr (std::is_same_v<F, float>)
+      return x.rounded_float();
+    else if constexpr (std::is_same_v<F, double>)
+      return x.rounded();
+    else
+      throw oracle::uncertain();  // a double filter cannot certify a long double
+  } else if constexpr (!number_traits<S>::is_exact)
+    return static_cast<long double>(x);
+  else if constexpr (std::is_same_v<F, long double>)
+    return exact::round_long_double(x);
+  else
+    return static_cast<long double>(round_to<F>(x));
+}
+
+// A query's result into an Answer: its classification, and with `values` its outputs in
+// schema order.
+template <class F, class S>
+void put(Answer& a, const Cast<S>& c, bool values) {
+  a.cls = c.hit;
+  if (!values) return;
+  a.v[0] = value<F>(c.lambda_enter);
+  a.v[1] = value<F>(c.lambda_exit);
+  for (int i = 0; i < 3; ++i) {
+    a.v[2 + i] = value<F>(c.point[i]);
+    a.v[5 + i] = value<F>(c.normal[i]);
+  }
+}
+template <class F, class S>
+void put(Answer& a, const Proximity<S>& p, bool values) {
+  a.cls = p.intersect;
+  if (!values) return;
+  a.v[0] = value<F>(p.distance);
+  a.v[1] = value<F>(p.depth);
+  for (int i = 0; i < 3; ++i) {
+    a.v[2 + i] = value<F>(p.on_a[i]);
+    a.v[5 + i] = value<F>(p.on_b[i]);
+  }
+}
+template <class F>
+void put(Answer& a, bool intersect, bool) {
+  a.cls = intersect;
+}
+
+// ---- evaluations ----
+// An exact type cannot hold NaN or an infinity (and GMP's mpq_set_d raises SIGFPE on one):
+// such inputs are refused by column name before any conversion to a type that is not IEEE.
+template <class Spec, class T>
+void require_finite(const Inputs& in) {
+  if constexpr (!std::is_floating_point_v<T>) {
+    const std::size_t n = Spec::inputs().size();
+    for (std::size_t k = 0; k < n; ++k)
+      if (!std::isfinite(in[k]))
+        throw invalid_input(Spec::inputs()[k] + " is not finite (" +
+                            (std::isnan(in[k]) ? "nan" : (in[k] > 0 ? "inf" : "-inf")) + ")");
+  }
+}
+
+template <class Spec, class T, class F>
+Answer book_at(const Inputs& in, bool values) {
+  require_finite<Spec, T>(in);
+  const auto [a, b] = Spec::template make<T>(in);
+  Answer r;
+  put<F>(r, Spec::book(a, b, values ? unsigned(want_all) : 0u), values);
+  r.pred = Spec::book_pred(a, b);
+  return r;
+}
+
+// The truth's formulation at T (the book, unless the spec says otherwise).
+template <class Spec, class T, class F>
+Answer truth_at(const Inputs& in, bool values) {
+  if constexpr (Spec::book_is_truth) {
+    return book_at<Spec, T, F>(in, values);
+  } else {
+    require_finite<Spec, T>(in);
+    const auto [a, b] = Spec::template make<T>(in);
+    Answer r;
+    put<F>(r, Spec::truth(a, b, values ? unsigned(want_all) : 0u), values);
+    r.pred = Spec::truth_pred(a, b);
+    return r;
+  }
+}
+
+template <class Spec>
+std::string hex_inputs(const Inputs& in) {
+  std::string where;
+  for (std::size_t i = 0; i < Spec::inputs().size(); ++i) {
+    where += ' ';
+    where += hexfloat(in[i]);
+  }
+  return where;
+}
+
+// The robust versions (float/cdref/robust): the full query, the predicate, and the
+// certificate of robust::decide, which must classify as the full query does.
+template <class Spec, class F>
+Answer robust_at(const Inputs& in) {
+  const auto [a, b] = Spec::template make<F>(in);
+  Answer r;
+  put<F>(r, Spec::robust(a, b), true);
+  r.pred = Spec::robust_pred(a, b);
+  const robust::Decision d = Spec::robust_decide(a, b);
+  if (d.value != r.cls)
+    throw std::logic_error(std::string("robust::decide and the robust query disagree on ") + Spec::name + " at" +
+                           hex_inputs<Spec>(in));
+  r.certified = true;
+  r.certain = d.certain;
+  return r;
+}
+
+template <class Spec>
+Answer truth_of(const Inputs& in, int precision) {
+  if (precision == 24) return truth_at<Spec, CGAL::Gmpq, float>(in, true);
+  if (precision == 64) return truth_at<Spec, CGAL::Gmpq, long double>(in, true);
+  return truth_at<Spec, CGAL::Gmpq, double>(in, true);
+}
+
+// The truth's formulation run on oracle::Bounded2 (a double word with a rigorous error
+// bound), accepted when every comparison and every rounding is certain; otherwise the exact
+// path (always at precision 64: a double word cannot certify a long double rounding).
+template <class Spec>
+Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
+  if (exact_used) *exact_used = false;
+  if (precision != 64) {
+    try {
+      return precision == 24 ? truth_at<Spec, oracle::Bounded2, float>(in, true)
+                             : truth_at<Spec, oracle::Bounded2, double>(in, true);
+    } catch (const oracle::uncertain&) {
+    }
+  }
+  if (exact_used) *exact_used = true;
+  return truth_of<Spec>(in, precision);
+}
+
+template <class Spec>
+Answer oracle_classify_of(const Inputs& in, bool* exact_used) {
+  require_finite<Spec, CGAL::Gmpq>(in);
+  const auto [a, b] = Spec::template make<double>(in);
+  oracle::Stage stage = oracle::Stage::filter;
+  Answer r;
+  r.cls = r.pred = Spec::oracle(a, b, &stage);  // at exact types the two formulations agree (tested)
+  if (exact_used) *exact_used = stage != oracle::Stage::filter;
+  return r;
+}
+
+}  // namespace cdref::fuzz::spec

@@ -1,0 +1,16 @@
+// fuzz/queries/boxes.cpp - the descriptors of the axis-aligned box queries (Section 3.2):
+// one of the few translation units that instantiate the exact types.
+#include <cdref/fuzz/describe.hpp>
+
+#include "box_box.hpp"
+#include "box_casts.hpp"
+#include "groups.hpp"
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> box_queries() {
+  return {spec::describe<queries::BoxBox>(), spec::describe<queries::BoxCast<false>>(),
+          spec::describe<queries::BoxCast<true>>()};
+}
+
+}  // namespace cdref::fuzz

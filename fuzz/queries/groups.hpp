@@ -1,0 +1,14 @@
+// fuzz/queries/groups.hpp - the translation units that describe the queries, each a group of
+// specs (fuzz/queries/<query>.hpp) instantiated together to keep the exact types' compile
+// time in few units. The registry (fuzz/queries.cpp) orders them by id.
+#pragma once
+
+#include <cdref/fuzz/campaign.hpp>
+#include <vector>
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> sphere_queries();  // fuzz/queries/spheres.cpp
+std::vector<QueryInfo> box_queries();     // fuzz/queries/boxes.cpp
+
+}  // namespace cdref::fuzz

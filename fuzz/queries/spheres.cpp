@@ -1,0 +1,19 @@
+// fuzz/queries/spheres.cpp - the descriptors of the sphere queries (Section 3.1) and
+// sphere-box: one of the few translation units that instantiate the exact types.
+#include <cdref/fuzz/describe.hpp>
+
+#include "groups.hpp"
+#include "segment_sphere.hpp"
+#include "sphere_box.hpp"
+#include "sphere_casts.hpp"
+#include "sphere_sphere.hpp"
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> sphere_queries() {
+  return {spec::describe<queries::SphereSphere>(), spec::describe<queries::SphereCast<false>>(),
+          spec::describe<queries::SphereCast<true>>(), spec::describe<queries::SegmentSphere>(),
+          spec::describe<queries::SphereBox>()};
+}
+
+}  // namespace cdref::fuzz
