@@ -15,12 +15,20 @@
 //                exact type this is proven by exact comparison with the rounding
 //                midpoints (exact/cdref/exact/rounding.hpp);
 //   is_finite(x) false for NaN and infinities (always true for exact types).
+//   to_rational(q, x)  (binary floating-point types) the exact value of x as a GMP rational;
+//   unit_roundoff(), denorm_min()  (binary floating-point types) u = 2^-p and the smallest
+//                positive value, for error bounds.
 //
 // The primary template is left undefined: a number type that cdref does not know
 // fails to compile instead of silently going through double.
 #pragma once
 
+#include <cstdint>  // before mpfr.h: MPFR_USE_INTMAX_T declares its intmax_t functions
+#include <gmp.h>
+#include <mpfr.h>
+
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace cdref {
@@ -42,6 +50,16 @@ struct ieee_traits {
   // -> float are one IEEE conversion, which rounds to nearest, ties to even.
   static double to_double(const F& x) { return static_cast<double>(x); }
   static float to_float(const F& x) { return static_cast<float>(x); }
+  static F unit_roundoff() { return std::ldexp(F(1), -std::numeric_limits<F>::digits); }
+  static F denorm_min() { return std::numeric_limits<F>::denorm_min(); }
+  // Exact: a float, double or x87 long double has at most 64 significant bits.
+  static void to_rational(mpq_t q, const F& x) {
+    mpfr_t m;
+    mpfr_init2(m, 64);
+    mpfr_set_ld(m, static_cast<long double>(x), MPFR_RNDN);
+    mpfr_get_q(q, m);
+    mpfr_clear(m);
+  }
 };
 }  // namespace detail
 

@@ -11,6 +11,17 @@
 //   Ray<T>         the infinite ray: points s + lambda d, lambda >= 0, d != 0. The chapter
 //                  takes d of unit length; cdref accepts any nonzero d, and lambda is then
 //                  measured in units of |d|.
+//   Triangle<T>    vertices v0, v1, v2: the closed, two-sided triangle (edges and vertices
+//                  belong to it). A triangle of zero area is the segment or the point its
+//                  vertices span, and every query treats it as that set; it is not an error.
+//   OrientedBox<T> centre c, extents h >= 0 and three axes a_0, a_1, a_2: the solid
+//                  {c + sum_i t_i h_i a_i : |t_i| <= 1}. Axes given as floats are orthonormal
+//                  only to rounding (the only exactly orthonormal matrices with dyadic entries
+//                  are the signed permutations), so the solid is in general a
+//                  parallelepiped, and that set is what the box means: its face normals are
+//                  a_1 x a_2, a_2 x a_0, a_0 x a_1 and its edge directions the axes. The axes
+//                  must be linearly independent (decided exactly: det[a_0 a_1 a_2] != 0);
+//                  they need not be unit or orthogonal. A zero extent is a flat box.
 //
 // The algorithms follow the chapter in working in the local coordinates of the sphere
 // or box (its centre at the origin); the structs place it anywhere in space, and a
@@ -20,6 +31,9 @@
 #include <cstdio>
 #include <string>
 
+#include <array>
+
+#include "det_sign.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"
 #include "vec.hpp"
@@ -54,6 +68,18 @@ template <class T>
 struct Ray {
   Vec3<T> source;
   Vec3<T> direction;
+};
+
+template <class T>
+struct Triangle {
+  std::array<Vec3<T>, 3> vertex;
+};
+
+template <class T>
+struct OrientedBox {
+  Vec3<T> center;
+  Vec3<T> extent;
+  std::array<Vec3<T>, 3> axis;
 };
 
 template <class T>
@@ -143,6 +169,26 @@ void check(const Ray<T>& r, const char* name = "ray") {
   detail::check_finite(r.direction, name, "direction");
   if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0))
     throw invalid_input(std::string(name) + " direction is the zero vector");
+}
+
+template <class T>
+void check(const Triangle<T>& t, const char* name = "triangle") {
+  static const char* const field[3] = {"vertex 0", "vertex 1", "vertex 2"};
+  for (int k = 0; k < 3; ++k) detail::check_finite(t.vertex[k], name, field[k]);
+}
+
+template <class T>
+void check(const OrientedBox<T>& b, const char* name = "oriented box") {
+  static const char* const field[3] = {"axis 0", "axis 1", "axis 2"};
+  detail::check_finite(b.center, name, "centre");
+  detail::check_finite(b.extent, name, "extent");
+  for (int k = 0; k < 3; ++k) detail::check_finite(b.axis[k], name, field[k]);
+  for (int i = 0; i < 3; ++i)
+    if (b.extent[i] < T(0))
+      throw invalid_input(std::string(name) + " extent is negative along axis " + std::to_string(i) + " (" +
+                          detail::show(b.extent[i]) + ")");
+  if (det3_sign(b.axis[0], b.axis[1], b.axis[2]) == 0)
+    throw invalid_input(std::string(name) + " axes are linearly dependent (det[a0 a1 a2] = 0 exactly)");
 }
 
 }  // namespace cdref

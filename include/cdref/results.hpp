@@ -66,4 +66,16 @@ struct Proximity {
   Vec3<S> closest = zero_vec<S>();
 };
 
+// A separating-axis test (Section 3.3, Theorem 3.1) on a pair (A, B) of convex polytopes.
+//   intersect    A and B share a point (closed sets: touching intersects);
+//   axis         when they do not, the index of the first separating axis in the query's
+//                documented order (-1 when they intersect);
+//   direction    that axis, unnormalised, in world coordinates (0 when they intersect).
+template <class T>
+struct Separation {
+  bool intersect = false;
+  int axis = -1;
+  Vec3<T> direction = zero_vec<T>();
+};
+
 }  // namespace cdref

@@ -22,6 +22,9 @@ struct number_traits<mpfr::mpreal> {
   static double to_double(const mpfr::mpreal& x) { return mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN); }
   static float to_float(const mpfr::mpreal& x) { return mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN); }
   static std::string name() { return "mpfr" + std::to_string(mpfr::mpreal::get_default_prec()); }
+  static mpfr::mpreal unit_roundoff() { return mpfr::ldexp(mpfr::mpreal(1), -int(mpfr::mpreal::get_default_prec())); }
+  static mpfr::mpreal denorm_min() { return mpfr::mpreal(0); }  // MPFR has no subnormals: a product never underflows here
+  static void to_rational(mpq_t q, const mpfr::mpreal& x) { mpfr_get_q(q, x.mpfr_srcptr()); }
 };
 
 // Sets mpreal's default precision (in bits) for the guard's lifetime.

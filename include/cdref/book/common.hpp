@@ -9,6 +9,11 @@
 namespace cdref::book::detail {
 
 template <class S>
+S abs_of(const S& x) {
+  return x < S(0) ? S(-x) : x;
+}
+
+template <class S>
 S max_of(const S& a, const S& b) {
   return a < b ? b : a;
 }

@@ -1,0 +1,97 @@
+// cdref/det_sign.hpp - the exact sign of a 3x3 determinant det[a b c] = a . (b x c), for
+// any number type cdref runs on. An oriented box's axes must be linearly independent, and
+// "independent" is decided exactly: no tolerance, whatever the inputs' type.
+//
+//   exact types          the determinant in T, compared with 0;
+//   IEEE types, MPFR     a filter first: d~ = fl(a . (b x c)) with the absolute permanent
+//                        p~ = fl(|a| . (|b| x |c|)). Each of the six products of three
+//                        factors carries at most 3 roundings, the cross product's differences
+//                        one more and the dot product's two sums two more: |d~ - d| <=
+//                        gamma_6 p <= 7u p~ (the rounding of p~ itself is within the margin)
+//                        while nothing overflows; an underflowing product is off by at most
+//                        the smallest subnormal, and there are at most 12 such roundings. So
+//                        |d~| > 8u p~ + 16 denorm_min decides the sign. Otherwise (near a
+//                        degenerate frame, or p~ not finite) the inputs are converted exactly
+//                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
+//                        exactly;
+//   other types          (the oracle's filter types) the determinant in T, whose comparison
+//                        is certain or throws oracle::uncertain.
+#pragma once
+
+#include <gmp.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "number_traits.hpp"
+#include "vec.hpp"
+
+namespace cdref {
+
+namespace detail {
+
+// det[a b c] over GMP rationals, from exact conversions of the entries.
+template <class T>
+int det3_sign_rational(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  mpq_t m[9], t, u, d;
+  for (auto& q : m) mpq_init(q);
+  mpq_init(t);
+  mpq_init(u);
+  mpq_init(d);
+  for (int i = 0; i < 3; ++i) {
+    number_traits<T>::to_rational(m[i], a[i]);
+    number_traits<T>::to_rational(m[3 + i], b[i]);
+    number_traits<T>::to_rational(m[6 + i], c[i]);
+  }
+  // d = sum_i a_i (b_{i+1} c_{i+2} - b_{i+2} c_{i+1})
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpq_mul(t, m[3 + j], m[6 + k]);
+    mpq_mul(u, m[3 + k], m[6 + j]);
+    mpq_sub(t, t, u);
+    mpq_mul(t, t, m[i]);
+    mpq_add(d, d, t);
+  }
+  const int s = mpq_sgn(d);
+  for (auto& q : m) mpq_clear(q);
+  mpq_clear(t);
+  mpq_clear(u);
+  mpq_clear(d);
+  return s;
+}
+
+template <class T>
+T abs_of(const T& x) {
+  return x < T(0) ? T(-x) : x;
+}
+
+}  // namespace detail
+
+template <class T>
+int det3_sign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  const T d = a.dot(b.cross(c));
+  if constexpr (number_traits<T>::is_exact) {
+    return d > T(0) ? 1 : (d < T(0) ? -1 : 0);
+  } else if constexpr (requires(mpq_t q, const T& x) { number_traits<T>::to_rational(q, x); }) {
+    using std::fabs;
+    const Vec3<T> aa(detail::abs_of(a[0]), detail::abs_of(a[1]), detail::abs_of(a[2]));
+    const Vec3<T> bb(detail::abs_of(b[0]), detail::abs_of(b[1]), detail::abs_of(b[2]));
+    const Vec3<T> cc(detail::abs_of(c[0]), detail::abs_of(c[1]), detail::abs_of(c[2]));
+    T p(0);
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      p += aa[i] * (bb[j] * cc[k] + bb[k] * cc[j]);
+    }
+    if (number_traits<T>::is_finite(p) && number_traits<T>::is_finite(d)) {
+      const T bound = number_traits<T>::unit_roundoff() * T(8) * p + number_traits<T>::denorm_min() * T(16);
+      if (d > bound) return 1;
+      if (d < T(-bound)) return -1;
+    }
+    return detail::det3_sign_rational(a, b, c);
+  } else {
+    return d > T(0) ? 1 : (d < T(0) ? -1 : 0);  // certain, or the filter type throws
+  }
+}
+
+}  // namespace cdref

@@ -1,0 +1,274 @@
+// cdref/solid/obb.hpp - the oriented box as the solid its inputs define: queries on the
+// parallelepiped P = {c + sum_i u_i a_i : |u_i| <= h_i}, whatever the axes (linearly
+// independent, not necessarily orthonormal). At an exact type these are the truth that the
+// book's frame-transform formulations (cdref/book/obb.hpp, obb_obb.hpp) approximate; when
+// the axes are exactly orthonormal both agree exactly.
+//
+// Coordinates. With n_i = a_{i+1} x a_{i+2} (the face normals) and delta = det[a_0 a_1 a_2]
+// = a_i . n_i != 0, the coordinates of a point p are u_i = n_i . (p - c) / delta (Cramer's
+// rule: n_i . a_j = delta [i = j]). cdref uses U_i = sign(delta) n_i . (p - c) = |delta| u_i
+// and the box [-H, H], H_i = |delta| h_i: a uniform scaling of the u coordinates, so no
+// division, and ray parameters are unchanged.
+//
+//   separate(A, B)        Theorem 3.1 on the two polytopes (book/separating_axes.hpp):
+//                         faces n_i, edges a_i; the same axis order as the book's.
+//   cast / hit(Segment | Ray, OrientedBox)
+//                         Algorithm 3.3 in U coordinates (P is exactly the box [-H, H]
+//                         there); the entry point s + lambda r in world coordinates; the
+//                         normal of the entering face U_i = -+H_i is -+sign(delta) n_i / |n_i|
+//                         (outward, unit: one square root).
+//   proximity / intersect(Sphere, OrientedBox)
+//                         centre q in P (|U_i| <= H_i for all i): distance 0; the nearest
+//                         face is the i minimising delta_i = (H_i - |U_i|) / |n_i| (its
+//                         squared value (H_i - |U_i|)^2 / |n_i|^2 is compared, first on
+//                         ties; the side is that of U_i, + for U_i = 0 as in the chapter);
+//                         witness on the box y = q + s (H_i - |U_i|) sign(delta) n_i / |n_i|^2
+//                         (rational), on the sphere q - rho s sign(delta) n_i / |n_i|, depth
+//                         delta_i + rho.
+//                         q outside: the closest point x of P is the nearest among the
+//                         projections of q onto the six face planes that fall inside their
+//                         face and the closest points of the twelve edges (the vertices are
+//                         edge ends): the closest point of a convex polytope to an outside
+//                         point lies on its boundary, and on a face either at the plane's
+//                         foot or on the face's border. Ties go to the first in the order:
+//                         faces 0-, 0+, 1-, 1+, 2-, 2+, then the edges parallel to a_0, a_1,
+//                         a_2 (signs of the other two axes - -, - +, + -, + +). With
+//                         v = x - q: distance max(|v| - rho, 0), depth max(rho - |v|, 0),
+//                         witnesses q + rho v/|v| (sphere) and x (box); intersect iff
+//                         |v|^2 <= rho^2.
+// Every value is rational except where a length |n_i| or |v| is taken: one square root per
+// value, so Quad<T> holds them exactly at a rational T.
+#pragma once
+
+#include "../book/ray_box.hpp"
+#include "../book/separating_axes.hpp"
+
+namespace cdref::solid {
+
+namespace detail {
+
+using book::detail::abs_of;
+
+template <class T>
+struct Frame {
+  std::array<Vec3<T>, 3> n;  // face normals, times sign(delta): U_i = n_i . (p - c)
+  Vec3<T> H;                 // |delta| h
+  T delta_abs;
+  int delta_sign;
+};
+
+template <class T>
+Frame<T> frame(const OrientedBox<T>& b) {
+  Frame<T> f;
+  for (int i = 0; i < 3; ++i) f.n[i] = b.axis[(i + 1) % 3].cross(b.axis[(i + 2) % 3]);
+  const T delta = b.axis[0].dot(f.n[0]);
+  f.delta_sign = delta < T(0) ? -1 : 1;
+  f.delta_abs = abs_of(delta);
+  if (f.delta_sign < 0)
+    for (auto& n : f.n) n = -n;
+  for (int i = 0; i < 3; ++i) f.H[i] = f.delta_abs * b.extent[i];
+  return f;
+}
+template <class T>
+Vec3<T> coords(const Frame<T>& f, const Vec3<T>& p, const Vec3<T>& c) {
+  const Vec3<T> d = p - c;
+  return Vec3<T>(f.n[0].dot(d), f.n[1].dot(d), f.n[2].dot(d));
+}
+template <class T>
+Vec3<T> coords_of_vector(const Frame<T>& f, const Vec3<T>& v) {
+  return Vec3<T>(f.n[0].dot(v), f.n[1].dot(v), f.n[2].dot(v));
+}
+
+template <class T>
+Cast<sqrt_t<T>> cast_solid(const Vec3<T>& s_world, const Vec3<T>& r_world, const OrientedBox<T>& b, bool bounded,
+                           unsigned w) {
+  using S = sqrt_t<T>;
+  const Frame<T> f = frame(b);
+  const Vec3<T> s = coords(f, s_world, b.center);
+  const Vec3<T> r = coords_of_vector(f, r_world);
+  const Box<T> box{zero_vec<T>(), f.H};
+  const unsigned bt = bounded ? book::detail::outcode(Vec3<T>(s + r), f.H) : book::detail::outcode_at_infinity(s, r, f.H);
+  const Cast<T> c = book::detail::cast_box_local(s, r, box, book::detail::outcode(s, f.H), bt, bounded, want_normal);
+  Cast<S> out;
+  out.hit = c.hit;
+  if (!c.hit) return out;
+  out.enters = c.enters;
+  out.unbounded_exit = c.unbounded_exit;
+  out.lambda_enter = S(c.lambda_enter);
+  out.lambda_exit = S(c.lambda_exit);
+  if (w & want_point) out.point = lift<S>(affine(s_world, c.lambda_enter, r_world));
+  if (c.enters && (w & want_normal)) {
+    int axis = 0;
+    while (c.normal[axis] == T(0)) ++axis;
+    const T sg = c.normal[axis];  // -1 or +1
+    const Vec3<T>& n = f.n[axis];
+    const S len = root(T(n.squaredNorm()));
+    for (int k = 0; k < 3; ++k) out.normal[k] = S(T(sg * n[k])) / len;
+  }
+  return out;
+}
+
+template <class T>
+bool hit_solid(const Vec3<T>& s_world, const Vec3<T>& r_world, const OrientedBox<T>& b, bool bounded) {
+  const Frame<T> f = frame(b);
+  const Vec3<T> s = coords(f, s_world, b.center);
+  const Vec3<T> r = coords_of_vector(f, r_world);
+  const unsigned bt = bounded ? book::detail::outcode(Vec3<T>(s + r), f.H) : book::detail::outcode_at_infinity(s, r, f.H);
+  return book::detail::hit_box_local(s, r, f.H, book::detail::outcode(s, f.H), bt, bounded);
+}
+
+// The closest point of the parallelepiped to q (outside it), as a world point, and its
+// squared distance.
+template <class T>
+Vec3<T> closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U) {
+  Vec3<T> best = q;
+  T best_d2(0);
+  bool have = false;
+  auto offer = [&](const Vec3<T>& x) {
+    const T d2 = Vec3<T>(x - q).squaredNorm();
+    if (!have || d2 < best_d2) best = x, best_d2 = d2, have = true;
+  };
+  // faces: the foot of q on the plane U_i = sg H_i, if inside the face
+  for (int i = 0; i < 3; ++i)
+    for (int sg : {-1, 1}) {
+      const Vec3<T>& n = f.n[i];
+      const T nn = n.squaredNorm();
+      const T excess = U[i] - T(sg) * f.H[i];  // n . (q - c) - offset
+      // foot = q - (excess / |n|^2) n; its coordinates U_m - excess (n_m . n) / |n|^2
+      bool inside = true;
+      for (int m = 0; m < 3 && inside; ++m) {
+        if (m == i) continue;
+        const T Um = U[m] - excess * f.n[m].dot(n) / nn;
+        inside = abs_of(Um) <= f.H[m];
+      }
+      if (inside) offer(Vec3<T>(q - (excess / nn) * n));
+    }
+  // edges parallel to a_i: c + sj h_j a_j + sk h_k a_k + t a_i, |t| <= h_i
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    for (int sj : {-1, 1})
+      for (int sk : {-1, 1}) {
+        const Vec3<T> p0 = b.center + (T(sj) * b.extent[j]) * b.axis[j] + (T(sk) * b.extent[k]) * b.axis[k];
+        const Vec3<T>& a = b.axis[i];
+        T t = a.dot(Vec3<T>(q - p0)) / a.squaredNorm();
+        if (t < T(-b.extent[i])) t = T(-b.extent[i]);
+        if (t > b.extent[i]) t = b.extent[i];
+        offer(Vec3<T>(p0 + t * a));
+      }
+  }
+  return best;
+}
+
+}  // namespace detail
+
+// ---- separating axes ----
+template <class T>
+Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
+  return book::separate_polytopes(a, b, "oriented box A", "oriented box B");
+}
+template <class T>
+Separation<T> separate(const Segment<T>& s, const OrientedBox<T>& b) {
+  return book::separate_polytopes(s, b, "segment", "oriented box");
+}
+template <class T>
+Separation<T> separate(const Ray<T>& r, const OrientedBox<T>& b) {
+  return book::separate_polytopes(r, b, "ray", "oriented box");
+}
+template <class T>
+Separation<T> separate(const Triangle<T>& t, const OrientedBox<T>& b) {
+  return book::separate_polytopes(t, b, "triangle", "oriented box");
+}
+
+// ---- casts ----
+template <class T>
+Cast<sqrt_t<T>> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_cast) {
+  check(seg, "segment");
+  check(b, "oriented box");
+  return detail::cast_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true, w);
+}
+template <class T>
+Cast<sqrt_t<T>> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast) {
+  check(ray, "ray");
+  check(b, "oriented box");
+  return detail::cast_solid(ray.source, ray.direction, b, false, w);
+}
+template <class T>
+bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
+  check(seg, "segment");
+  check(b, "oriented box");
+  return detail::hit_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true);
+}
+template <class T>
+bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
+  check(ray, "ray");
+  check(b, "oriented box");
+  return detail::hit_solid(ray.source, ray.direction, b, false);
+}
+
+// ---- sphere ----
+template <class T>
+bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
+  check(sp, "sphere");
+  check(b, "oriented box");
+  const detail::Frame<T> f = detail::frame(b);
+  const Vec3<T> U = detail::coords(f, sp.center, b.center);
+  bool inside = true;
+  for (int i = 0; i < 3; ++i) inside = inside && detail::abs_of(U[i]) <= f.H[i];
+  if (inside) return true;
+  const Vec3<T> x = detail::closest_outside(b, f, sp.center, U);
+  return Vec3<T>(x - sp.center).squaredNorm() <= sp.radius * sp.radius;
+}
+
+template <class T>
+Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
+  using S = sqrt_t<T>;
+  check(sp, "sphere");
+  check(b, "oriented box");
+  Proximity<S> res;
+  const detail::Frame<T> f = detail::frame(b);
+  const Vec3<T>& q = sp.center;
+  const T& rho = sp.radius;
+  const Vec3<T> U = detail::coords(f, q, b.center);
+  bool inside = true;
+  for (int i = 0; i < 3; ++i) inside = inside && detail::abs_of(U[i]) <= f.H[i];
+  if (!inside) {
+    const Vec3<T> x = detail::closest_outside(b, f, q, U);
+    const Vec3<T> v = x - q;
+    const T vv = v.squaredNorm();
+    res.intersect = vv <= rho * rho;
+    if (w & want_closest) res.closest = lift<S>(x);
+    if (!(w & (want_distance | want_depth | want_witnesses))) return res;
+    const S len = root(vv);
+    if (w & want_distance) res.distance = book::detail::max_of(S(len - S(rho)), S(0));
+    if (w & want_depth) res.depth = book::detail::max_of(S(S(rho) - len), S(0));
+    if (w & want_witnesses) {
+      res.on_a = offset(q, S(rho), book::detail::divided(v, len));
+      res.on_b = lift<S>(x);
+    }
+    return res;
+  }
+  res.intersect = true;
+  if (w & want_closest) res.closest = lift<S>(q);
+  if (!(w & (want_depth | want_witnesses))) return res;
+  // the nearest face: smallest (H_i - |U_i|)^2 / |n_i|^2, first on ties
+  int axis = 0;
+  T best(0);
+  for (int i = 0; i < 3; ++i) {
+    const T gap = f.H[i] - detail::abs_of(U[i]);
+    const T d2 = gap * gap / f.n[i].squaredNorm();
+    if (i == 0 || d2 < best) axis = i, best = d2;
+  }
+  const T sg = U[axis] < T(0) ? T(-1) : T(1);
+  const Vec3<T>& n = f.n[axis];
+  const T nn = n.squaredNorm();
+  const T gap = f.H[axis] - detail::abs_of(U[axis]);
+  const S len = root(nn);  // |n|
+  if (w & want_depth) res.depth = S(gap) / len + S(rho);
+  if (w & want_witnesses) {
+    res.on_b = lift<S>(Vec3<T>(q + (sg * gap / nn) * n));
+    for (int k = 0; k < 3; ++k) res.on_a[k] = S(q[k]) - S(T(rho * sg * n[k])) / len;
+  }
+  return res;
+}
+
+}  // namespace cdref::solid
