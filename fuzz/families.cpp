@@ -7,6 +7,8 @@
 // applied to a uniform case, k = -320..300: squares overflow past 1e154 and underflow below
 // 1e-154, and at k = -310 and -320 the coordinates themselves are subnormal).
 #include <cdref/fuzz/families.hpp>
+
+#include "family_tools.hpp"
 #include <cmath>
 #include <stdexcept>
 
@@ -14,64 +16,7 @@ namespace cdref::fuzz {
 
 namespace {
 
-using Next = std::function<std::uint64_t()>;
-
-struct V {
-  double x, y, z;
-};
-V operator+(V a, V b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V operator-(V a, V b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V operator*(double k, V a) { return {k * a.x, k * a.y, k * a.z}; }
-double dot(V a, V b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V cross(V a, V b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-V normalized(V a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
-
-double uni(Next& next, double a, double b) { return a + (b - a) * double(next() >> 11) * 0x1p-53; }
-int pick(Next& next, int n) { return int(next() % std::uint64_t(n)); }
-double sign(Next& next) { return (next() & 1) ? 1.0 : -1.0; }
-V uvec(Next& next, double a, double b) { return {uni(next, a, b), uni(next, a, b), uni(next, a, b)}; }
-V unit(Next& next) {
-  for (;;) {
-    const V v = uvec(next, -1, 1);
-    const double n = dot(v, v);
-    if (n > 1e-4 && n <= 1) return normalized(v);
-  }
-}
-// A unit vector orthogonal to u.
-V perp(Next& next, V u) {
-  for (;;) {
-    const V w = cross(u, unit(next));
-    if (dot(w, w) > 1e-4) return normalized(w);
-  }
-}
-V axis(int i, double s = 1) { return i == 0 ? V{s, 0, 0} : (i == 1 ? V{0, s, 0} : V{0, 0, s}); }
-
-void put(Inputs& in, int k, V v) {
-  in[k] = v.x;
-  in[k + 1] = v.y;
-  in[k + 2] = v.z;
-}
-
-std::vector<int> range(int a, int b, int step = 1) {
-  std::vector<int> v;
-  for (int k = a; k <= b; k += step) v.push_back(k);
-  return v;
-}
-const std::vector<int> tangency_scales = {1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52};
-const std::vector<int> decades = range(0, 12);
-// 10^-320 and 10^-310 put the uniform family's coordinates among the subnormals.
-const std::vector<int> magnitudes = [] {
-  std::vector<int> v = {-320, -310};
-  for (int k : range(-300, 300, 50)) v.push_back(k);
-  return v;
-}();
-
-// Scales every coordinate and length of a case by 10^k.
-Inputs scaled(Inputs in, int n, int k) {
-  const double f = std::pow(10.0, k);
-  for (int i = 0; i < n; ++i) in[i] *= f;
-  return in;
-}
+using namespace family;
 
 // ---- a segment or ray against a sphere: inputs s, t (or d), c, rho ----
 struct SphereShot {

@@ -101,7 +101,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   }
   char line[512];
   o << "Per query and implementation (errors in ulps of the implementation's type, against the correctly\n"
-       "rounded exact answer; misclassified: the full query / the root- and division-free predicate):\n\n";
+       "rounded exact answer; misclassified: the full query / the predicate column, its other formulation):\n\n";
   std::snprintf(line, sizeof line, "%-20s %-17s %10s %9s %16s %16s %10s  %s\n", "query", "impl", "cases", "refused",
                 "misclassified", "predicate wrong", "nonfinite", "max error (where)");
   o << line;

@@ -16,6 +16,7 @@
 #include <CGAL/Intersections_3/Iso_cuboid_3_Ray_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Segment_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Sphere_3.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Triangle_3.h>
 #include <CGAL/Intersections_3/Ray_3_Sphere_3.h>
 #include <CGAL/Intersections_3/Segment_3_Sphere_3.h>
 #include <CGAL/Intersections_3/Sphere_3_Sphere_3.h>

@@ -29,6 +29,10 @@ bool finish(const Proximity<S>& p, Mode m) {
   return p.intersect;
 }
 inline bool finish(bool intersect, Mode) { return intersect; }
+template <class S>
+bool finish(const Separation<S>& s, Mode) {
+  return s.intersect;
+}
 
 template <class Spec, class T>
 auto prepare(const std::vector<Inputs>& cases) {
@@ -88,7 +92,7 @@ std::function<bool(std::size_t)> robust_row(const std::vector<Inputs>& cases) {
 template <class Spec>
 std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,
                                  const std::string& hard_name) {
-  const bool values = !Spec::outputs().empty();
+  const bool values = !Spec::outputs().empty();  // outputs beyond the classification
   const Mode full = values ? Mode::full : Mode::classify;
   std::vector<TimedRow> rows;
   rows.push_back({"book float", "book-float", "", book_row<Spec, float>(cases, full)});

@@ -12,5 +12,11 @@ std::vector<Family> sphere_shot_family_list(bool ray);  // a segment (or a ray) 
 std::vector<Family> sphere_box_family_list();
 std::vector<Family> box_box_family_list();
 std::vector<Family> box_shot_family_list(bool ray);     // a segment (or a ray) and a box
+// fuzz/families_sat.cpp
+std::vector<Family> triangle_box_family_list();
+std::vector<Family> obb_obb_family_list();
+// An axis-aligned family as one against an oriented box (see families_sat.cpp).
+std::vector<Family> rotated_family_list(std::vector<Family> base, std::vector<int> points, std::vector<int> vectors,
+                                        std::vector<int> scalars, int center, int extent, int box_at);
 
 }  // namespace cdref::fuzz

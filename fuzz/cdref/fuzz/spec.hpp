@@ -92,6 +92,22 @@ inline constexpr const char* prox_help =
     "  distance, depth: distance and penetration depth\n"
     "  witness_a_[xyz], witness_b_[xyz]: the witness points on the first and second argument\n";
 
+// An oriented box's columns: centre, extent, axis0, axis1, axis2 (after `prefix`).
+inline std::vector<std::string> obb_cols(const std::string& prefix) {
+  std::vector<std::string> out;
+  for (const char* part : {"center", "extent", "axis0", "axis1", "axis2"})
+    for (const char* ax : {"x", "y", "z"}) out.push_back(prefix + part + "_" + ax);
+  return out;
+}
+template <class T>
+OrientedBox<T> obb(const Inputs& in, int k) {
+  return {col3<T>(in, k), col3<T>(in, k + 3), {col3<T>(in, k + 6), col3<T>(in, k + 9), col3<T>(in, k + 12)}};
+}
+inline std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 inline std::vector<Output> cast_outputs() {
   return {{"lambda_enter", 1, Output::on_hit},
           {"lambda_exit", 1, Output::on_hit},
@@ -101,6 +117,10 @@ inline std::vector<Output> cast_outputs() {
 inline std::vector<Output> prox_outputs() {
   return {{"distance", 1}, {"depth", 1}, {"witness_a", 3}, {"witness_b", 3}};
 }
+inline std::vector<Output> sat_outputs() { return {{"axis", 1, Output::on_miss, true}}; }
+inline constexpr const char* sat_help =
+    "  axis: when they do not intersect, the index of the first separating axis in the query's\n"
+    "  documented order (graded only where both say apart, as right or wrong)\n";
 
 // ---- values ----
 // A value of the sqrt type S as the implementation of type F reports it (exact values
@@ -150,6 +170,13 @@ void put(Answer& a, const Proximity<S>& p, bool values) {
 template <class F>
 void put(Answer& a, bool intersect, bool) {
   a.cls = intersect;
+}
+// A separating-axis test: its classification and, when apart, the index of the first
+// separating axis (a label; -1 when they intersect).
+template <class F, class S>
+void put(Answer& a, const Separation<S>& s, bool values) {
+  a.cls = s.intersect;
+  if (values) a.v[0] = s.axis;
 }
 
 // ---- evaluations ----
@@ -251,6 +278,15 @@ Answer oracle_classify_of(const Inputs& in, bool* exact_used) {
   r.cls = r.pred = Spec::oracle(a, b, &stage);  // at exact types the two formulations agree (tested)
   if (exact_used) *exact_used = stage != oracle::Stage::filter;
   return r;
+}
+
+// The book at an exact type, values rounded to double: beside the truth where the book assumes
+// more than its inputs give (orthonormal axes), its misclassifications are that assumption's
+// alone, apart from any rounding.
+template <class Spec>
+Implementation book_exact_variant() {
+  return {"book-exact", 53, [](Query, const Inputs& in) { return book_at<Spec, CGAL::Gmpq, double>(in, true); },
+          {Query{Spec::id}}};
 }
 
 }  // namespace cdref::fuzz::spec

@@ -68,8 +68,8 @@ Projection<T> project(const Polytope<T>& p, const Vec3<T>& L) {
       r.lo = r.hi = p.point[0].dot(L);
       for (int k = 1; k < p.n; ++k) {
         const T x = p.point[k].dot(L);
-        if (x < r.lo) r.lo = x;
-        if (r.hi < x) r.hi = x;
+        r.lo = min_of(r.lo, x);
+        r.hi = max_of(r.hi, x);
       }
       return r;
     }
@@ -77,8 +77,7 @@ Projection<T> project(const Polytope<T>& p, const Vec3<T>& L) {
       const T c = p.point[0].dot(L);
       T rad(0);
       for (int k = 0; k < p.n; ++k) {
-        const T g = p.gen[k].dot(L);
-        rad += p.half[k] * (g < T(0) ? T(-g) : g);
+        rad += p.half[k] * abs_of(T(p.gen[k].dot(L)));
       }
       r.lo = c - rad;
       r.hi = c + rad;

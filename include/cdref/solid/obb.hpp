@@ -25,14 +25,11 @@
 //                         witness on the box y = q + s (H_i - |U_i|) sign(delta) n_i / |n_i|^2
 //                         (rational), on the sphere q - rho s sign(delta) n_i / |n_i|, depth
 //                         delta_i + rho.
-//                         q outside: the closest point x of P is the nearest among the
-//                         projections of q onto the six face planes that fall inside their
-//                         face and the closest points of the twelve edges (the vertices are
-//                         edge ends): the closest point of a convex polytope to an outside
-//                         point lies on its boundary, and on a face either at the plane's
-//                         foot or on the face's border. Ties go to the first in the order:
-//                         faces 0-, 0+, 1-, 1+, 2-, 2+, then the edges parallel to a_0, a_1,
-//                         a_2 (signs of the other two axes - -, - +, + -, + +). With
+//                         q outside: the closest point x of P (unique: P is convex) is the
+//                         nearest among the 8 vertices, the feet of q on the 12 edge lines
+//                         strictly inside their edge and the feet on the 6 face planes strictly
+//                         inside their face: it lies on the boundary, in the relative interior
+//                         of a face, of an edge, or at a vertex, and there it is that foot. With
 //                         v = x - q: distance max(|v| - rho, 0), depth max(rho - |v|, 0),
 //                         witnesses q + rho v/|v| (sphere) and x (box); intersect iff
 //                         |v|^2 <= rho^2.
@@ -48,6 +45,7 @@ namespace cdref::solid {
 namespace detail {
 
 using book::detail::abs_of;
+using book::detail::min_of;
 
 template <class T>
 struct Frame {
@@ -117,18 +115,46 @@ bool hit_solid(const Vec3<T>& s_world, const Vec3<T>& r_world, const OrientedBox
   return book::detail::hit_box_local(s, r, f.H, book::detail::outcode(s, f.H), bt, bounded);
 }
 
-// The closest point of the parallelepiped to q (outside it), as a world point, and its
-// squared distance.
+// The closest point of the parallelepiped to q (outside it): its squared distance, and with
+// `point` the point itself. The candidates are the 8 vertices, the feet of q on the 12 edges
+// that fall strictly inside their edge and the feet on the 6 face planes that fall strictly
+// inside their face: each point of the boundary is offered at most once (a foot on a face's
+// border is an edge's foot or a vertex), so equal candidates never compete. The smallest
+// squared distance needs no decision (min); the point is the first candidate reaching it.
 template <class T>
-Vec3<T> closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U) {
-  Vec3<T> best = q;
-  T best_d2(0);
+T closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U, Vec3<T>* point) {
+  T best(0);
   bool have = false;
   auto offer = [&](const Vec3<T>& x) {
     const T d2 = Vec3<T>(x - q).squaredNorm();
-    if (!have || d2 < best_d2) best = x, best_d2 = d2, have = true;
+    if (point) {
+      if (!have || d2 < best) best = d2, *point = x;
+    } else {
+      best = have ? min_of(best, d2) : d2;
+    }
+    have = true;
   };
-  // faces: the foot of q on the plane U_i = sg H_i, if inside the face
+  // vertices
+  for (int s0 : {-1, 1})
+    for (int s1 : {-1, 1})
+      for (int s2 : {-1, 1}) {
+        Vec3<T> x = b.center;
+        const int sg[3] = {s0, s1, s2};
+        for (int i = 0; i < 3; ++i) x += (T(sg[i]) * b.extent[i]) * b.axis[i];
+        offer(x);
+      }
+  // edges parallel to a_i: c + sj h_j a_j + sk h_k a_k + t a_i, |t| < h_i
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    for (int sj : {-1, 1})
+      for (int sk : {-1, 1}) {
+        const Vec3<T> p0 = b.center + (T(sj) * b.extent[j]) * b.axis[j] + (T(sk) * b.extent[k]) * b.axis[k];
+        const Vec3<T>& a = b.axis[i];
+        const T t = a.dot(Vec3<T>(q - p0)) / a.squaredNorm();
+        if (T(-b.extent[i]) < t && t < b.extent[i]) offer(Vec3<T>(p0 + t * a));
+      }
+  }
+  // faces: the foot of q on the plane U_i = sg H_i, if strictly inside the face
   for (int i = 0; i < 3; ++i)
     for (int sg : {-1, 1}) {
       const Vec3<T>& n = f.n[i];
@@ -139,23 +165,10 @@ Vec3<T> closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T
       for (int m = 0; m < 3 && inside; ++m) {
         if (m == i) continue;
         const T Um = U[m] - excess * f.n[m].dot(n) / nn;
-        inside = abs_of(Um) <= f.H[m];
+        inside = abs_of(Um) < f.H[m];
       }
       if (inside) offer(Vec3<T>(q - (excess / nn) * n));
     }
-  // edges parallel to a_i: c + sj h_j a_j + sk h_k a_k + t a_i, |t| <= h_i
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    for (int sj : {-1, 1})
-      for (int sk : {-1, 1}) {
-        const Vec3<T> p0 = b.center + (T(sj) * b.extent[j]) * b.axis[j] + (T(sk) * b.extent[k]) * b.axis[k];
-        const Vec3<T>& a = b.axis[i];
-        T t = a.dot(Vec3<T>(q - p0)) / a.squaredNorm();
-        if (t < T(-b.extent[i])) t = T(-b.extent[i]);
-        if (t > b.extent[i]) t = b.extent[i];
-        offer(Vec3<T>(p0 + t * a));
-      }
-  }
   return best;
 }
 
@@ -215,8 +228,7 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   bool inside = true;
   for (int i = 0; i < 3; ++i) inside = inside && detail::abs_of(U[i]) <= f.H[i];
   if (inside) return true;
-  const Vec3<T> x = detail::closest_outside(b, f, sp.center, U);
-  return Vec3<T>(x - sp.center).squaredNorm() <= sp.radius * sp.radius;
+  return detail::closest_outside(b, f, sp.center, U, static_cast<Vec3<T>*>(nullptr)) <= sp.radius * sp.radius;
 }
 
 template <class T>
@@ -232,9 +244,9 @@ Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, uns
   bool inside = true;
   for (int i = 0; i < 3; ++i) inside = inside && detail::abs_of(U[i]) <= f.H[i];
   if (!inside) {
-    const Vec3<T> x = detail::closest_outside(b, f, q, U);
+    Vec3<T> x;
+    const T vv = detail::closest_outside(b, f, q, U, &x);
     const Vec3<T> v = x - q;
-    const T vv = v.squaredNorm();
     res.intersect = vv <= rho * rho;
     if (w & want_closest) res.closest = lift<S>(x);
     if (!(w & (want_distance | want_depth | want_witnesses))) return res;

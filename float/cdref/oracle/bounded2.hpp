@@ -17,7 +17,7 @@
 //          (hi, lo) = two_sum(s, w) is exact. So a + b = hi + lo + r1 + r2 exactly and
 //          e' = ea + eb + |r1| + |r2| (0 when both roundings were exact: a sum of exact
 //          values that fits in a double word stays exact, ties included).
-//   a * b: with a = ah + al, b = bh + bl: (p, pe) = two_prod(ah, bh) is exact when
+//   a * b: exactly 0 when either factor is an exact 0. Otherwise, with a = ah + al, b = bh + bl: (p, pe) = two_prod(ah, bh) is exact when
 //          |p| >= 2^-968 (then ah bh - p is a multiple of 2^-1073 below 2^53 of them),
 //          else off by at most eta; c1 = fl(ah bl), c2 = fl(al bh), al bl left out;
 //          w1 = fl(pe + c1), w = fl(w1 + c2); (hi, lo) = two_sum(p, w). The propagated
@@ -70,6 +70,8 @@ class Bounded2 {
   Bounded2() = default;
   Bounded2(double x) : hi_(x) {}  // NOLINT: an exact input
   Bounded2(int x) : hi_(x) {}     // NOLINT
+  // The exact value hi + lo, for hi = fl(hi + lo) (a long double split into two doubles).
+  static Bounded2 exact_pair(double hi, double lo) { return make(hi, lo, 0); }
 
   double hi() const { return hi_; }
   double lo() const { return lo_; }
@@ -90,6 +92,7 @@ class Bounded2 {
   }
   friend Bounded2 operator-(const Bounded2& a, const Bounded2& b) { return a + (-b); }
   friend Bounded2 operator*(const Bounded2& a, const Bounded2& b) {
+    if (a.exact_zero() || b.exact_zero()) return Bounded2(0.0);  // exactly 0, whatever the other
     const double p = a.hi_ * b.hi_;
     const double pe = std::fma(a.hi_, b.hi_, -p);
     double err = (std::fabs(p) >= exact_product || (p == 0 && (a.hi_ == 0 || b.hi_ == 0))) ? 0 : eta;
@@ -172,6 +175,22 @@ class Bounded2 {
   friend bool operator==(const Bounded2& a, const Bounded2& b) { return (a - b).sign() == 0; }
   friend bool operator!=(const Bounded2& a, const Bounded2& b) { return !(a == b); }
 
+  // |x|, min and max need no decision: each is 1-Lipschitz, so the computed operands' value
+  // with the larger of their bounds bounds the exact result (cdref's algorithms call abs_of,
+  // min_of and max_of for them, found here by argument-dependent lookup). The values are
+  // compared as the double words they are (hi first, then lo: both are normalized).
+  friend Bounded2 abs_of(const Bounded2& a) { return a.hi_ < 0 || (a.hi_ == 0 && a.lo_ < 0) ? -a : a; }
+  friend Bounded2 max_of(const Bounded2& a, const Bounded2& b) {
+    Bounded2 r = word_less(a, b) ? b : a;
+    r.e_ = std::max(a.e_, b.e_);
+    return r;
+  }
+  friend Bounded2 min_of(const Bounded2& a, const Bounded2& b) {
+    Bounded2 r = word_less(a, b) ? a : b;
+    r.e_ = std::max(a.e_, b.e_);
+    return r;
+  }
+
   // The exact value rounded to nearest double, or uncertain.
   double rounded() const {
     if (!finite()) throw uncertain();
@@ -218,6 +237,8 @@ class Bounded2 {
   }
 
  private:
+  bool exact_zero() const { return hi_ == 0 && lo_ == 0 && e_ == 0; }
+  static bool word_less(const Bounded2& a, const Bounded2& b) { return a.hi_ < b.hi_ || (a.hi_ == b.hi_ && a.lo_ < b.lo_); }
   static void two_sum(double a, double b, double& s, double& t) {
     s = a + b;
     const double bb = s - a;

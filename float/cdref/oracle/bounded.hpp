@@ -111,6 +111,13 @@ class Bounded {
   }
   friend bool operator!=(const Bounded& a, const Bounded& b) { return !(a == b); }
 
+  // |x|, min and max need no decision: each is 1-Lipschitz, so the value of the computed
+  // operands with the larger of their bounds bounds the exact result (cdref's algorithms call
+  // abs_of, min_of and max_of for them, found here by argument-dependent lookup).
+  friend Bounded abs_of(const Bounded& a) { return {std::fabs(a.v_), a.e_}; }
+  friend Bounded max_of(const Bounded& a, const Bounded& b) { return {std::max(a.v_, b.v_), std::max(a.e_, b.e_)}; }
+  friend Bounded min_of(const Bounded& a, const Bounded& b) { return {std::min(a.v_, b.v_), std::max(a.e_, b.e_)}; }
+
   // The exact value rounded to nearest double, or uncertain.
   double rounded() const {
     if (!finite()) throw uncertain();

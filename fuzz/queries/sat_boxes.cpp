@@ -1,0 +1,16 @@
+// fuzz/queries/sat_boxes.cpp - the descriptors of the Section 3.3 queries on axis-aligned
+// boxes: one of the few translation units that instantiate the exact types.
+#include <cdref/fuzz/describe.hpp>
+
+#include "groups.hpp"
+#include "segment_box.hpp"
+#include "triangle_box.hpp"
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> sat_box_queries() {
+  return {spec::describe<queries::SegmentBox<false>>(), spec::describe<queries::SegmentBox<true>>(),
+          spec::describe<queries::TriangleBox>()};
+}
+
+}  // namespace cdref::fuzz

@@ -1,0 +1,19 @@
+// fuzz/queries/sat_obbs.cpp - the descriptors of the queries on oriented boxes: one of the few
+// translation units that instantiate the exact types.
+#include <cdref/fuzz/describe.hpp>
+
+#include "groups.hpp"
+#include "obb_casts.hpp"
+#include "obb_obb.hpp"
+#include "shape_obb.hpp"
+#include "sphere_obb.hpp"
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> obb_queries() {
+  return {spec::describe<queries::ObbObb>(),          spec::describe<queries::ShapeObb<false>>(),
+          spec::describe<queries::ShapeObb<true>>(),  spec::describe<queries::ObbCast<false>>(),
+          spec::describe<queries::ObbCast<true>>(),   spec::describe<queries::SphereObb>()};
+}
+
+}  // namespace cdref::fuzz
