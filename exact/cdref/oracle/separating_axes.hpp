@@ -36,8 +36,9 @@
 // The bound itself is computed in double from nonnegative terms (a few roundings each), so
 // 13u (1 + 32u) (M_X + G_A + G_B) Lambda >= gamma_12 s+. Underflow: each of the at most 96
 // operations of one s that underflows is off by at most 2^-1075: 96 * 2^-1074 more. No
-// intermediate exceeds s+, so a bound below 2^1000 rules out overflow (a NaN or infinite
-// input, or a bound beyond it, leaves the query to stage 2).
+// intermediate exceeds s+ (up to a factor 1 + 32u), so (M_X + G_A + G_B) Lambda <= 2^1000
+// rules out overflow (a NaN or infinite input, or a magnitude beyond it, leaves the query to
+// stage 2); a non-finite projection is never dropped by a min or a max.
 // An axis that is exactly zero has s = 0: never certain to separate, as it should be (the
 // book skips it); stage 1 proves an edge cross exactly zero when the edge and the box axis are
 // exact inputs (or exact differences: their Two-Sum errors vanish) and both products of each
@@ -225,6 +226,7 @@ inline int axis_test(const Shape& a, const BoxB& b, const double* L, double boun
       lo = hi = dot(a.X[0], L);
       for (int k = 1; k < a.n; ++k) {
         const double x = dot(a.X[k], L);
+        if (!std::isfinite(x)) return unknown;  // std::min and std::max would drop a NaN
         lo = std::min(lo, x);
         hi = std::max(hi, x);
       }
@@ -262,9 +264,10 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
   const BoxB b = box_b(b0);
   const Shape a = shape_a(a0, b0.center);
   const double lambda = std::max({a.lambda_face, b.lambda_face, 2 * a.medge * b.mb});
-  const double bound = 13 * u * (1 + 32 * u) * ((a.mx + a.G + b.G) * lambda) + 96 * 0x1p-1074;
+  const double mag = (a.mx + a.G + b.G) * lambda;  // >= s+ for every axis, up to (1 + 32u)
+  const double bound = 13 * u * (1 + 32 * u) * mag + 96 * 0x1p-1074;
   if (axis) *axis = -2;
-  if (!(bound <= 0x1p1000)) return unknown;
+  if (!(mag <= 0x1p1000)) return unknown;  // every intermediate is below s+: no overflow
   // the ray's d . L on B's faces: d exact, L with at most 2 roundings, the dot product 3 more
   const double dir_bound =
       a.kind == Shape::ray ? 6 * u * (1 + 32 * u) * (norm1(a.g[0]) * b.lambda_face) + 16 * 0x1p-1074 : -1;

@@ -115,8 +115,15 @@ class Bounded {
   // operands with the larger of their bounds bounds the exact result (cdref's algorithms call
   // abs_of, min_of and max_of for them, found here by argument-dependent lookup).
   friend Bounded abs_of(const Bounded& a) { return {std::fabs(a.v_), a.e_}; }
-  friend Bounded max_of(const Bounded& a, const Bounded& b) { return {std::max(a.v_, b.v_), std::max(a.e_, b.e_)}; }
-  friend Bounded min_of(const Bounded& a, const Bounded& b) { return {std::min(a.v_, b.v_), std::max(a.e_, b.e_)}; }
+  // (a non-finite operand makes the result non-finite: std::max would drop a NaN)
+  friend Bounded max_of(const Bounded& a, const Bounded& b) {
+    if (!a.finite() || !b.finite()) return {std::numeric_limits<double>::quiet_NaN(), 0};
+    return {std::max(a.v_, b.v_), std::max(a.e_, b.e_)};
+  }
+  friend Bounded min_of(const Bounded& a, const Bounded& b) {
+    if (!a.finite() || !b.finite()) return {std::numeric_limits<double>::quiet_NaN(), 0};
+    return {std::min(a.v_, b.v_), std::max(a.e_, b.e_)};
+  }
 
   // The exact value rounded to nearest double, or uncertain.
   double rounded() const {

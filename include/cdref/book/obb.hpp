@@ -12,7 +12,10 @@
 //   proximity / intersect(Sphere, OrientedBox)        Section 3.2.2 in the frame, witnesses
 //                                                     and the closest point mapped back
 //                                                     (c + sum_i p_i a_i).
-// Moving into the frame with the transpose inverts the frame only when it is orthonormal.
+// The moved primitive is not checked again: at a float type its coordinates may overflow where
+// the inputs do not, and the answer then drifts (as every float formulation does), it is not
+// refused. Moving into the frame with the transpose inverts the frame only when it is
+// orthonormal.
 // Axes given as floats are orthonormal only to rounding, and the box is then the
 // parallelepiped they span (primitives.hpp): these formulations approximate that solid even
 // at an exact type. The solid's own answers are in cdref/solid/obb.hpp.
@@ -96,7 +99,7 @@ Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(b, "oriented box");
   const Segment<T> local{detail::frame_point(b, seg.source), detail::frame_point(b, seg.target)};
   const Vec3<T> r = seg.target - seg.source;
-  return detail::world_separation(separate(local, detail::frame_box(b)), b, 0, r, [&](int) { return r; });
+  return detail::world_separation(detail::segment_box(local, detail::frame_box(b)), b, 0, r, [&](int) { return r; });
 }
 
 template <class T>
@@ -104,7 +107,7 @@ Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
   const Ray<T> local{detail::frame_point(b, ray.source), detail::frame_vector(b, ray.direction)};
-  return detail::world_separation(separate(local, detail::frame_box(b)), b, 0, ray.direction,
+  return detail::world_separation(detail::ray_box(local, detail::frame_box(b)), b, 0, ray.direction,
                                   [&](int) { return ray.direction; });
 }
 
@@ -115,7 +118,7 @@ Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   const Triangle<T> local{{detail::frame_point(b, tri.vertex[0]), detail::frame_point(b, tri.vertex[1]),
                            detail::frame_point(b, tri.vertex[2])}};
   const Vec3<T> n = Vec3<T>(tri.vertex[1] - tri.vertex[0]).cross(Vec3<T>(tri.vertex[2] - tri.vertex[0]));
-  return detail::world_separation(separate(local, detail::frame_box(b)), b, 1, n,
+  return detail::world_separation(detail::triangle_box(local, detail::frame_box(b)), b, 1, n,
                                   [&](int k) { return Vec3<T>(tri.vertex[(k + 1) % 3] - tri.vertex[k]); });
 }
 
@@ -146,28 +149,33 @@ template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
-  return hit(Segment<T>{detail::frame_point(b, seg.source), detail::frame_point(b, seg.target)}, detail::frame_box(b));
+  const Vec3<T> s = detail::frame_point(b, seg.source), t = detail::frame_point(b, seg.target);
+  return detail::hit_box_local(s, Vec3<T>(t - s), b.extent, detail::outcode(s, b.extent), detail::outcode(t, b.extent),
+                               true);
 }
 
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
-  return hit(Ray<T>{detail::frame_point(b, ray.source), detail::frame_vector(b, ray.direction)}, detail::frame_box(b));
+  const Vec3<T> s = detail::frame_point(b, ray.source), d = detail::frame_vector(b, ray.direction);
+  return detail::hit_box_local(s, d, b.extent, detail::outcode(s, b.extent), detail::outcode_at_infinity(s, d, b.extent),
+                               false);
 }
 
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   check(sp, "sphere");
   check(b, "oriented box");
-  return intersect(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b));
+  return detail::sphere_box_intersect(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b));
 }
 
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
   check(sp, "sphere");
   check(b, "oriented box");
-  Proximity<sqrt_t<T>> p = proximity(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b), w);
+  Proximity<sqrt_t<T>> p =
+      detail::sphere_box_proximity(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b), w);
   if (w & want_closest) p.closest = detail::world_point(b, p.closest);
   if (w & want_witnesses) {
     p.on_a = detail::world_point(b, p.on_a);

@@ -45,36 +45,47 @@ Separation<T> separation_of(int axis, const Vec3<T>& r) {
   return s;
 }
 
+// The separations on checked input (also the oriented box's, in its frame).
+template <class T>
+Separation<T> segment_box(const Segment<T>& seg, const Box<T>& box) {
+  const Vec3<T> m = (seg.source + seg.target) / T(2) - box.center;
+  const Vec3<T> w = (seg.target - seg.source) / T(2);
+  const Vec3<T> aw(abs_of(w[0]), abs_of(w[1]), abs_of(w[2]));
+  const Vec3<T>& h = box.extent;
+  int axis = -1;
+  for (int i = 0; i < 3 && axis < 0; ++i)
+    if (abs_of(m[i]) > h[i] + aw[i]) axis = i;
+  if (axis < 0) axis = cross_axes_apart(m, w, aw, h);
+  return separation_of(axis, Vec3<T>(seg.target - seg.source));
+}
+
+template <class T>
+Separation<T> ray_box(const Ray<T>& ray, const Box<T>& box) {
+  const Vec3<T> m = ray.source - box.center;
+  const Vec3<T>& d = ray.direction;
+  const Vec3<T> ad(abs_of(d[0]), abs_of(d[1]), abs_of(d[2]));
+  const Vec3<T>& h = box.extent;
+  int axis = -1;
+  for (int i = 0; i < 3 && axis < 0; ++i)
+    if ((m[i] > h[i] && d[i] >= T(0)) || (m[i] < T(-h[i]) && d[i] <= T(0))) axis = i;
+  if (axis < 0) axis = cross_axes_apart(m, d, ad, h);
+  return separation_of(axis, d);
+}
+
 }  // namespace detail
 
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const Box<T>& box) {
   check(seg, "segment");
   check(box, "box");
-  const Vec3<T> m = (seg.source + seg.target) / T(2) - box.center;
-  const Vec3<T> w = (seg.target - seg.source) / T(2);
-  const Vec3<T> aw(detail::abs_of(w[0]), detail::abs_of(w[1]), detail::abs_of(w[2]));
-  const Vec3<T>& h = box.extent;
-  int axis = -1;
-  for (int i = 0; i < 3 && axis < 0; ++i)
-    if (detail::abs_of(m[i]) > h[i] + aw[i]) axis = i;
-  if (axis < 0) axis = detail::cross_axes_apart(m, w, aw, h);
-  return detail::separation_of(axis, Vec3<T>(seg.target - seg.source));
+  return detail::segment_box(seg, box);
 }
 
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const Box<T>& box) {
   check(ray, "ray");
   check(box, "box");
-  const Vec3<T> m = ray.source - box.center;
-  const Vec3<T>& d = ray.direction;
-  const Vec3<T> ad(detail::abs_of(d[0]), detail::abs_of(d[1]), detail::abs_of(d[2]));
-  const Vec3<T>& h = box.extent;
-  int axis = -1;
-  for (int i = 0; i < 3 && axis < 0; ++i)
-    if ((m[i] > h[i] && d[i] >= T(0)) || (m[i] < T(-h[i]) && d[i] <= T(0))) axis = i;
-  if (axis < 0) axis = detail::cross_axes_apart(m, d, ad, h);
-  return detail::separation_of(axis, d);
+  return detail::ray_box(ray, box);
 }
 
 template <class T>

@@ -26,23 +26,22 @@ Vec3<T> clamp_to_box(const Vec3<T>& c, const Vec3<T>& h) {
 }
 }  // namespace detail
 
+namespace detail {
+
+// The queries on checked input (also the oriented box's, on the centre moved into its frame).
 template <class T>
-bool intersect(const Sphere<T>& sp, const Box<T>& box) {
-  check(sp, "sphere");
-  check(box, "box");
+bool sphere_box_intersect(const Sphere<T>& sp, const Box<T>& box) {
   const Vec3<T> c = sp.center - box.center;
-  const Vec3<T> v = detail::clamp_to_box(c, box.extent) - c;
+  const Vec3<T> v = clamp_to_box(c, box.extent) - c;
   return v.squaredNorm() <= sp.radius * sp.radius;
 }
 
 template <class T>
-Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned w = want_proximity) {
+Proximity<sqrt_t<T>> sphere_box_proximity(const Sphere<T>& sp, const Box<T>& box, unsigned w) {
   using S = sqrt_t<T>;
-  check(sp, "sphere");
-  check(box, "box");
   Proximity<S> res;
   const Vec3<T> c = sp.center - box.center;
-  const Vec3<T> x = detail::clamp_to_box(c, box.extent);
+  const Vec3<T> x = clamp_to_box(c, box.extent);
   const Vec3<T> v = x - c;
   const T vv = v.squaredNorm();
   const T& rho = sp.radius;
@@ -52,10 +51,10 @@ Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned 
 
   if (vv != T(0)) {  // centre outside the box
     const S len = root(vv);
-    if (w & want_distance) res.distance = detail::max_of(S(len - S(rho)), S(0));
-    if (w & want_depth) res.depth = detail::max_of(S(S(rho) - len), S(0));
+    if (w & want_distance) res.distance = max_of(S(len - S(rho)), S(0));
+    if (w & want_depth) res.depth = max_of(S(S(rho) - len), S(0));
     if (w & want_witnesses) {
-      res.on_a = offset(sp.center, S(rho), detail::divided(v, len));
+      res.on_a = offset(sp.center, S(rho), divided(v, len));
       res.on_b = lift<S>(Vec3<T>(x + box.center));
     }
     return res;
@@ -79,6 +78,22 @@ Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned 
     res.on_b = lift<S>(y);
   }
   return res;
+}
+
+}  // namespace detail
+
+template <class T>
+bool intersect(const Sphere<T>& sp, const Box<T>& box) {
+  check(sp, "sphere");
+  check(box, "box");
+  return detail::sphere_box_intersect(sp, box);
+}
+
+template <class T>
+Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned w = want_proximity) {
+  check(sp, "sphere");
+  check(box, "box");
+  return detail::sphere_box_proximity(sp, box, w);
 }
 
 }  // namespace cdref::book

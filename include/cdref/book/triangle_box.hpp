@@ -66,23 +66,31 @@ int triangle_box_axis(const std::array<Vec3<T>, 3>& v, const Vec3<T>& h, Vec3<T>
 
 }  // namespace detail
 
+namespace detail {
+// The separation on checked input (also the oriented box's, in its frame).
 template <class T>
-Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
-  check(tri, "triangle");
-  check(box, "box");
+Separation<T> triangle_box(const Triangle<T>& tri, const Box<T>& box) {
   const std::array<Vec3<T>, 3> v = {tri.vertex[0] - box.center, tri.vertex[1] - box.center,
                                     tri.vertex[2] - box.center};
   Vec3<T> n;
   Separation<T> s;
-  s.axis = detail::triangle_box_axis(v, box.extent, n);
+  s.axis = triangle_box_axis(v, box.extent, n);
   s.intersect = s.axis < 0;
   if (s.axis == 0)
     s.direction = n;
   else if (s.axis > 0 && s.axis < 4)
     s.direction = unit_vec<T>(s.axis - 1);
   else if (s.axis >= 4)
-    s.direction = detail::cross_axis(Vec3<T>(v[((s.axis - 4) / 3 + 1) % 3] - v[(s.axis - 4) / 3]), (s.axis - 4) % 3);
+    s.direction = cross_axis(Vec3<T>(v[((s.axis - 4) / 3 + 1) % 3] - v[(s.axis - 4) / 3]), (s.axis - 4) % 3);
   return s;
+}
+}  // namespace detail
+
+template <class T>
+Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
+  check(tri, "triangle");
+  check(box, "box");
+  return detail::triangle_box(tri, box);
 }
 
 template <class T>
