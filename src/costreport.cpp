@@ -1,15 +1,19 @@
 // src/costreport.cpp - `cdref report`: what accuracy costs in time, measured side by side in
-// one run, for every query of Sections 3.1-3.2 the campaign engine runs.
+// one run, for every query the campaign engine runs.
 //
-// Rows (each answers the same prepared inputs; a row that computes a query's outputs asks
-// for all of them):
+// Rows (each query's descriptor makes them: fuzz/cdref/fuzz/describe.hpp; each answers the
+// same prepared inputs; a row that computes a query's outputs asks for all of them):
 //   book at float, double (all outputs, and the classification alone: book::hit or
 //   book::intersect), long double, MPFR-128 and MPFR-256; robust at float, double and long
 //   double; the oracle (the classification alone, and every output correctly rounded); the
 //   book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its first output
 //   rounded correctly to double); CGAL's own do_intersect in its filtered (Epick) and exact
 //   (Epeck) kernels, classification only, translated to closed solids as the cross-check
-//   test does (tests/test_cgal_crosscheck.cpp: CGAL's sphere pairs test surfaces).
+//   test does (tests/test_cgal_crosscheck.cpp: CGAL's sphere pairs test surfaces). Where the
+//   book assumes what the inputs do not give (oriented boxes), the exact rows run the truth's
+//   formulation instead. Then the query's own variants (the patches engines ship, the book
+//   at an exact type), timed through the campaign's interface (the columns' conversion
+//   included in their time).
 // Columns: nanoseconds per query (median of interleaved repetitions over the same inputs, one
 // thread), ratio to the book at double, and for the rows the campaign engine runs: the share
 // misclassified on the uniform family and on the query's hard families (every other family),
@@ -89,6 +93,14 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     rows.emplace_back();
     static_cast<TimedRow&>(rows.back()) = std::move(t);
   }
+  // the query's own variants (the patches engines ship, the book at an exact type), timed
+  // through the campaign's interface: the conversion of the case's columns is in their time
+  for (const Implementation& v : info(q).variants) {
+    rows.emplace_back();
+    rows.back().name = v.name + " (campaign interface)";
+    rows.back().campaign_impl = v.name;
+    rows.back().run = [run = v.run, q, &cases](std::size_t k) { return run(q, cases[k]).cls; };
+  }
 
   // timing: every row over the same inputs, `reps` times, interleaved; the median per row.
   // Every row must agree with the oracle's classification on every input it times (the
@@ -124,6 +136,7 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   Spec spec;
   spec.queries = {q};
   spec.impls = {"book-float", "book-double", "book-long-double", "robust-float", "robust-double", "robust-long-double"};
+  for (const Implementation& v : info(q).variants) spec.impls.push_back(v.name);
   spec.n = err_n;
   spec.threads = threads;
   const Results res = run(spec);
@@ -162,7 +175,6 @@ const Row* find_row(const QueryReport& r, const std::string& name) {
 bool first_output_in_ulps(Query q) { return !info(q).outputs.empty() && !info(q).outputs[0].label; }
 
 void print(std::ostream& o, const QueryReport& r) {
-  const bool values = !info(r.q).outputs.empty();
   const bool ulps = first_output_in_ulps(r.q);
   o << info(r.q).name << " (" << info(r.q).describe << ")\n";
   char line[320];
@@ -183,10 +195,12 @@ void print(std::ostream& o, const QueryReport& r) {
   }
   // the two targets the report exists to watch
   const Row* oc = find_row(r, "oracle, classification");
-  const Row* bc = find_row(r, values ? "book double, classification" : "book double");
+  // the book's classification alone (for a separating-axis query its full query)
+  const Row* bc = find_row(r, ulps ? "book double, classification" : "book double");
   const Row* oa = find_row(r, "oracle, every output rounded");
   const Row* rd = find_row(r, "robust double");
-  std::snprintf(line, sizeof line, "  oracle classification / book double classification = %.2f", oc->ns / bc->ns);
+  std::snprintf(line, sizeof line, "  oracle classification / book double%s = %.2f", ulps ? " classification" : "",
+                oc->ns / bc->ns);
   o << line;
   if (oa) {
     std::snprintf(line, sizeof line, "; oracle every output rounded / robust double = %.2f", oa->ns / rd->ns);

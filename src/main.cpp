@@ -36,7 +36,8 @@ const char* usage = R"(usage:
       --family F       a family (repeatable; default: all of each query)
       --scale K        a scale of the family (repeatable; default: all)
       --impl I         book-float, book-double, book-long-double; robust-float, robust-double,
-                       robust-long-double (ray-sphere casts only, so far) (repeatable; default: all)
+                       robust-long-double; a query's own variants (book-exact, book-double-eps, ...:
+                       see `cdref describe`) (repeatable; default: all)
       --n N            cases per (query, family, scale) cell (default 1000)
       --seed S         the campaign seed (default 1)
       --threads T      worker threads (default: hardware threads)
@@ -196,12 +197,13 @@ int campaign(Args& a, bool defaults) {
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
   if (spec.queries.empty()) spec.queries = all_queries();
   if (spec.impls.empty())
-    spec.impls = {"book-float", "book-double", "book-long-double", "robust-float", "robust-double", "robust-long-double"};
+    for (const Implementation& im : builtin_implementations()) spec.impls.push_back(im.name);
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.2, the book's algorithms and the\n"
-                 "robust versions at float, double and long double against the exact answer, "
+    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.3, the book's algorithms and the\n"
+                 "robust versions at float, double and long double (and the queries' own variants) against the\n"
+                 "exact answer, "
               << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);
@@ -250,6 +252,10 @@ int describe() {
     std::cout << "\n  outputs: " << qi.cls_name << " (full query), " << qi.pred_name << " (predicate)";
     for (std::size_t g = 0; g < qi.outputs.size(); ++g)
       std::cout << ", " << qi.outputs[g].name << (qi.outputs[g].width == 3 ? "[xyz]" : "");
+    if (!qi.variants.empty()) {
+      std::cout << "\n  variants:";
+      for (const Implementation& v : qi.variants) std::cout << " " << v.name;
+    }
     std::cout << "\n  families:\n";
     for (const Family& f : families(q)) {
       std::cout << "    " << f.name << " (scales";

@@ -97,7 +97,14 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   std::vector<TimedRow> rows;
   rows.push_back({"book float", "book-float", "", book_row<Spec, float>(cases, full)});
   rows.push_back({"book double", "book-double", "", book_row<Spec, double>(cases, full)});
-  if (values) rows.push_back({"book double, classification", "", "as above", book_row<Spec, double>(cases, Mode::classify)});
+  if (values) {
+    // a separating-axis query's classification is its full query; its predicate column is
+    // another formulation, named as such
+    const bool label = Spec::outputs().front().label;
+    rows.push_back({label ? std::string("book double, predicate column (") + Spec::pred_name + ")"
+                          : std::string("book double, classification"),
+                    "", "as above", book_row<Spec, double>(cases, Mode::classify)});
+  }
   rows.push_back({"book long double", "book-long-double", "", book_row<Spec, long double>(cases, full)});
   for (int bits : {128, 256}) {
     const mpfr_precision at{bits};  // inputs made at this precision
@@ -112,15 +119,26 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   rows.push_back({"robust long double", "robust-long-double", "", robust_row<Spec, long double>(cases)});
   auto uni = std::make_shared<std::vector<Inputs>>(cases);
   auto hc = std::make_shared<std::vector<Inputs>>(hard);
-  rows.push_back({"oracle, classification", "", "exact", [uni](std::size_t k) {
-                    return oracle_classify_of<Spec>((*uni)[k], nullptr).cls;
-                  }});
+  {
+    auto pd = prepare<Spec, double>(cases);  // prepared like the book's rows
+    rows.push_back({"oracle, classification", "", "exact", [pd](std::size_t k) {
+                      const auto& [a, b] = (*pd)[k];
+                      return Spec::oracle(a, b, nullptr);
+                    }});
+  }
   if (values)
     rows.push_back({"oracle, every output rounded", "", "exact", [uni](std::size_t k) {
                       return oracle_truth_of<Spec>((*uni)[k], 53, nullptr).cls;
                     }});
-  rows.push_back({"oracle, classification" + hard_name, "", "exact",
-                  [hc](std::size_t k) { return oracle_classify_of<Spec>((*hc)[k], nullptr).cls; }, true});
+  {
+    auto ph = prepare<Spec, double>(hard);
+    rows.push_back({"oracle, classification" + hard_name, "", "exact",
+                    [ph](std::size_t k) {
+                      const auto& [a, b] = (*ph)[k];
+                      return Spec::oracle(a, b, nullptr);
+                    },
+                    true});
+  }
   if (values)
     rows.push_back({"oracle, every output" + hard_name, "", "exact",
                     [hc](std::size_t k) { return oracle_truth_of<Spec>((*hc)[k], 53, nullptr).cls; }, true});

@@ -185,7 +185,7 @@ void put(Answer& a, const Separation<S>& s, bool values) {
 template <class Spec, class T>
 void require_finite(const Inputs& in) {
   if constexpr (!std::is_floating_point_v<T>) {
-    const std::size_t n = Spec::inputs().size();
+    static const std::size_t n = Spec::inputs().size();
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(in[k]))
         throw invalid_input(Spec::inputs()[k] + " is not finite (" +
@@ -221,7 +221,8 @@ Answer truth_at(const Inputs& in, bool values) {
 template <class Spec>
 std::string hex_inputs(const Inputs& in) {
   std::string where;
-  for (std::size_t i = 0; i < Spec::inputs().size(); ++i) {
+  const std::size_t n = Spec::inputs().size();
+  for (std::size_t i = 0; i < n; ++i) {
     where += ' ';
     where += hexfloat(in[i]);
   }
