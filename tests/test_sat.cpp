@@ -3,6 +3,8 @@
 // Gottschalk's oriented box test and its patched variants, the frame-transform tests on
 // oriented boxes, and the oriented box as the solid its inputs define (cdref::solid).
 // Expected answers are exact: the separation and the index of the first separating axis.
+#include <cdref/robust/separating_axes.hpp>
+
 #include "support.hpp"
 
 using namespace cdref;
@@ -106,6 +108,12 @@ TEMPLATE_TEST_CASE("segment-box and ray-box by separating axes: the book and The
     }
     // Algorithm 3.3 decides the same thing
     CHECK(book::hit(seg, box) == k.seg.intersect);
+    if constexpr (!number_traits<T>::is_exact) {
+      // the robust version: certain on these dyadic inputs, and exact
+      require_sep(robust::separate(seg, box), k.seg, std::string(k.what) + ", robust segment");
+      INFO(k.what);
+      CHECK(robust::decide_separation(seg, box).certain);
+    }
   }
 }
 
@@ -154,6 +162,10 @@ TEMPLATE_TEST_CASE("triangle-box by separating axes: Akenine-Moller's 13 axes an
     const Vec3<T> off(T(6), T(-2), T(0.5));
     const Triangle<T> tri2{{Vec3<T>(tri.vertex[0] + off), Vec3<T>(tri.vertex[1] + off), Vec3<T>(tri.vertex[2] + off)}};
     require_sep(book::separate(tri2, Box<T>{off, box.extent}), k.e, std::string(k.what) + ", moved, book");
+    if constexpr (!number_traits<T>::is_exact) {
+      require_sep(robust::separate(tri, box), k.e, std::string(k.what) + ", robust");
+      CHECK(robust::decide(tri, box).certain);
+    }
   }
 }
 
@@ -215,6 +227,11 @@ TEMPLATE_TEST_CASE("oriented box-box: the book's 15 axes against the solid", "[s
     const OrientedBox<T> A = as_obb<T>(k.A), B = as_obb<T>(k.B);
     require_sep(book::separate(A, B), k.book, std::string(k.what) + ", book");
     require_sep(solid::separate(A, B), k.truth, std::string(k.what) + ", solid");
+    if constexpr (!number_traits<T>::is_exact) {
+      // the robust version gives the solid's answer, certain on these inputs (exact in F)
+      require_sep(robust::separate(A, B), k.truth, std::string(k.what) + ", robust");
+      CHECK(robust::decide(A, B).certain);
+    }
     // the patches can only add intersections
     if (k.book.intersect) {
       CHECK(book::separate_rapid(A, B).intersect);

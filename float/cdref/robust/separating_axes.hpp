@@ -8,7 +8,9 @@
 // rigorous running bound on their error (its header derives every operation's bound). The
 // inputs enter exactly (a float or a double is one double; a long double is hi + lo with
 // hi = fl(x), lo = x - hi, exact while x lies within double's range; otherwise, and for
-// inputs whose scaled products would leave it, the double-word path is not taken). Products
+// inputs whose scaled products would leave it, the double-word path is not taken). Every
+// length is first scaled by a power of two so that the largest lies in [1, 2) (decisions,
+// parameters and unit normals do not change; points and distances are scaled back). Products
 // of two inputs are exact in a double word, so a cross product of parallel axes is exactly
 // zero and drops out; every other quantity carries an error of order u^2 times its operands.
 // Each decisive comparison (a separating axis's intervals, an outcode, the order of two
@@ -110,14 +112,81 @@ Vec3<F> value(const Vec3<W>& v) {
   return Vec3<F>(value<F>(v[0]), value<F>(v[1]), value<F>(v[2]));
 }
 
-// Runs f on the primitives as double words; nothing when they are not representable or a
-// decision is uncertain.
+// Every length of a case (coordinates, extents, radii, a ray's direction) scaled by 2^k, the
+// oriented boxes' axes left as they are: every decision is unchanged (the solids are scaled by
+// 2^k; a ray's set does not depend on its direction's length), and so are parameters and
+// unit normals, while points and distances scale by 2^k. Scaling the largest length to
+// [1, 2) keeps products of small inputs out of the underflow range, where the double word's
+// bound loses its exactness. Exact unless a scaled value leaves the normal range: then k = 0.
+struct Scale {
+  int k = 0;
+  template <class F>
+  F len(F x) const { return std::ldexp(x, k); }
+  template <class F>
+  Vec3<F> len(const Vec3<F>& v) const { return Vec3<F>(len(v[0]), len(v[1]), len(v[2])); }
+};
+template <class F>
+void largest(F x, F& m) { m = std::max(m, F(std::fabs(x))); }
+template <class F>
+void largest(const Vec3<F>& v, F& m) { for (int i = 0; i < 3; ++i) largest(v[i], m); }
+template <class F> void largest(const Segment<F>& s, F& m) { largest(s.source, m), largest(s.target, m); }
+template <class F> void largest(const Ray<F>& r, F& m) { largest(r.source, m), largest(r.direction, m); }
+template <class F> void largest(const Triangle<F>& t, F& m) { for (const auto& v : t.vertex) largest(v, m); }
+template <class F> void largest(const Box<F>& b, F& m) { largest(b.center, m), largest(b.extent, m); }
+template <class F> void largest(const OrientedBox<F>& b, F& m) { largest(b.center, m), largest(b.extent, m); }
+template <class F> void largest(const Sphere<F>& s, F& m) { largest(s.center, m), largest(s.radius, m); }
+template <class F> Segment<F> scaled(const Segment<F>& s, const Scale& c) { return {c.len(s.source), c.len(s.target)}; }
+template <class F> Ray<F> scaled(const Ray<F>& r, const Scale& c) { return {c.len(r.source), c.len(r.direction)}; }
+template <class F>
+Triangle<F> scaled(const Triangle<F>& t, const Scale& c) {
+  return {{c.len(t.vertex[0]), c.len(t.vertex[1]), c.len(t.vertex[2])}};
+}
+template <class F> Box<F> scaled(const Box<F>& b, const Scale& c) { return {c.len(b.center), c.len(b.extent)}; }
+template <class F>
+OrientedBox<F> scaled(const OrientedBox<F>& b, const Scale& c) {
+  return {c.len(b.center), c.len(b.extent), b.axis};
+}
+template <class F> Sphere<F> scaled(const Sphere<F>& s, const Scale& c) { return {c.len(s.center), c.len(s.radius)}; }
+template <class F> bool same(F x, F y) { return x == y; }
+template <class F> bool same(const Vec3<F>& x, const Vec3<F>& y) { return x == y; }
+template <class F> bool same(const Segment<F>& x, const Segment<F>& y) { return same(x.source, y.source) && same(x.target, y.target); }
+template <class F> bool same(const Ray<F>& x, const Ray<F>& y) { return same(x.source, y.source) && same(x.direction, y.direction); }
+template <class F>
+bool same(const Triangle<F>& x, const Triangle<F>& y) {
+  return same(x.vertex[0], y.vertex[0]) && same(x.vertex[1], y.vertex[1]) && same(x.vertex[2], y.vertex[2]);
+}
+template <class F> bool same(const Box<F>& x, const Box<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
+template <class F>
+bool same(const OrientedBox<F>& x, const OrientedBox<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
+template <class F> bool same(const Sphere<F>& x, const Sphere<F>& y) { return same(x.center, y.center) && same(x.radius, y.radius); }
+template <class F> F scalar_of(const Triangle<F>&);
+template <class F> F scalar_of(const OrientedBox<F>&);
+
+template <class A, class B>
+Scale scale_of(const A& a, const B& b) {
+  using F = std::decay_t<decltype(scalar_of(a))>;
+  F m = F(0);
+  largest(a, m);
+  largest(b, m);
+  Scale sc;
+  if (m > F(0) && std::isfinite(m)) {
+    sc.k = -std::ilogb(m);
+    const Scale back{-sc.k};
+    if (!same(scaled(scaled(a, sc), back), a) || !same(scaled(scaled(b, sc), back), b)) sc.k = 0;
+  }
+  return sc;
+}
+
+// Runs f on the primitives as double words (scaled as above); nothing when they are not
+// representable or a decision is uncertain.
 template <class A, class B, class Fn>
-auto on_words(const A& a, const B& b, Fn f) -> std::optional<decltype(f(lift_words(a, std::declval<Words&>()),
-                                                                       lift_words(b, std::declval<Words&>())))> {
+auto on_words(const A& a, const B& b, Fn f, Scale* used = nullptr)
+    -> std::optional<decltype(f(lift_words(a, std::declval<Words&>()), lift_words(b, std::declval<Words&>())))> {
+  const Scale sc = scale_of(a, b);
+  if (used) *used = sc;
   Words w;
-  const auto aw = lift_words(a, w);
-  const auto bw = lift_words(b, w);
+  const auto aw = lift_words(scaled(a, sc), w);
+  const auto bw = lift_words(scaled(b, sc), w);
   if (!w.ok) return std::nullopt;
   try {
     return f(aw, bw);
@@ -208,8 +277,12 @@ namespace detail {
 // else both in F, uncertain.
 template <class F, class A>
 std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsigned w) {
-  if (const auto r = on_words(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }))
-    return {cast_value<F>(*r), {r->hit, true}};
+  Scale sc;
+  if (const auto r = on_words(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc)) {
+    Cast<F> c = cast_value<F>(*r);
+    c.point = Scale{-sc.k}.len(c.point);  // parameters and unit normals do not scale
+    return {c, {r->hit, true}};
+  }
   Cast<F> c = solid::cast(a, b, w);
   const auto h = on_words(a, b, [](const auto& x, const auto& y) { return solid::hit(x, y); });
   const Decision d = h ? Decision{*h, true} : Decision{solid::hit(a, b), false};
@@ -219,8 +292,14 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
 
 template <class F>
 std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w) {
-  if (const auto r = on_words(s, b, [w](const auto& x, const auto& y) { return solid::proximity(x, y, w); }))
-    return {proximity_value<F>(*r), {r->intersect, true}};
+  Scale sc;
+  if (const auto r = on_words(s, b, [w](const auto& x, const auto& y) { return solid::proximity(x, y, w); }, &sc)) {
+    Proximity<F> p = proximity_value<F>(*r);
+    const Scale back{-sc.k};
+    p.distance = back.len(p.distance), p.depth = back.len(p.depth);
+    p.on_a = back.len(p.on_a), p.on_b = back.len(p.on_b), p.closest = back.len(p.closest);
+    return {p, {r->intersect, true}};
+  }
   Proximity<F> p = solid::proximity(s, b, w);
   const auto h = on_words(s, b, [](const auto& x, const auto& y) { return solid::intersect(x, y); });
   const Decision d = h ? Decision{*h, true} : Decision{solid::intersect(s, b), false};
