@@ -8,6 +8,7 @@
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
 #include <cdref/float/mpfr.hpp>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -176,6 +177,17 @@ struct PairOf {
     return std::pair{convert_prim_exact(p.first), convert_prim_exact(p.second)};
   }
 };
+
+// An exactly orthonormal rational frame from an integer quaternion q = (w, x, y, z), q != 0:
+// the columns of R = M(q) / |q|^2.
+inline std::array<Vec3<Q>, 3> rational_rotation(int w, int x, int y, int z) {
+  const Q n = Q(w * w + x * x + y * y + z * z);
+  const Q m[3][3] = {{Q(w * w + x * x - y * y - z * z), Q(2 * (x * y - w * z)), Q(2 * (x * z + w * y))},
+                     {Q(2 * (x * y + w * z)), Q(w * w - x * x + y * y - z * z), Q(2 * (y * z - w * x))},
+                     {Q(2 * (x * z - w * y)), Q(2 * (y * z + w * x)), Q(w * w - x * x - y * y + z * z)}};
+  return {Vec3<Q>(m[0][0] / n, m[1][0] / n, m[2][0] / n), Vec3<Q>(m[0][1] / n, m[1][1] / n, m[2][1] / n),
+          Vec3<Q>(m[0][2] / n, m[1][2] / n, m[2][2] / n)};
+}
 
 inline Q p2(int k) { return k >= 0 ? Q(std::ldexp(1.0, k)) : Q(1) / Q(std::ldexp(1.0, -k)); }
 

@@ -269,17 +269,6 @@ TEST_CASE("oriented box-box: RAPID's constant hides a gap below 1e-6", "[sat][ob
 
 namespace {
 
-// An exactly orthonormal rational frame from an integer quaternion q: R = M(q) / |q|^2.
-std::array<Vec3<Q>, 3> rotation(int w, int x, int y, int z) {
-  const Q n = Q(w * w + x * x + y * y + z * z);
-  const Q m[3][3] = {{Q(w * w + x * x - y * y - z * z), Q(2 * (x * y - w * z)), Q(2 * (x * z + w * y))},
-                     {Q(2 * (x * y + w * z)), Q(w * w - x * x + y * y - z * z), Q(2 * (y * z - w * x))},
-                     {Q(2 * (x * z - w * y)), Q(2 * (y * z + w * x)), Q(w * w - x * x - y * y + z * z)}};
-  // the axes are the columns
-  return {V(m[0][0] / n, m[1][0] / n, m[2][0] / n), V(m[0][1] / n, m[1][1] / n, m[2][1] / n),
-          V(m[0][2] / n, m[1][2] / n, m[2][2] / n)};
-}
-
 struct Lcg {
   std::uint64_t x;
   int next(int lo, int hi) {
@@ -298,7 +287,7 @@ TEST_CASE("with exactly orthonormal frames the book's oriented-box tests are the
   Lcg rng{7};
   int separated = 0, intersecting = 0, hits = 0, inside = 0;
   for (int n = 0; n < 300; ++n) {
-    auto frame = [&] { return rotation(rng.next(-4, 4), rng.next(-4, 4), rng.next(-4, 4), rng.next(1, 4)); };
+    auto frame = [&] { return rational_rotation(rng.next(-4, 4), rng.next(-4, 4), rng.next(-4, 4), rng.next(1, 4)); };
     const OrientedBox<T> A{V(rng.frac(2, 8), rng.frac(2, 8), rng.frac(2, 8)),
                            V(Q(rng.next(0, 16)) / 8, Q(rng.next(0, 16)) / 8, Q(rng.next(1, 16)) / 8), frame()};
     const OrientedBox<T> B{V(rng.frac(3, 8), rng.frac(3, 8), rng.frac(3, 8)),

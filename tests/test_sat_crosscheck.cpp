@@ -208,17 +208,6 @@ TEST_CASE("oriented boxes agree with CGAL's mesh intersection on every family", 
   }
 }
 
-namespace {
-std::array<Vec3<Q>, 3> rotation(int w, int x, int y, int z) {
-  const Q n = Q(w * w + x * x + y * y + z * z);
-  const Q m[3][3] = {{Q(w * w + x * x - y * y - z * z), Q(2 * (x * y - w * z)), Q(2 * (x * z + w * y))},
-                     {Q(2 * (x * y + w * z)), Q(w * w - x * x + y * y - z * z), Q(2 * (y * z - w * x))},
-                     {Q(2 * (x * z - w * y)), Q(2 * (y * z + w * x)), Q(w * w - x * x - y * y + z * z)}};
-  return {Vec3<Q>(m[0][0] / n, m[1][0] / n, m[2][0] / n), Vec3<Q>(m[0][1] / n, m[1][1] / n, m[2][1] / n),
-          Vec3<Q>(m[0][2] / n, m[1][2] / n, m[2][2] / n)};
-}
-}  // namespace
-
 TEST_CASE("exactly orthonormal oriented boxes: the book, the solid and CGAL's meshes agree", "[sat][cgal][obb]") {
   // Rational rotations from integer quaternions, placed near touching along a random axis
   // (face or edge cross) on a 1/64 grid: the book's 15-axis test is exact here.
@@ -226,7 +215,7 @@ TEST_CASE("exactly orthonormal oriented boxes: the book, the solid and CGAL's me
   auto i_in = [&](int lo, int hi) { return lo + int(rng() % std::uint64_t(hi - lo + 1)); };
   std::uint64_t yes = 0, no = 0;
   for (int n = 0; n < 1500; ++n) {
-    auto frame = [&] { return rotation(i_in(-3, 3), i_in(-3, 3), i_in(-3, 3), i_in(1, 3)); };
+    auto frame = [&] { return rational_rotation(i_in(-3, 3), i_in(-3, 3), i_in(-3, 3), i_in(1, 3)); };
     const OrientedBox<Q> A{Vec3<Q>(Q(i_in(-64, 64)) / 64, Q(i_in(-64, 64)) / 64, Q(i_in(-64, 64)) / 64),
                            Vec3<Q>(Q(i_in(4, 64)) / 32, Q(i_in(4, 64)) / 32, Q(i_in(4, 64)) / 32), frame()};
     OrientedBox<Q> B{Vec3<Q>(0, 0, 0), Vec3<Q>(Q(i_in(4, 64)) / 32, Q(i_in(4, 64)) / 32, Q(i_in(4, 64)) / 32), frame()};

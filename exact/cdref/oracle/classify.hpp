@@ -84,6 +84,7 @@
 
 #include <cdref/cdref.hpp>
 #include <cdref/exact.hpp>
+#include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cmath>
 
@@ -813,12 +814,7 @@ inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
 }
 
 // ======================= stage 3: the book at CGAL::Gmpq =======================
-using Q = CGAL::Gmpq;
-inline Vec3<Q> q3(const Vec3<double>& v) { return Vec3<Q>(Q(v[0]), Q(v[1]), Q(v[2])); }
-inline Sphere<Q> toq(const Sphere<double>& s) { return {q3(s.center), Q(s.radius)}; }
-inline Box<Q> toq(const Box<double>& b) { return {q3(b.center), q3(b.extent)}; }
-inline Segment<Q> toq(const Segment<double>& s) { return {q3(s.source), q3(s.target)}; }
-inline Ray<Q> toq(const Ray<double>& r) { return {q3(r.source), q3(r.direction)}; }
+using rational_inputs::toq;
 inline bool rational(const Sphere<double>& a, const Sphere<double>& b) { return book::intersect(toq(a), toq(b)); }
 inline bool rational(const Segment<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }
 inline bool rational(const Ray<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }

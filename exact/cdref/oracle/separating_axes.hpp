@@ -7,8 +7,8 @@
 // stages:
 //
 //   1. filter    (separating axes) every candidate axis in double with one static error bound
-//                for the whole query, derived below; (sphere) cdref::solid::intersect run on
-//                oracle::Bounded, a double with a running error bound;
+//                for the whole query, derived below; (sphere) a point of the box and a
+//                direction, each a certificate with a static bound (see sphere_obb::filter);
 //   2. double word  the robust versions' evaluation on oracle::Bounded2 (double words with a
 //                rigorous running bound; robust/separating_axes.hpp), certain when every
 //                decisive comparison is (Stage::expansion names this stage here);
@@ -53,6 +53,7 @@
 #include <cdref/cdref.hpp>
 #include <cdref/exact.hpp>
 #include <cdref/oracle/bounded.hpp>
+#include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cmath>
@@ -309,15 +310,7 @@ int double_word(const A& a, const B& b) {
 }
 
 // Stage 3: Theorem 3.1 on the true normals at CGAL::Gmpq.
-using Q = CGAL::Gmpq;
-inline Vec3<Q> q3(const Vec3<double>& v) { return Vec3<Q>(Q(v[0]), Q(v[1]), Q(v[2])); }
-inline Segment<Q> toq(const Segment<double>& s) { return {q3(s.source), q3(s.target)}; }
-inline Ray<Q> toq(const Ray<double>& r) { return {q3(r.source), q3(r.direction)}; }
-inline Triangle<Q> toq(const Triangle<double>& t) { return {{q3(t.vertex[0]), q3(t.vertex[1]), q3(t.vertex[2])}}; }
-inline Box<Q> toq(const Box<double>& b) { return {q3(b.center), q3(b.extent)}; }
-inline OrientedBox<Q> toq(const OrientedBox<double>& b) {
-  return {q3(b.center), q3(b.extent), {q3(b.axis[0]), q3(b.axis[1]), q3(b.axis[2])}};
-}
+using rational_inputs::toq;
 template <class A, class B>
 bool rational(const A& a, const B& b) {
   return book::separate(book::polytope(toq(a)), book::polytope(toq(b))).intersect;
@@ -380,26 +373,65 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 // ---- a sphere and an oriented box ----
 namespace sphere_obb {
 inline constexpr int unknown = sat::unknown;
+// Stage 1: two certificates from one candidate point of the box, with static error bounds.
+// With d = fl(q - c) (one rounding), p_i = a_i . d~ and g_i = clamp(p_i, -h_i, h_i) (exact
+// doubles with |g_i| <= h_i), the point x = c + sum_i g_i a_i lies in the box exactly (its
+// coordinates are g_i / h_i in [-1, 1]); for a box orthonormal to rounding it is the book's
+// closest point. Let w = q - x = d - sum_i g_i a_i, computed as w~ (K = 4 roundings a
+// component against W+_c = |d_c| + sum_i |g_i a_ic|: |w~_c - w_c| <= gamma_4 W+_c <= e_c =
+// 5u W+~_c (1 + 16u), W+~ its computed value).
+//   intersect  |w|^2 <= rho^2 certainly: |w|^2 <= |w~|^2 + sum_c e_c (2 |w~_c| + e_c), and
+//              fl(|w~|^2) carries gamma_3 of its nonnegative sum; rho^2 >= fl(rho rho)(1 - u).
+//   disjoint   v = w~ (any vector is an axis): the sphere lies beyond the box along v when
+//              G = v . d - sum_i h_i |v . a_i| > rho |v| (v . p <= v . c + sum_i h_i |v . a_i|
+//              for every p of the box, v . (q + rho s) >= v . q - rho |v| for |s| <= 1).
+//              G~ carries at most 7 roundings on each monomial (v exact, d a leaf), so
+//              |G~ - G| <= gamma_7 G+ with G+ = |v| . |d| + sum_i h_i |v| . |a_i|; then
+//              G >= G_lo = G~ - 8u G+ > 0 and G_lo^2 > rho^2 |v|^2 decide it (the squares
+//              compared with 8u of margin on each side).
+// Every bound is grown by (1 + 16u) for its own rounding, and 64 * 2^-1074 covers roundings
+// that underflow; a non-finite value anywhere leaves the case to stage 2.
 inline int filter(const Sphere<double>& s, const OrientedBox<double>& b) {
-  try {
-    const Sphere<Bounded> sb{Vec3<Bounded>(s.center[0], s.center[1], s.center[2]), Bounded(s.radius)};
-    OrientedBox<Bounded> bb;
-    for (int i = 0; i < 3; ++i) {
-      bb.center[i] = b.center[i];
-      bb.extent[i] = b.extent[i];
-      for (int k = 0; k < 3; ++k) bb.axis[k][i] = b.axis[k][i];
-    }
-    return int(solid::intersect(sb, bb));
-  } catch (const uncertain&) {
-    return unknown;
+  constexpr double u = sat::u, grow = 1 + 16 * sat::u, eta = 64 * 0x1p-1074;
+  double d[3], w[3], e2 = 0, ww = 0, Wd = 0;
+  for (int c = 0; c < 3; ++c) d[c] = s.center[c] - b.center[c];
+  double g[3];
+  for (int i = 0; i < 3; ++i) {
+    const double p = b.axis[i][0] * d[0] + b.axis[i][1] * d[1] + b.axis[i][2] * d[2];
+    g[i] = std::max(-b.extent[i], std::min(b.extent[i], p));
+    if (!std::isfinite(p)) return unknown;
   }
+  for (int c = 0; c < 3; ++c) {
+    w[c] = d[c] - (g[0] * b.axis[0][c] + g[1] * b.axis[1][c] + g[2] * b.axis[2][c]);
+    const double Wp = std::fabs(d[c]) + std::fabs(g[0] * b.axis[0][c]) + std::fabs(g[1] * b.axis[1][c]) +
+                      std::fabs(g[2] * b.axis[2][c]);
+    const double e = 5 * u * grow * Wp;  // gamma_4 W+ with room for its own rounding
+    e2 += e * (2 * std::fabs(w[c]) + e);
+    ww += w[c] * w[c];
+    Wd = std::max(Wd, Wp);
+  }
+  const double rr = s.radius * s.radius;
+  if (!std::isfinite(ww) || !std::isfinite(e2) || !std::isfinite(rr)) return unknown;
+  if ((ww * (1 + 4 * u) + e2 * grow + eta) * grow < rr * (1 - 2 * u)) return 1;
+  // disjoint along v = w~
+  double G = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+  double Gp = std::fabs(w[0] * d[0]) + std::fabs(w[1] * d[1]) + std::fabs(w[2] * d[2]);
+  for (int i = 0; i < 3; ++i) {
+    const double va = w[0] * b.axis[i][0] + w[1] * b.axis[i][1] + w[2] * b.axis[i][2];
+    G -= b.extent[i] * std::fabs(va);
+    Gp += b.extent[i] * (std::fabs(w[0] * b.axis[i][0]) + std::fabs(w[1] * b.axis[i][1]) + std::fabs(w[2] * b.axis[i][2]));
+  }
+  const double Glo = G - (8 * u * Gp * grow + eta);  // gamma_7 G+ with room
+  if (!std::isfinite(Glo)) return unknown;
+  if (Glo > 0 && Glo * Glo * (1 - 8 * u) > (rr * ww) * (1 + 8 * u) + eta) return 0;
+  return unknown;
 }
 inline int double_word(const Sphere<double>& s, const OrientedBox<double>& b) {
   const robust::Decision d = robust::decide(s, b);
   return d.certain ? int(d.value) : unknown;
 }
 inline bool rational(const Sphere<double>& s, const OrientedBox<double>& b) {
-  return solid::intersect(Sphere<CGAL::Gmpq>{sat::q3(s.center), CGAL::Gmpq(s.radius)}, sat::toq(b));
+  return solid::intersect(rational_inputs::toq(s), rational_inputs::toq(b));
 }
 inline int at_stage(Stage st, const Sphere<double>& s, const OrientedBox<double>& b) {
   return st == Stage::filter ? filter(s, b) : st == Stage::expansion ? double_word(s, b) : int(rational(s, b));

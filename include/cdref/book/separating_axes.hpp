@@ -60,8 +60,10 @@ struct Projection {
 
 namespace detail {
 
+// `own_edge`: L is a cross product with the polytope's own edge direction, so a ray's
+// direction is orthogonal to it (d . L = 0 identically: the ray projects onto one point).
 template <class T>
-Projection<T> project(const Polytope<T>& p, const Vec3<T>& L) {
+Projection<T> project(const Polytope<T>& p, const Vec3<T>& L, bool own_edge = false) {
   Projection<T> r{T(0), T(0)};
   switch (p.kind) {
     case Polytope<T>::vertices: {
@@ -85,6 +87,7 @@ Projection<T> project(const Polytope<T>& p, const Vec3<T>& L) {
     }
     case Polytope<T>::ray: {
       r.lo = r.hi = p.point[0].dot(L);
+      if (own_edge) return r;
       const T d = p.gen[0].dot(L);
       if (d > T(0)) r.hi_inf = true;
       if (d < T(0)) r.lo_inf = true;
@@ -107,10 +110,10 @@ template <class T>
 Separation<T> separate(const Polytope<T>& a, const Polytope<T>& b) {
   Separation<T> res;
   int index = 0;
-  auto try_axis = [&](const Vec3<T>& L) {
+  auto try_axis = [&](const Vec3<T>& L, bool edge_cross = false) {
     const int at = index++;
     if (detail::is_zero(L)) return false;
-    if (!detail::apart(detail::project(a, L), detail::project(b, L))) return false;
+    if (!detail::apart(detail::project(a, L, edge_cross), detail::project(b, L, edge_cross))) return false;
     res.axis = at;
     res.direction = L;
     return true;
@@ -121,7 +124,7 @@ Separation<T> separate(const Polytope<T>& a, const Polytope<T>& b) {
     if (try_axis(b.face[j])) return res;
   for (int i = 0; i < a.edges; ++i)
     for (int j = 0; j < b.edges; ++j)
-      if (try_axis(Vec3<T>(a.edge[i].cross(b.edge[j])))) return res;
+      if (try_axis(Vec3<T>(a.edge[i].cross(b.edge[j])), true)) return res;
   res.intersect = true;
   return res;
 }
