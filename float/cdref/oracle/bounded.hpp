@@ -116,12 +116,19 @@ class Bounded {
   // abs_of, min_of and max_of for them, found here by argument-dependent lookup).
   friend Bounded abs_of(const Bounded& a) { return {std::fabs(a.v_), a.e_}; }
   // (a non-finite operand makes the result non-finite: std::max would drop a NaN)
+  // (where the order is certain, the operand itself: an exact 0 stays exact)
   friend Bounded max_of(const Bounded& a, const Bounded& b) {
     if (!a.finite() || !b.finite()) return {std::numeric_limits<double>::quiet_NaN(), 0};
+    const Bounded d = a - b;
+    if (d.v_ - d.e_ >= 0) return a;
+    if (d.v_ + d.e_ <= 0) return b;
     return {std::max(a.v_, b.v_), std::max(a.e_, b.e_)};
   }
   friend Bounded min_of(const Bounded& a, const Bounded& b) {
     if (!a.finite() || !b.finite()) return {std::numeric_limits<double>::quiet_NaN(), 0};
+    const Bounded d = a - b;
+    if (d.v_ - d.e_ >= 0) return b;
+    if (d.v_ + d.e_ <= 0) return a;
     return {std::min(a.v_, b.v_), std::max(a.e_, b.e_)};
   }
 

@@ -177,18 +177,23 @@ class Bounded2 {
 
   // |x|, min and max need no decision: each is 1-Lipschitz, so the computed operands' value
   // with the larger of their bounds bounds the exact result (a non-finite operand makes the
-  // result non-finite: min and max of doubles would drop a NaN) (cdref's algorithms call abs_of,
+  // result non-finite: min and max of doubles would drop a NaN). Where the order is certain,
+  // min and max return the operand itself, with its own bound (an exact 0 stays exact). (cdref's algorithms call abs_of,
   // min_of and max_of for them, found here by argument-dependent lookup). The values are
   // compared as the double words they are (hi first, then lo: both are normalized).
   friend Bounded2 abs_of(const Bounded2& a) { return a.hi_ < 0 || (a.hi_ == 0 && a.lo_ < 0) ? -a : a; }
   friend Bounded2 max_of(const Bounded2& a, const Bounded2& b) {
     if (!a.finite() || !b.finite()) return not_finite();  // a NaN must not be dropped
+    const int s = sign_or_2(a - b);  // the larger operand itself when certain
+    if (s != 2) return s >= 0 ? a : b;
     Bounded2 r = word_less(a, b) ? b : a;
     r.e_ = std::max(a.e_, b.e_);
     return r;
   }
   friend Bounded2 min_of(const Bounded2& a, const Bounded2& b) {
     if (!a.finite() || !b.finite()) return not_finite();
+    const int s = sign_or_2(a - b);
+    if (s != 2) return s <= 0 ? a : b;
     Bounded2 r = word_less(a, b) ? a : b;
     r.e_ = std::max(a.e_, b.e_);
     return r;
@@ -241,6 +246,13 @@ class Bounded2 {
 
  private:
   bool exact_zero() const { return hi_ == 0 && lo_ == 0 && e_ == 0; }
+  static int sign_or_2(const Bounded2& x) {  // sign(), or 2 where it would throw
+    try {
+      return x.sign();
+    } catch (const uncertain&) {
+      return 2;
+    }
+  }
   static Bounded2 not_finite() {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return make(nan, nan, nan);
