@@ -133,7 +133,62 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
   }
 }
 
+// v turned by the angle t about the unit axis k.
+V turned(V v, V k, double t) {
+  const double c = std::cos(t), sn = std::sin(t);
+  return c * v + (sn * cross(k, v) + ((1 - c) * dot(k, v)) * k);
+}
+
+// A triangle in a face's plane turned by 2^-k radians about an axis in that plane, its nearest
+// point within 1e-9 box sizes of the face (out or in).
+Inputs tri_box_near_parallel(Next& next, int k) {
+  const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
+  const double size = std::sqrt(dot(bh, bh));
+  const int i = pick(next, 3);
+  const double sg = sign(next);
+  const V n = axis(i, sg);
+  const V in_plane = normalized(cross(n, unit(next)));
+  const V m = turned(n, in_plane, std::ldexp(1.0, -k));  // the triangle's normal
+  const V t1 = normalized(cross(m, in_plane)), t2 = cross(m, t1);
+  const V p = bc + axis(i, sg * at(bh, i)) + uni(next, -1e-9, 1e-9) * size * n;  // on the face plane
+  V v[3];
+  for (V& x : v) x = p + uni(next, -2, 2) * t1 + uni(next, -2, 2) * t2;
+  // lift the triangle so that its lowest vertex (towards the box) sits at p's height along n
+  double low = dot(v[0] - p, n);
+  for (const V& x : v) low = std::min(low, dot(x - p, n));
+  for (V& x : v) x = x - low * n;
+  return tri_box(v[0], v[1], v[2], bc, bh);
+}
+
+// A segment (or ray) along a box edge's direction turned by 2^-k radians, passing the edge
+// within 1e-9 box sizes outside or inside (layout of the box-shot families).
+Inputs shot_near_parallel(Next& next, int k, bool ray) {
+  const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
+  const double size = std::sqrt(dot(bh, bh));
+  const int i = pick(next, 3);
+  const V s{sign(next), sign(next), sign(next)};
+  const V corner = bc + V{s.x * bh.x, s.y * bh.y, s.z * bh.z} - axis(i, at(s, i) * at(bh, i));
+  V out = V{s.x, s.y, s.z} - axis(i, at(s, i));
+  out = normalized(out);
+  const V d = turned(axis(i, 1), normalized(cross(axis(i, 1), unit(next))), std::ldexp(1.0, -k));
+  const V mid = corner + uni(next, -1e-9, 1e-9) * size * out + axis(i, uni(next, -at(bh, i), at(bh, i)));
+  const double l = uni(next, 1, 4) * size;
+  Inputs in{};
+  put(in, 0, mid - l * d);
+  put(in, 3, ray ? d : mid + l * d);
+  put(in, 6, bc);
+  put(in, 9, bh);
+  return in;
+}
+
 }  // namespace
+
+std::vector<Family> segment_box_family_list(bool ray) {
+  std::vector<Family> f = box_shot_family_list(ray);
+  f.push_back({"near-parallel", "along a box edge turned by 2^-k radians, passing it within 1e-9 box sizes",
+               range(4, 52, 4), [ray](Next& next, int k) { return shot_near_parallel(next, k, ray); }});
+  return f;
+}
 
 std::vector<Family> triangle_box_family_list() {
   std::vector<Family> f;
@@ -145,6 +200,8 @@ std::vector<Family> triangle_box_family_list() {
                }});
   f.push_back({"grazing", "an edge passing a box edge 2^-k box sizes outside or inside", tangency_scales,
                [](Next& next, int k) { return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 2); }});
+  f.push_back({"near-parallel", "in a face's plane turned by 2^-k radians, within 1e-9 box sizes of the face",
+               range(4, 52, 4), [](Next& next, int k) { return tri_box_near_parallel(next, k); }});
   f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades, [](Next& next, int k) {
                  return tri_box_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
                }});

@@ -196,8 +196,13 @@ int campaign(Args& a, bool defaults) {
   }
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
   if (spec.queries.empty()) spec.queries = all_queries();
-  if (spec.impls.empty())
-    for (const Implementation& im : builtin_implementations()) spec.impls.push_back(im.name);
+  if (spec.impls.empty())  // every implementation of the chosen queries
+    for (const Implementation& im : builtin_implementations())
+      for (Query q : spec.queries)
+        if (im.supports(q)) {
+          spec.impls.push_back(im.name);
+          break;
+        }
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)

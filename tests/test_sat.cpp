@@ -223,7 +223,20 @@ std::vector<ObbObb> obb_obb_cases() {
 TEMPLATE_TEST_CASE("oriented box-box: the book's 15 axes against the solid", "[sat][obb]", float, double, long double,
                    CGAL::Gmpq, CGAL::Epeck::FT) {
   using T = TestType;
-  for (const ObbObb& k : obb_obb_cases()) {
+  std::vector<ObbObb> cases = obb_obb_cases();
+  // the same configurations near 1e150 and 1e-150 (centres and extents times 2^+-500; every
+  // product of two lengths stays normal at double)
+  for (int e : {500, -500})
+    for (const ObbObb& k : obb_obb_cases()) {
+      ObbObb m = k;
+      for (ObbQ* b : {&m.A, &m.B}) b->c *= p2(e), b->h *= p2(e);
+      cases.push_back(m);
+    }
+  for (const ObbObb& k : cases) {
+    bool exact = true;
+    for (const ObbQ* b : {&k.A, &k.B})
+      for (int i = 0; i < 3; ++i) exact = exact && representable<T>(b->c[i]) && representable<T>(b->h[i]);
+    if (!exact) continue;  // beyond float's range
     const OrientedBox<T> A = as_obb<T>(k.A), B = as_obb<T>(k.B);
     require_sep(book::separate(A, B), k.book, std::string(k.what) + ", book");
     require_sep(solid::separate(A, B), k.truth, std::string(k.what) + ", solid");

@@ -30,7 +30,7 @@ struct SegmentBox {
     return spec::cols({{"source", 3}, {Ray ? "direction" : "target", 3}, {"box_center", 3}, {"box_extent", 3}});
   }
   static std::vector<Output> outputs() { return spec::sat_outputs(); }
-  static std::vector<Family> families() { return box_shot_family_list(Ray); }
+  static std::vector<Family> families() { return segment_box_family_list(Ray); }
   template <class T>
   static std::pair<Shot<T>, Box<T>> make(const Inputs& in) {
     return {{spec::col3<T>(in, 0), spec::col3<T>(in, 3)}, {spec::col3<T>(in, 6), spec::col3<T>(in, 9)}};

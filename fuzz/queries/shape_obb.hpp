@@ -38,7 +38,7 @@ struct ShapeObb {
     if constexpr (Tri)
       return rotated_family_list(triangle_box_family_list(), {0, 3, 6}, {}, {}, 9, 12, 9);
     else
-      return rotated_family_list(box_shot_family_list(false), {0, 3}, {}, {}, 6, 9, 6);
+      return rotated_family_list(segment_box_family_list(false), {0, 3}, {}, {}, 6, 9, 6);
   }
   template <class T>
   static std::pair<Shape<T>, OrientedBox<T>> make(const Inputs& in) {

@@ -13,6 +13,7 @@ std::vector<Family> sphere_box_family_list();
 std::vector<Family> box_box_family_list();
 std::vector<Family> box_shot_family_list(bool ray);     // a segment (or a ray) and a box
 // fuzz/families_sat.cpp
+std::vector<Family> segment_box_family_list(bool ray);  // the box-shot families and near-parallel
 std::vector<Family> triangle_box_family_list();
 std::vector<Family> obb_obb_family_list();
 // An axis-aligned family as one against an oriented box (see families_sat.cpp).
