@@ -88,6 +88,33 @@ void sphere_sphere(std::vector<Row>& rows, const std::string& name, Sphere<doubl
   rows.push_back(r);
 }
 
+OrientedBox<Q> obb_q(const OrientedBox<double>& b) {
+  return {vq(b.center), vq(b.extent), {vq(b.axis[0]), vq(b.axis[1]), vq(b.axis[2])}};
+}
+OrientedBox<float> obb_f(const OrientedBox<double>& b) {
+  return {vf(b.center), vf(b.extent), {vf(b.axis[0]), vf(b.axis[1]), vf(b.axis[2])}};
+}
+OrientedBox<double> obb_fd(const OrientedBox<double>& b) {  // the float rounding, in double
+  return {float_rounded(b.center), float_rounded(b.extent),
+          {float_rounded(b.axis[0]), float_rounded(b.axis[1]), float_rounded(b.axis[2])}};
+}
+std::string fmts(bool intersect, int axis) { return intersect ? "intersect" : "apart (axis " + std::to_string(axis) + ")"; }
+
+// Two oriented boxes: the book's 15-axis test at float and double (and a patch of it) against
+// the solid the inputs define, at Gmpq.
+template <class Test>
+void obb_obb(std::vector<Row>& rows, const std::string& name, const std::string& what, const OrientedBox<double>& a,
+             const OrientedBox<double>& b, Test test) {
+  const auto d = test(a, b);
+  const auto x = solid::separate(obb_q(a), obb_q(b));
+  const auto f = book::separate(obb_f(a), obb_f(b));
+  const auto xf = solid::separate(obb_q(obb_fd(a)), obb_q(obb_fd(b)));
+  Row r{"obb-obb", name, what, fmts(f.intersect, f.axis), fmts(d.intersect, d.axis), fmts(x.intersect, x.axis)};
+  r.wrong_d = d.intersect != x.intersect;
+  r.wrong_f = f.intersect != xf.intersect;
+  rows.push_back(r);
+}
+
 }  // namespace
 
 int run_demo() {
@@ -104,10 +131,22 @@ int run_demo() {
   ray_sphere(rows, "coordinates near 1e160", Vec3<double>(-3 * big, 0, 0), Vec3<double>(3 * big, 0, 0), o, big);
   sphere_sphere(rows, "disjoint by 2.5e-9 at 1e8", Sphere<double>{o, 1e8}, Sphere<double>{Vec3<double>(2e8, 1, 0), 1e8});
   sphere_sphere(rows, "1e160 apart", Sphere<double>{o, big}, Sphere<double>{Vec3<double>(3 * big, 0, 0), big});
+  {
+    // B turned about x by 2^-20 rad, its lowest point 2^-30 above A's top face
+    const double t = std::ldexp(1.0, -20), c = std::cos(t), sn = std::sin(t), g = std::ldexp(1.0, -30);
+    const OrientedBox<double> A{o, Vec3<double>(1, 1, 1), {Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0), Vec3<double>(0, 0, 1)}};
+    const OrientedBox<double> B{Vec3<double>(0, 0, 1 + c + sn + g), Vec3<double>(1, 1, 1),
+                                {Vec3<double>(1, 0, 0), Vec3<double>(0, c, sn), Vec3<double>(0, -sn, c)}};
+    auto book_test = [](const auto& x, const auto& y) { return book::separate(x, y); };
+    auto rapid = [](const auto& x, const auto& y) { return book::separate_rapid(x, y); };
+    obb_obb(rows, "2^-30 apart, frames 2^-20 rad apart", "separate", A, B, book_test);
+    obb_obb(rows, "the same, RAPID's |R| + 1e-6 at double", "separate", A, B, rapid);
+  }
 
   std::printf("cdref: the chapter's algorithms (book versions) at float and double, against the exact answer\n");
   std::printf("(CGAL::Gmpq, square roots kept exactly as a + b sqrt d, correctly rounded for display).\n");
   std::printf("Errors are in ulps of the type's own precision; float is judged on its own rounding of the inputs.\n\n");
+  std::printf("Oriented boxes: the book's 15-axis test against the solid the rounded axes span (cdref::solid).\n\n");
   std::printf("%-20s %-40s %-21s %-26s %-26s %-26s %s\n", "query", "case", "quantity", "float", "double",
               "exact", "drift");
   int wrong = 0;

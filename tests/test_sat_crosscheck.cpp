@@ -187,13 +187,13 @@ TEST_CASE("oriented boxes agree with CGAL's mesh intersection on every family", 
     if (flat(a) || flat(b)) return std::optional<std::pair<bool, bool>>{};
     return std::optional{std::pair{solid::separate(a, b).intersect, pmp_boxes(a, b)}};
   });
-  const Tally seg = over_families("segment-obb", 100, [](const fuzz::Inputs& in) {
+  const Tally seg = over_families("segment-obb", 175, [](const fuzz::Inputs& in) {
     const Segment<Q> s{qv(in, 0), qv(in, 3)};
     const OrientedBox<Q> b = qobb(in, 6);
     if (flat(b)) return std::optional<std::pair<bool, bool>>{};
     return std::optional{std::pair{solid::separate(s, b).intersect, pmp_segment(s, b)}};
   });
-  const Tally tri = over_families("triangle-obb", 100, [](const fuzz::Inputs& in) {
+  const Tally tri = over_families("triangle-obb", 160, [](const fuzz::Inputs& in) {
     const Triangle<Q> t{{qv(in, 0), qv(in, 3), qv(in, 6)}};
     const OrientedBox<Q> b = qobb(in, 9);
     if (flat(b)) return std::optional<std::pair<bool, bool>>{};
@@ -201,8 +201,8 @@ TEST_CASE("oriented boxes agree with CGAL's mesh intersection on every family", 
     const bool cgal = span ? pmp_segment(*span, b) : pmp_triangle(t, b);
     return std::optional{std::pair{solid::separate(t, b).intersect, cgal}};
   });
-  CHECK(boxes.n >= 10000);
   for (const Tally* t : {&boxes, &seg, &tri}) {
+    CHECK(t->n >= 10000);
     CHECK(t->yes > 500);
     CHECK(t->no > 500);
   }
