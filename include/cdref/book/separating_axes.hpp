@@ -20,7 +20,9 @@
 // three edge directions keep the candidates complete even when the triangle is coplanar
 // with a flat box, and a triangle of zero area is the segment or point it spans (its zero
 // normal and zero edges drop out, and what remains is the candidate list of that segment or
-// point). Boxes of zero extent keep their edge directions.
+// point). Boxes of zero extent keep their edge directions. Two flat polytopes in one plane
+// (two triangles) are not covered by these candidates: their separating axes lie in the plane,
+// the side normals n x e of their edges, which such a polytope must then list among its faces.
 //
 // The axes are tried in the documented order: the faces of A (index 0, 1, ...), then the
 // faces of B, then e_A[i] x e_B[j] for i, then j (index faces_A + faces_B + i * edges_B + j),
