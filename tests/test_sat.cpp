@@ -196,6 +196,7 @@ std::vector<ObbObb> obb_obb_cases() {
   // B tilted by t about z with axes (1, t, 0), (-t, 1, 0), (0, 0, 1): orthogonal, not unit
   const Q t = p2(-10);
   const std::array<Vec3<Q>, 3> tilt = {V(1, t, 0), V(-t, 1, 0), V(0, 0, 1)};
+  const std::array<Vec3<Q>, 3> skew = {V(1, 1, 0), V(-1, 1, 2), V(2, -2, 2)};
   return {
       {"faces touching", cube, {V(2, 0, 0), one, identity}, {true, -1}, {true, -1}},
       {"faces apart", cube, {V(2 + eps, 0, 0), one, identity}, {false, 0}, {false, 0}},
@@ -215,6 +216,15 @@ std::vector<ObbObb> obb_obb_cases() {
       {"A tilted, gap between the two radii", {V(0, 0, 0), one, tilt}, {V(2 + t + t * t / 2, 0, 0), one, identity},
        {false, 0}, {false, 3}},
       {"A tilted, vertex inside", {V(0, 0, 0), one, tilt}, {V(2 + t / 2, 0, 0), one, identity}, {true, -1}, {true, -1}},
+      // edge to edge: B's axes (1, 1, 0), (-1, 1, 2), (2, -2, 2) (orthogonal, lengths sqrt 2, 6,
+      // 12), extents (1, 1/4, 1/4), its centre k (-1, 1, 0): along e_z x b_0 = (-1, 1, 0) A
+      // projects onto [-2, 2] and B onto 2k -+ (2 h_1 + 4 h_2), touching at k = 7/4; every
+      // other axis overlaps, so the edges touch, and at k = 7/4 + 2^-20 the first separating
+      // axis is that edge cross, 6 + 3 * 2 + 0 = 12. The book takes B's radius on its face
+      // normal b_2 as h_2 = 1/4 (the solid's: h_2 |b_2|^2 = 3) and separates on axis 5.
+      {"edge to edge", cube, {V(-Q(7) / 4, Q(7) / 4, 0), V(1, Q(1) / 4, Q(1) / 4), skew}, {false, 5}, {true, -1}},
+      {"edge past edge", cube, {V(-Q(7) / 4 - eps, Q(7) / 4 + eps, 0), V(1, Q(1) / 4, Q(1) / 4), skew}, {false, 5},
+       {false, 12}},
   };
 }
 
