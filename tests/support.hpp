@@ -75,6 +75,7 @@ struct X {
   X(const Q& v) : a(v) {}                                       // NOLINT
   X(const char* v) : a(q(v)) {}                                 // NOLINT
   X(double v) : a(Q(v)) {}                                      // NOLINT
+  X(int v) : a(Q(v)) {}                                         // NOLINT
   X(const Q& a_, const Q& b_, const Q& d_) : a(a_), b(b_), d(d_) {}
   Expr expr() const { return d == 0 || b == 0 ? to_expr(a) : to_expr(a) + to_expr(b) * CGAL::sqrt(to_expr(d)); }
 };
@@ -120,6 +121,11 @@ Segment<T> convert_prim(const Segment<double>& p) {
   return {v3<T>(p.source[0], p.source[1], p.source[2]), v3<T>(p.target[0], p.target[1], p.target[2])};
 }
 template <class T>
+Triangle<T> convert_prim(const Triangle<double>& p) {
+  auto c = [](const Vec3<double>& v) { return v3<T>(v[0], v[1], v[2]); };
+  return {{c(p.vertex[0]), c(p.vertex[1]), c(p.vertex[2])}};
+}
+template <class T>
 Vec3<Q> exact_vec(const Vec3<T>& v) {
   return Vec3<Q>(exact_q(v[0]), exact_q(v[1]), exact_q(v[2]));
 }
@@ -140,6 +146,10 @@ Ray<Q> convert_prim_exact(const Ray<T>& p) {
   return {exact_vec(p.source), exact_vec(p.direction)};
 }
 template <class T>
+Triangle<Q> convert_prim_exact(const Triangle<T>& p) {
+  return {{exact_vec(p.vertex[0]), exact_vec(p.vertex[1]), exact_vec(p.vertex[2])}};
+}
+template <class T>
 bool finite_in(const Vec3<double>& v) {
   for (int i = 0; i < 3; ++i)
     if (!number_traits<T>::is_finite(from_double<T>(v[i]))) return false;
@@ -152,6 +162,11 @@ bool prim_finite(const Sphere<double>& p) {
 template <class T>
 bool prim_finite(const Box<double>& p) {
   return finite_in<T>(p.center) && finite_in<T>(p.extent);
+}
+
+template <class T>
+bool prim_finite(const Triangle<double>& p) {
+  return finite_in<T>(p.vertex[0]) && finite_in<T>(p.vertex[1]) && finite_in<T>(p.vertex[2]);
 }
 
 template <class T>

@@ -1,6 +1,6 @@
-// tests/test_sat_crosscheck.cpp - an independent check of the Section 3.3 answers against CGAL
-// in its exact kernel (CGAL::Epeck), on every family of the campaign (at least 10^4 inputs per
-// pair, hard families included):
+// tests/test_sat_crosscheck.cpp - an independent check of the Section 3.3 and 3.4 answers
+// against CGAL in its exact kernel (CGAL::Epeck), on every family of the campaign (at least
+// 10^4 inputs per pair, hard families included):
 //   segment-box, ray-box   CGAL::do_intersect(Segment_3 | Ray_3, Iso_cuboid_3): closed
 //                          segment or ray against the closed box, as in cdref;
 //   triangle-box           CGAL::do_intersect(Triangle_3, Iso_cuboid_3) (a triangle of zero
@@ -14,6 +14,9 @@
 //                          (Side_of_triangle_mesh); a triangle: the surfaces meet or a vertex
 //                          lies in the box. Boxes of zero extent have no closed mesh and are
 //                          left to the other tests.
+//   sphere-triangle        CGAL::squared_distance(Point_3, Triangle_3) (or Segment_3, Point_3
+//                          for zero-area triangles) equals |x - c|^2 for the book's closest
+//                          point x, and decides the closed ball against rho^2.
 // cdref's answers are the book at Gmpq for the axis-aligned pairs (there it is the truth) and
 // the solid (cdref::solid, Theorem 3.1 on the true normals) at Gmpq for oriented boxes, on the
 // campaign's rounded rotations and on exactly orthonormal rational frames (from integer
@@ -238,4 +241,45 @@ TEST_CASE("exactly orthonormal oriented boxes: the book, the solid and CGAL's me
   }
   CHECK(yes > 300);
   CHECK(no > 300);
+}
+
+TEST_CASE("sphere-triangle: the closest point's squared distance equals CGAL's on every family",
+          "[sphere-triangle][cgal]") {
+  // The book at Gmpq is the truth for this pair: its closest point x must lie at exactly CGAL's
+  // squared_distance(Point_3, Triangle_3) from the centre (CGAL's own projection and region
+  // code in Epeck), and proximity().intersect must be that distance against rho^2. CGAL's
+  // Triangle_3 must not be degenerate: a zero-area triangle is the segment or point it spans.
+  std::uint64_t regions[3] = {0, 0, 0};  // x at a vertex, on an edge, inside the face
+  const Tally t = over_families("sphere-triangle", 400, [&](const fuzz::Inputs& in) {
+    const Vec3<Q> c = qv(in, 0);
+    const Q rho(in[3]);
+    const Triangle<Q> tri{{qv(in, 4), qv(in, 7), qv(in, 10)}};
+    const Vec3<Q> x = book::detail::closest_on_triangle(tri, c);
+    FT cgal;
+    if (const auto s = degenerate_span(tri))
+      cgal = s->source == s->target ? CGAL::squared_distance(pt(c), pt(s->source))
+                                    : CGAL::squared_distance(pt(c), K::Segment_3(pt(s->source), pt(s->target)));
+    else
+      cgal = CGAL::squared_distance(pt(c), K::Triangle_3(pt(tri.vertex[0]), pt(tri.vertex[1]), pt(tri.vertex[2])));
+    REQUIRE(ft(Vec3<Q>(x - c).squaredNorm()) == cgal);
+    int at_vertex = 0;
+    for (const auto& v : tri.vertex) at_vertex += x == v;
+    const Vec3<Q> n = Vec3<Q>(tri.vertex[1] - tri.vertex[0]).cross(Vec3<Q>(tri.vertex[2] - tri.vertex[0]));
+    const bool on_edge = [&] {
+      for (int i = 0; i < 3; ++i) {
+        const Vec3<Q> e = tri.vertex[(i + 1) % 3] - tri.vertex[i];
+        if (book::detail::is_zero(Vec3<Q>(e.cross(Vec3<Q>(x - tri.vertex[i]))))) return true;
+      }
+      return false;
+    }();
+    ++regions[at_vertex ? 0 : on_edge || book::detail::is_zero(n) ? 1 : 2];
+    const Sphere<Q> s{c, rho};
+    return std::optional{std::pair{book::proximity(s, tri, want_all).intersect, cgal <= ft(rho * rho)}};
+  });
+  CHECK(t.n >= 10000);
+  CHECK(t.yes > 1000);
+  CHECK(t.no > 1000);
+  // every region was visited, many times
+  INFO("regions: vertex " << regions[0] << ", edge " << regions[1] << ", face " << regions[2]);
+  for (const std::uint64_t r : regions) CHECK(r > 500);
 }

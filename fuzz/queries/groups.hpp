@@ -12,5 +12,6 @@ std::vector<QueryInfo> sphere_queries();  // fuzz/queries/spheres.cpp
 std::vector<QueryInfo> box_queries();     // fuzz/queries/boxes.cpp
 std::vector<QueryInfo> sat_box_queries();  // fuzz/queries/sat_boxes.cpp
 std::vector<QueryInfo> obb_queries();      // fuzz/queries/sat_obbs.cpp
+std::vector<QueryInfo> triangle_queries(); // fuzz/queries/triangles.cpp
 
 }  // namespace cdref::fuzz

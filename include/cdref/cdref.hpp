@@ -1,5 +1,5 @@
 // cdref/cdref.hpp - the generic core: primitives, number traits and every algorithm of
-// Sections 3.1-3.3 as the chapter writes it (namespace cdref::book), the oriented box as the
+// Sections 3.1-3.4 as the chapter writes it (namespace cdref::book), the oriented box as the
 // solid its inputs define (namespace cdref::solid), for any number type that has
 // number_traits. Include <cdref/exact.hpp> for the exact CGAL types and
 // <cdref/float/mpfr.hpp> for MPFR.
@@ -15,6 +15,7 @@
 #include "book/separating_axes.hpp"
 #include "book/sphere_box.hpp"
 #include "book/sphere_sphere.hpp"
+#include "book/sphere_triangle.hpp"
 #include "book/triangle_box.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"

@@ -1,0 +1,12 @@
+// fuzz/queries/triangles.cpp - the descriptors of the Section 3.4 queries: one of the few
+// translation units that instantiate the exact types.
+#include <cdref/fuzz/describe.hpp>
+
+#include "groups.hpp"
+#include "sphere_triangle.hpp"
+
+namespace cdref::fuzz {
+
+std::vector<QueryInfo> triangle_queries() { return {spec::describe<queries::SphereTriangle>()}; }
+
+}  // namespace cdref::fuzz
