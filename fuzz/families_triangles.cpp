@@ -1,5 +1,7 @@
 // fuzz/families_triangles.cpp - the case families of the Section 3.4 queries: a sphere and a
-// triangle (touching the triangle's face, an edge or a vertex, zero-area triangles).
+// triangle (touching the triangle's face, an edge or a vertex, zero-area triangles); ray and
+// segment casts on a triangle (aimed at an edge or a vertex, grazing the plane, in the plane,
+// zero-area triangles).
 #include <cdref/fuzz/families.hpp>
 #include <cmath>
 
@@ -66,7 +68,128 @@ Inputs sphere_tri_touching(Next& next, double rel, V offset, int kind) {
   return sphere_tri(x + (rho * (1 + rel)) * dir, rho, a, b, d);
 }
 
+// ---- a shot and a triangle: source, target (or direction), v0, v1, v2 ----
+Inputs shot_tri(V s, V t, V a, V b, V d) {
+  Inputs in{};
+  put(in, 0, s);
+  put(in, 3, t);
+  put(in, 6, a);
+  put(in, 9, b);
+  put(in, 12, d);
+  return in;
+}
+// The shot from s aimed at x, passing it by `over` (a segment's target lies beyond x by a factor
+// in [1.1, 3] of |x - s|, or before it when `short_of`); a ray's direction is x - s.
+Inputs aimed(Next& next, bool ray, V s, V x, V a, V b, V d) {
+  const V dir = x - s;
+  return shot_tri(s, ray ? dir : s + uni(next, 1.1, 3) * dir, a, b, d);
+}
+V random_triangle(Next& next, V offset, V& a, V& b, V& d) {
+  V n;
+  do {
+    a = offset + uvec(next, -2, 2), b = offset + uvec(next, -2, 2), d = offset + uvec(next, -2, 2);
+    n = cross(b - a, d - a);
+  } while (dot(n, n) < 1e-2);
+  return normalized(n);
+}
+Inputs shot_tri_uniform(Next& next, bool ray) {
+  const V s = uvec(next, -3, 3);
+  return shot_tri(s, ray ? unit(next) : uvec(next, -3, 3), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2));
+}
+// Aimed at a point of an edge (kind 0) or at a vertex (kind 1), moved by rel (relative to the
+// triangle's size) across the edge in the plane (outward for rel > 0), from a source on either
+// side at distance 1 to 4.
+Inputs shot_tri_edge(Next& next, bool ray, double rel, V offset, int kind) {
+  V a, b, d;
+  const V n = random_triangle(next, offset, a, b, d);
+  V x, out;
+  if (kind == 0) {
+    x = a + uni(next, 0.05, 0.95) * (b - a);
+    out = normalized(cross(b - a, n));
+    if (dot(out, d - a) > 0) out = -1.0 * out;
+  } else {
+    x = a;
+    out = normalized((a - b) + (a - d));
+  }
+  x = x + (rel * std::sqrt(dot(b - a, b - a))) * out;
+  const V s = x + uni(next, 1, 4) * normalized(sign(next) * n + uni(next, -0.8, 0.8) * unit(next));
+  return aimed(next, ray, s, x, a, b, d);
+}
+// Aimed at an interior point, the direction 2^-k radians from the triangle's plane.
+Inputs shot_tri_grazing(Next& next, bool ray, int k) {
+  V a, b, d;
+  const V n = random_triangle(next, V{0, 0, 0}, a, b, d);
+  double s1 = uni(next, 0.05, 0.9), s2 = uni(next, 0.05, 0.9);
+  if (s1 + s2 > 0.95) s1 *= 0.5, s2 *= 0.5;
+  const V x = a + s1 * (b - a) + s2 * (d - a);
+  const V along = normalized(cross(n, unit(next)));
+  const V dir = along + (sign(next) * std::ldexp(1.0, -k)) * n;
+  return aimed(next, ray, x - uni(next, 1, 4) * dir, x, a, b, d);
+}
+// A triangle with small integer coordinates and a shot exactly in its plane (points
+// v0 + alpha e1 + beta e2 with alpha, beta multiples of 1/4: exact in double).
+Inputs shot_tri_coplanar(Next& next, bool ray) {
+  auto ivec = [&] { return V{double(pick(next, 17)) - 8, double(pick(next, 17)) - 8, double(pick(next, 17)) - 8}; };
+  V a, b, d, n;
+  do {
+    a = ivec(), b = ivec(), d = ivec();
+    n = cross(b - a, d - a);
+  } while (dot(n, n) == 0);
+  auto in_plane = [&] {
+    const double al = (double(pick(next, 17)) - 6) / 4, be = (double(pick(next, 17)) - 6) / 4;
+    return a + al * (b - a) + be * (d - a);
+  };
+  const V s = in_plane();
+  V t = in_plane();
+  if (ray && dot(t - s, t - s) == 0) t = s + (b - a);
+  return shot_tri(s, ray ? t - s : t, a, b, d);
+}
+
 }  // namespace
+
+std::vector<Family> triangle_shot_family_list(bool ray) {
+  std::vector<Family> f;
+  f.push_back({"uniform", ray ? "source in [-3,3]^3, a unit direction, vertices in [-2,2]^3"
+                              : "source and target in [-3,3]^3, vertices in [-2,2]^3",
+               {0}, [ray](Next& next, int) { return shot_tri_uniform(next, ray); }});
+  f.push_back({"near-edge", "aimed at a point of an edge or at a vertex, moved 2^-k of the edge's length across it",
+               tangency_scales, [ray](Next& next, int k) {
+                 return shot_tri_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 2));
+               }});
+  f.push_back({"long-range", "aimed at an edge or a vertex to within 1e-9, the triangle 10^k from the origin", decades,
+               [ray](Next& next, int k) {
+                 return shot_tri_edge(next, ray, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 2));
+               }});
+  f.push_back({"grazing", "aimed at an interior point, 2^-k radians from the triangle's plane", tangency_scales,
+               [ray](Next& next, int k) { return shot_tri_grazing(next, ray, k); }});
+  f.push_back({"coplanar", "a shot exactly in the plane of a triangle with integer vertices", {0},
+               [ray](Next& next, int) { return shot_tri_coplanar(next, ray); }});
+  f.push_back({"degenerate",
+               ray ? "zero-area triangles (collinear vertices, a point), the source on the triangle, slivers"
+                   : "zero-area triangles (collinear vertices, a point), the source on the triangle, zero-length "
+                     "segments, slivers",
+               {0}, [ray](Next& next, int) {
+                 auto ivec = [&] {
+                   return V{double(pick(next, 9)) - 4, double(pick(next, 9)) - 4, double(pick(next, 9)) - 4};
+                 };
+                 const V a = ivec(), b = ivec(), d = ivec();
+                 // shots through points of the integer lattice, so that they meet edges exactly
+                 const V s = ivec(), x = ivec();
+                 const V dir = dot(x - s, x - s) == 0 ? V{1, 0, 0} : x - s;
+                 auto shot = [&](V src, V dr, V p, V q, V r) { return shot_tri(src, ray ? dr : src + dr, p, q, r); };
+                 switch (pick(next, ray ? 5 : 6)) {
+                   case 0: return shot(s, dir, a, b, a + 0.5 * (b - a));                  // collinear
+                   case 1: return shot(s, dir, x, x, x);                                  // a point on the shot
+                   case 2: return shot(a + 0.25 * (b - a) + 0.25 * (d - a), dir, a, b, d);  // source on it
+                   case 3: return shot(s, dir, a, b, b + std::ldexp(1.0, -40) * (d - b));   // a sliver
+                   case 4: return shot(s, 2.0 * (x - s), x, b, d);                        // through a vertex
+                   default: return shot(a + 0.5 * (b - a), V{0, 0, 0}, a, b, d);           // zero length, on an edge
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+               [ray](Next& next, int k) { return scaled(shot_tri_uniform(next, ray), 15, k); }});
+  return f;
+}
 
 std::vector<Family> sphere_triangle_family_list() {
   std::vector<Family> f;

@@ -16,7 +16,10 @@
 //                          left to the other tests.
 //   sphere-triangle        CGAL::squared_distance(Point_3, Triangle_3) (or Segment_3, Point_3
 //                          for zero-area triangles) equals |x - c|^2 for the book's closest
-//                          point x, and decides the closed ball against rho^2.
+//                          point x, and decides the closed ball against rho^2;
+//   ray/segment-triangle   CGAL::do_intersect(Ray_3 | Segment_3, Triangle_3) decides, and
+//                          CGAL::intersection's point (or segment, for a shot in the plane)
+//                          is the book's entry point (and exit point).
 // cdref's answers are the book at Gmpq for the axis-aligned pairs (there it is the truth) and
 // the solid (cdref::solid, Theorem 3.1 on the true normals) at Gmpq for oriented boxes, on the
 // campaign's rounded rotations and on exactly orthonormal rational frames (from integer
@@ -282,4 +285,80 @@ TEST_CASE("sphere-triangle: the closest point's squared distance equals CGAL's o
   // every region was visited, many times
   INFO("regions: vertex " << regions[0] << ", edge " << regions[1] << ", face " << regions[2]);
   for (const std::uint64_t r : regions) CHECK(r > 500);
+}
+
+namespace {
+
+// ray-triangle-cast and segment-triangle-cast: the classification and the intersection itself
+// (CGAL::intersection gives a point, or a segment for a shot in the triangle's plane) against
+// the book at Gmpq, the truth for this pair.
+template <bool IsRay>
+Tally triangle_cast_against_cgal(std::uint64_t per_cell, std::uint64_t& points, std::uint64_t& segments) {
+  return over_families(IsRay ? "ray-triangle-cast" : "segment-triangle-cast", per_cell, [&](const fuzz::Inputs& in) {
+    const Vec3<Q> s = qv(in, 0), t = qv(in, 3);
+    const Triangle<Q> tri{{qv(in, 6), qv(in, 9), qv(in, 12)}};
+    if (IsRay && book::detail::is_zero(t)) return std::optional<std::pair<bool, bool>>{};  // refused: zero direction
+    const TriangleCast<Quad<Q>> c = IsRay ? book::cast(Ray<Q>{s, t}, tri) : book::cast(Segment<Q>{s, t}, tri);
+    const Vec3<Q> d = IsRay ? t : Vec3<Q>(t - s);
+    auto shot_meets = [&](const auto& obj) {
+      if constexpr (IsRay)
+        return CGAL::do_intersect(K::Ray_3(pt(s), K::Vector_3(ft(t[0]), ft(t[1]), ft(t[2]))), obj);
+      else
+        return CGAL::do_intersect(K::Segment_3(pt(s), pt(t)), obj);
+    };
+    bool cgal;
+    if (const auto span = degenerate_span(tri)) {
+      if (span->source == span->target)
+        cgal = IsRay ? K::Ray_3(pt(s), K::Vector_3(ft(t[0]), ft(t[1]), ft(t[2]))).has_on(pt(span->source))
+                     : (s == t ? s == span->source : K::Segment_3(pt(s), pt(t)).has_on(pt(span->source)));
+      else if (!IsRay && s == t)
+        cgal = K::Segment_3(pt(span->source), pt(span->target)).has_on(pt(s));
+      else
+        cgal = shot_meets(K::Segment_3(pt(span->source), pt(span->target)));
+    } else {
+      const K::Triangle_3 T3(pt(tri.vertex[0]), pt(tri.vertex[1]), pt(tri.vertex[2]));
+      if (!IsRay && s == t) {
+        cgal = T3.has_on(pt(s));
+      } else {
+        cgal = shot_meets(T3);
+        if (cgal && c.hit) {
+          const auto x = IsRay ? CGAL::intersection(K::Ray_3(pt(s), K::Vector_3(ft(t[0]), ft(t[1]), ft(t[2]))), T3)
+                               : CGAL::intersection(K::Segment_3(pt(s), pt(t)), T3);
+          REQUIRE(bool(x));
+          REQUIRE((c.lambda_enter.is_rational() && c.lambda_exit.is_rational()));
+          const Q le = c.lambda_enter.a(), lx = c.lambda_exit.a();
+          const P3 enter = pt(Vec3<Q>(s + d * le)), leave = pt(Vec3<Q>(s + d * lx));
+          REQUIRE(pt(Vec3<Q>(c.point[0].a(), c.point[1].a(), c.point[2].a())) == enter);
+          if (const P3* p = boost::get<P3>(&*x)) {
+            REQUIRE(le == lx);
+            REQUIRE(*p == enter);
+            ++points;
+          } else {
+            const K::Segment_3* g = boost::get<K::Segment_3>(&*x);
+            REQUIRE(g);
+            REQUIRE(((g->source() == enter && g->target() == leave) || (g->source() == leave && g->target() == enter)));
+            ++segments;
+          }
+        }
+      }
+    }
+    return std::optional{std::pair{c.hit, cgal}};
+  });
+}
+
+}  // namespace
+
+TEST_CASE("ray and segment casts on a triangle agree with CGAL's Ray_3 / Segment_3 and Triangle_3 on every family",
+          "[triangle-cast][cgal]") {
+  std::uint64_t points = 0, segments = 0;
+  const Tally ray = triangle_cast_against_cgal<true>(180, points, segments);
+  const Tally seg = triangle_cast_against_cgal<false>(180, points, segments);
+  INFO("intersections compared: " << points << " points, " << segments << " segments");
+  for (const Tally& t : {ray, seg}) {
+    CHECK(t.n >= 10000);
+    CHECK(t.yes > 1000);
+    CHECK(t.no > 1000);
+  }
+  CHECK(points > 2000);
+  CHECK(segments > 20);
 }

@@ -2,7 +2,11 @@
 // a sphere and a triangle (the closest point in every region: face, edges, vertices; zero-area
 // triangles; the centre on the triangle; long range and magnitudes near 1e150 and 1e-150), with
 // exact expected answers written as rationals or a + b sqrt(d); the robust version's
-// certificate on the same cases.
+// certificate on the same cases. Ray and segment casts on a triangle (through the face, an
+// edge, a vertex; in the triangle's plane; the source on the triangle; parallel; behind the
+// source; zero-area triangles; zero-length segments; magnitudes near 2^500 and 2^-500), with
+// their barycentric weights, and the robust (watertight) version on the same cases.
+#include <cdref/robust/ray_triangle.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
 
 #include "prox_check.hpp"
@@ -102,5 +106,154 @@ TEMPLATE_TEST_CASE("robust sphere-triangle: certain, exact classification and ac
     if (sc.c.scale == 1) REQUIRE(d.certain);
     CHECK(ulps<F>(p.distance, to_expr(truth.distance), sc.c.scale) <= 1);
     CHECK(ulps<F>(p.depth, to_expr(truth.depth), sc.c.scale) <= 1);
+  }
+}
+
+// ---- ray and segment casts on a triangle ----
+namespace {
+
+struct TriCast {
+  CastCase c;
+  Triangle<double> t;
+  X u, v;
+};
+
+std::vector<TriCast> triangle_cast_cases() {
+  const Triangle<double> t = tri(P(0, 0, 0), P(4, 0, 0), P(0, 4, 0));  // in the plane z = 0, normal +z
+  const double e20 = std::ldexp(1.0, -20);
+  std::vector<TriCast> v;
+  auto ray = [&](std::string name, D3 s, D3 d, bool hit, bool enters, X le, X lx, D3 n, X u, X w,
+                 Triangle<double> tr, std::map<std::string, FloatExpect> fl = {}) {
+    v.push_back({CastCase{std::move(name), s, d, true, hit, enters, le, lx, n, std::move(fl)}, tr, u, w});
+  };
+  auto seg = [&](std::string name, D3 s, D3 e, bool hit, bool enters, X le, X lx, D3 n, X u, X w,
+                 Triangle<double> tr, std::map<std::string, FloatExpect> fl = {}) {
+    v.push_back({CastCase{std::move(name), s, e, false, hit, enters, le, lx, n, std::move(fl)}, tr, u, w});
+  };
+  const D3 z{0, 0, 0}, up{0, 0, 1}, down{0, 0, -1};
+  ray("through the face from above", {1, 1, 5}, {0, 0, -1}, true, true, 5, 5, up, Q(1, 4), Q(1, 4), t);
+  ray("through the face from below", {1, 1, -2}, {0, 0, 2}, true, true, 1, 1, down, Q(1, 4), Q(1, 4), t);
+  ray("the other vertex order: the normal still faces the source", {1, 1, 5}, {0, 0, -1}, true, true, 5, 5, up,
+      Q(1, 4), Q(1, 4), tri(P(0, 0, 0), P(0, 4, 0), P(4, 0, 0)));
+  ray("through the midpoint of edge 01", {2, 0, 3}, {0, 0, -1}, true, true, 3, 3, up, Q(1, 2), Q(0), t);
+  ray("through vertex 2", {0, 4, 1}, {0, 0, -1}, true, true, 1, 1, up, Q(0), Q(1), t);
+  ray("through the hypotenuse, slanted", {0, 0, 2}, {1, 1, -1}, true, true, 2, 2, up, Q(1, 2), Q(1, 2), t);
+  ray("2^-20 past the hypotenuse", {2, 2 + e20, 1}, {0, 0, -1}, false, false, 0, 0, z, 0, 0, t);
+  ray("2^-20 inside the hypotenuse", {2, 2 - e20, 1}, {0, 0, -1}, true, true, 1, 1, up, Q(1, 2),
+      Q(1, 2) - Q(e20) / 4, t);
+  ray("in the plane, entering edge 20 and leaving by the hypotenuse", {-1, 1, 0}, {1, 0, 0}, true, true, 1, 4, z,
+      Q(0), Q(1, 4), t);
+  ray("in the plane, missing", {-1, 5, 0}, {1, 0, 0}, false, false, 0, 0, z, 0, 0, t);
+  ray("in the plane, along edge 01", {-1, 0, 0}, {1, 0, 0}, true, true, 1, 5, z, Q(0), Q(0), t);
+  ray("in the plane, touching vertex 1 only", {3, -1, 0}, {1, 1, 0}, true, true, 1, 1, z, Q(1), Q(0), t);
+  ray("the source inside the triangle", {1, 1, 0}, {0, 0, 1}, true, false, 0, 0, z, Q(1, 4), Q(1, 4), t);
+  ray("the source on the triangle, moving in its plane", {1, 1, 0}, {1, 0, 0}, true, false, 0, 2, z, Q(1, 4),
+      Q(1, 4), t);
+  ray("parallel to the plane, off it", {1, 1, 1}, {1, 0, 0}, false, false, 0, 0, z, 0, 0, t);
+  ray("the triangle behind the source", {1, 1, -1}, {0, 0, -1}, false, false, 0, 0, z, 0, 0, t);
+  seg("a segment ending on the face", {1, 1, 2}, {1, 1, 0}, true, true, 1, 1, up, Q(1, 4), Q(1, 4), t);
+  seg("a segment stopping 2^-20 short", {1, 1, 2}, {1, 1, e20}, false, false, 0, 0, z, 0, 0, t);
+  seg("a segment crossing the face", {1, 2, -1}, {1, 2, 3}, true, true, Q(1, 4), Q(1, 4), down, Q(1, 4), Q(1, 2),
+      t);
+  seg("a zero-length segment on the face", {1, 1, 0}, {1, 1, 0}, true, false, 0, 1, z, Q(1, 4), Q(1, 4), t);
+  seg("a zero-length segment off the face", {1, 1, 1}, {1, 1, 1}, false, false, 0, 0, z, 0, 0, t);
+  seg("a segment in the plane, stopping short of the triangle", {-3, 1, 0}, {-1, 1, 0}, false, false, 0, 0, z, 0,
+      0, t);
+  seg("a segment in the plane, ending inside", {-1, 1, 0}, {1, 1, 0}, true, true, Q(1, 2), 1, z, Q(0), Q(1, 4), t);
+  // zero-area triangles: the segment [0, 4] on the x-axis (v1 in the middle), and a point
+  const Triangle<double> line = tri(P(0, 0, 0), P(2, 0, 0), P(4, 0, 0));
+  ray("a segment triangle, crossed", {1, -1, 0}, {0, 1, 0}, true, true, 1, 1, z, Q(0), Q(1, 4), line);
+  ray("a segment triangle, passed by (skew)", {1, -1, 1}, {0, 1, 0}, false, false, 0, 0, z, 0, 0, line);
+  ray("a segment triangle, along its line", {-2, 0, 0}, {1, 0, 0}, true, true, 2, 6, z, Q(0), Q(0), line);
+  ray("a point triangle on the ray", {0, 0, 0}, {1, 1, 1}, true, true, 1, 1, z, Q(0), Q(0),
+      tri(P(1, 1, 1), P(1, 1, 1), P(1, 1, 1)));
+  seg("a point triangle beyond the segment", {0, 0, 0}, {1, 1, 1}, false, false, 0, 0, z, 0, 0,
+      tri(P(2, 2, 2), P(2, 2, 2), P(2, 2, 2)));
+  // magnitudes: the face case scaled by 2^500 and 2^-500 (exact in double). Moller-Trumbore's
+  // det is of degree 3 in the coordinates: at 2^500 it overflows double (2^1500) and the book
+  // reports a miss, while hit()'s triple products overflow to infinities of the right signs and
+  // it answers right; at 2^-500 det and (s - v0) . n underflow to 0, the book takes the ray for
+  // one in the triangle's plane, where every edge function underflows too, and misses, as does
+  // hit(). Both are proven drifts of the book at double; long double's range covers both (at
+  // float the inputs are beyond its range: refused at 2^500, zero at 2^-500, so not run).
+  for (const int k : {500, -500}) {
+    const double sc = std::ldexp(1.0, k);
+    FloatExpect miss;
+    miss.hit = false;
+    miss.predicate = k > 0;
+    ray(k > 0 ? "through the face at 2^500" : "through the face at 2^-500", {sc, sc, 5 * sc}, {0, 0, -sc}, true,
+        true, 5, 5, up, Q(1, 4), Q(1, 4), tri(P(0, 0, 0), P(4 * sc, 0, 0), P(0, 4 * sc, 0)), {{"double", miss}});
+  }
+  return v;
+}
+
+// Inputs that T rounds to zero (2^-500 at float) make another case: not run at T.
+template <class T>
+bool flushed(const TriCast& tc) {
+  auto gone = [](double x) { return x != 0 && from_double<T>(x) == T(0); };
+  for (int i = 0; i < 3; ++i)
+    if (gone(tc.c.s[i]) || gone(tc.c.t[i]) || gone(tc.t.vertex[1][i]) || gone(tc.t.vertex[2][i])) return true;
+  return false;
+}
+
+template <class T, class Fn>
+auto on_shot(const CastCase& c, Fn fn) {
+  const Vec3<T> s = v3<T>(c.s[0], c.s[1], c.s[2]), t = v3<T>(c.t[0], c.t[1], c.t[2]);
+  return c.infinite ? fn(Ray<T>{s, t}) : fn(Segment<T>{s, t});
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("ray and segment casts on a triangle (3.4) on hard cases", "[triangle-cast]", float, double,
+                   long double, CGAL::Gmpq, CGAL::Epeck::FT) {
+  using T = TestType;
+  auto cast_fn = [](const auto& s, const auto& t, const auto& tr, bool infinite) {
+    using U = std::decay_t<decltype(s[0])>;
+    return infinite ? book::cast(Ray<U>{s, t}, tr) : book::cast(Segment<U>{s, t}, tr);
+  };
+  auto hit_fn = [](const auto& s, const auto& t, const auto& tr, bool infinite) {
+    using U = std::decay_t<decltype(s[0])>;
+    return infinite ? book::hit(Ray<U>{s, t}, tr) : book::hit(Segment<U>{s, t}, tr);
+  };
+  for (const auto& tc : triangle_cast_cases()) {
+    if (flushed<T>(tc)) continue;
+    check_cast_case<T>(tc.c, tc.t, Vec3<double>(0, 0, 0), 0.0, cast_fn, hit_fn);
+    if constexpr (is_exact_v<T>) {
+      INFO(tc.c.name);
+      const auto r = on_shot<T>(tc.c, [&](const auto& shot) { return book::cast(shot, convert_prim<T>(tc.t)); });
+      if (!r.hit) continue;
+      REQUIRE(exact_equal(r.u, tc.u.expr()));
+      REQUIRE(exact_equal(r.v, tc.v.expr()));
+      // the weights reproduce the entry point
+      for (int i = 0; i < 3; ++i)
+        REQUIRE(to_expr(r.point[i]) == (1 - to_expr(r.u) - to_expr(r.v)) * to_expr(tc.t.vertex[0][i]) +
+                                           to_expr(r.u) * to_expr(tc.t.vertex[1][i]) +
+                                           to_expr(r.v) * to_expr(tc.t.vertex[2][i]));
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("robust casts on a triangle: certain, exact classification and accurate values on the hard cases",
+                   "[triangle-cast][robust]", float, double, long double) {
+  using F = TestType;
+  for (const auto& tc : triangle_cast_cases()) {
+    if (!all_finite<F>({tc.c.s[0], tc.c.s[1], tc.c.s[2], tc.c.t[0], tc.c.t[1], tc.c.t[2]}) || !prim_finite<F>(tc.t))
+      continue;
+    if (flushed<F>(tc)) continue;
+    INFO(tc.c.name);
+    const Triangle<F> tf = convert_prim<F>(tc.t);
+    const auto [d, r] = on_shot<F>(tc.c, [&](const auto& shot) {
+      return std::pair{robust::decide(shot, tf), robust::cast(shot, tf)};
+    });
+    REQUIRE(d.certain);  // dyadic inputs: the double words decide every one
+    REQUIRE(d.value == tc.c.hit);
+    REQUIRE(r.hit == tc.c.hit);
+    if (!r.hit) continue;
+    REQUIRE(r.enters == tc.c.enters);
+    CHECK(ulps<F>(r.lambda_enter, tc.c.enter.expr()) <= 1);
+    CHECK(ulps<F>(r.lambda_exit, tc.c.exit.expr()) <= 1);
+    CHECK(ulps<F>(r.u, tc.u.expr()) <= 1);
+    CHECK(ulps<F>(r.v, tc.v.expr()) <= 1);
+    for (int i = 0; i < 3; ++i) CHECK(ulps<F>(r.normal[i], to_expr(tc.c.normal.value()[i])) <= 1);
   }
 }

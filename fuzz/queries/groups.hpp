@@ -13,5 +13,6 @@ std::vector<QueryInfo> box_queries();     // fuzz/queries/boxes.cpp
 std::vector<QueryInfo> sat_box_queries();  // fuzz/queries/sat_boxes.cpp
 std::vector<QueryInfo> obb_queries();      // fuzz/queries/sat_obbs.cpp
 std::vector<QueryInfo> triangle_queries(); // fuzz/queries/triangles.cpp
+std::vector<QueryInfo> triangle_cast_queries();  // fuzz/queries/triangle_casts.cpp
 
 }  // namespace cdref::fuzz

@@ -21,9 +21,10 @@ enum want : std::uint32_t {
   want_depth = 1u << 5,
   want_witnesses = 1u << 6,
   want_closest = 1u << 7,
+  want_barycentric = 1u << 8,
   want_cast = want_lambda_enter | want_lambda_exit | want_point | want_normal,
   want_proximity = want_distance | want_depth | want_witnesses | want_closest,
-  want_all = 0xffu,
+  want_all = 0x1ffu,
 };
 
 // A ray cast (segment s->t, lambda in [0,1]; or infinite ray, lambda >= 0).
@@ -45,6 +46,15 @@ struct Cast {
   S lambda_exit = S(0);
   Vec3<S> point = zero_vec<S>();
   Vec3<S> normal = zero_vec<S>();
+};
+
+// A ray cast on a triangle (Section 3.4) adds the barycentric weights of v1 and v2 at `point`
+// (point = (1 - u - v) v0 + u v1 + v v2). The normal is the triangle's, turned to face the
+// source; book/ray_triangle.hpp lists where it is 0.
+template <class S>
+struct TriangleCast : Cast<S> {
+  S u = S(0);
+  S v = S(0);
 };
 
 // A proximity query on a pair (A, B).

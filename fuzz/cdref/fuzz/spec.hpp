@@ -114,6 +114,18 @@ inline std::vector<Output> cast_outputs() {
           {"point", 3, Output::on_hit},
           {"normal", 3, Output::on_hit}};
 }
+inline constexpr const char* triangle_cast_help =
+    "  lambda_enter, lambda_exit: the hit interval (graded only where both say hit; they differ only\n"
+    "  for a shot in the triangle's plane)\n"
+    "  point_[xyz]: the entry point; normal_[xyz]: the triangle's unit normal facing the source (0\n"
+    "  when the source lies in the triangle's plane, or the triangle has zero area)\n"
+    "  u, v: the barycentric weights of v1 and v2 at the entry point\n";
+inline std::vector<Output> triangle_cast_outputs() {
+  auto o = cast_outputs();
+  o.push_back({"u", 1, Output::on_hit});
+  o.push_back({"v", 1, Output::on_hit});
+  return o;
+}
 inline std::vector<Output> prox_outputs() {
   return {{"distance", 1}, {"depth", 1}, {"witness_a", 3}, {"witness_b", 3}};
 }
@@ -155,6 +167,13 @@ void put(Answer& a, const Cast<S>& c, bool values) {
     a.v[2 + i] = value<F>(c.point[i]);
     a.v[5 + i] = value<F>(c.normal[i]);
   }
+}
+template <class F, class S>
+void put(Answer& a, const TriangleCast<S>& c, bool values) {
+  put<F>(a, static_cast<const Cast<S>&>(c), values);
+  if (!values) return;
+  a.v[8] = value<F>(c.u);
+  a.v[9] = value<F>(c.v);
 }
 template <class F, class S>
 void put(Answer& a, const Proximity<S>& p, bool values) {
