@@ -1,9 +1,13 @@
 // fuzz/families_triangles.cpp - the case families of the Section 3.4 queries: a sphere and a
 // triangle (touching the triangle's face, an edge or a vertex, zero-area triangles); ray and
 // segment casts on a triangle (aimed at an edge or a vertex, grazing the plane, in the plane,
-// zero-area triangles).
+// zero-area triangles); fans of triangles around a shared vertex or edge of a closed mesh (the
+// watertight family).
 #include <cdref/fuzz/families.hpp>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 #include "family_tools.hpp"
 
@@ -145,7 +149,188 @@ Inputs shot_tri_coplanar(Next& next, bool ray) {
   return shot_tri(s, ray ? t - s : t, a, b, d);
 }
 
+// ---- a shot and a fan of triangles around a shared vertex: source, target (or direction),
+// n, closed, centre, ring r0..r7 ----
+struct FanShape {
+  V center;
+  std::vector<V> ring;
+  bool closed = false;
+};
+Inputs shot_fan(V s, V t, const FanShape& f) {
+  Inputs in{};
+  put(in, 0, s);
+  put(in, 3, t);
+  in[6] = double(f.ring.size());
+  in[7] = f.closed ? 1 : 0;
+  put(in, 8, f.center);
+  for (std::size_t i = 0; i < f.ring.size(); ++i) put(in, 11 + 3 * int(i), f.ring[i]);
+  return in;
+}
+
+// The unit sphere as an icosahedron subdivided twice (162 vertices, 320 faces, counter-
+// clockwise seen from outside), and each vertex's one-ring in order.
+struct Sphere320 {
+  std::vector<V> v;
+  std::vector<std::array<int, 3>> f;
+  std::vector<std::vector<int>> ring;
+};
+const Sphere320& sphere320() {
+  static const Sphere320 m = [] {
+    Sphere320 r;
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    r.v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+           {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (V& x : r.v) x = normalized(x);
+    r.f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+           {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+           {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (int level = 0; level < 2; ++level) {
+      std::map<std::pair<int, int>, int> mid;
+      auto midpoint = [&](int a, int b) {
+        const auto key = std::minmax(a, b);
+        const auto it = mid.find(key);
+        if (it != mid.end()) return it->second;
+        r.v.push_back(normalized(0.5 * (r.v[a] + r.v[b])));
+        return mid[key] = int(r.v.size()) - 1;
+      };
+      std::vector<std::array<int, 3>> next;
+      for (const auto& t : r.f) {
+        const int a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
+        next.push_back({t[0], a, c});
+        next.push_back({t[1], b, a});
+        next.push_back({t[2], c, b});
+        next.push_back({a, b, c});
+      }
+      r.f = next;
+    }
+    // one-rings: the faces (v, a, b) around v give the edges a -> b of a cycle
+    r.ring.resize(r.v.size());
+    std::vector<std::map<int, int>> succ(r.v.size());
+    for (const auto& t : r.f)
+      for (int k = 0; k < 3; ++k) succ[t[k]][t[(k + 1) % 3]] = t[(k + 2) % 3];
+    for (std::size_t i = 0; i < r.v.size(); ++i) {
+      int a = succ[i].begin()->first;
+      for (std::size_t k = 0; k < succ[i].size(); ++k) {
+        r.ring[i].push_back(a);
+        a = succ[i][a];
+      }
+    }
+    return r;
+  }();
+  return m;
+}
+
+// A random rotation (the matrix of a random unit quaternion), applied in double.
+struct Rotation {
+  V c0, c1, c2;
+  V operator()(V x) const { return x.x * c0 + x.y * c1 + x.z * c2; }
+};
+Rotation random_rotation(Next& next) {
+  double w, x, y, z, n;
+  do {
+    w = uni(next, -1, 1), x = uni(next, -1, 1), y = uni(next, -1, 1), z = uni(next, -1, 1);
+    n = w * w + x * x + y * y + z * z;
+  } while (n < 1e-2 || n > 1);
+  n = std::sqrt(n);
+  w /= n, x /= n, y /= n, z /= n;
+  return {{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
+          {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
+          {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
+}
+
+// The watertight family: a fan of a closed mesh (the subdivided icosahedron, or a perturbed
+// height grid), sized 10^[-3, 3], placed 10^k from the origin and turned at random, each vertex
+// computed once in double (so the triangles share it exactly); the shot aimed at the shared
+// vertex or at a point of an edge shared by two triangles (that point rounded), from a source
+// near the surface (1 to 4 edge lengths) or far (10^3 to 10^4 sizes).
+Inputs shot_fan_watertight(Next& next, bool ray, int k) {
+  const double size = std::pow(10.0, uni(next, -3, 3));
+  const V offset = std::pow(10.0, k) * unit(next);
+  const Rotation rot = random_rotation(next);
+  auto place = [&](V x) { return offset + rot(size * x); };
+  FanShape f;
+  V normal;
+  if (pick(next, 2) == 0) {  // a vertex of the sphere and its one-ring (5 or 6 triangles)
+    const Sphere320& m = sphere320();
+    const int c = pick(next, int(m.v.size()));
+    f.center = place(m.v[c]);
+    for (int j : m.ring[c]) f.ring.push_back(place(m.v[j]));
+    normal = rot(m.v[c]);
+  } else {  // an interior vertex of a height grid: six triangles (one diagonal per cell)
+    auto h = [&] { return uni(next, -0.3, 0.3); };
+    auto jit = [&] { return uni(next, -0.2, 0.2); };
+    f.center = place(V{jit(), jit(), h()});
+    for (const V& q : {V{1, 0, 0}, V{1, 1, 0}, V{0, 1, 0}, V{-1, 0, 0}, V{-1, -1, 0}, V{0, -1, 0}})
+      f.ring.push_back(place(V{q.x + jit(), q.y + jit(), h()}));
+    normal = rot(V{0, 0, 1});
+  }
+  f.closed = true;
+  V x = f.center;
+  if (pick(next, 2) == 1) {  // a point of a shared edge: keep the two triangles that hold it
+    const int j = pick(next, int(f.ring.size()));
+    const int n = int(f.ring.size());
+    x = f.center + uni(next, 0.05, 0.95) * (f.ring[j] - f.center);
+    f.ring = {f.ring[(j + n - 1) % n], f.ring[j], f.ring[(j + 1) % n]};
+    f.closed = false;
+  }
+  const double edge = size * 0.3;
+  const double dist = pick(next, 2) == 0 ? uni(next, 1, 4) * edge : std::pow(10.0, uni(next, 3, 4)) * size;
+  V dir = normalized(sign(next) * normal + uni(next, -0.7, 0.7) * unit(next));
+  const V s = x + dist * dir;
+  const V d = x - s;
+  return shot_fan(s, ray ? d : x + uni(next, 0.1, 2) * d, f);
+}
+Inputs shot_fan_uniform(Next& next, bool ray) {
+  FanShape f;
+  f.center = uvec(next, -1, 1);
+  const int n = 3 + pick(next, 6);
+  const V axis_ = unit(next), u = perp(next, axis_), w = cross(axis_, u);
+  for (int i = 0; i < n; ++i) {
+    const double a = 6.283185307179586 * (i + uni(next, 0.1, 0.9)) / n, r = uni(next, 0.5, 2);
+    f.ring.push_back(f.center + r * std::cos(a) * u + r * std::sin(a) * w + uni(next, -0.5, 0.5) * axis_);
+  }
+  f.closed = pick(next, 2) == 0;
+  const V s = uvec(next, -3, 3);
+  return shot_fan(s, ray ? unit(next) : uvec(next, -3, 3), f);
+}
+
 }  // namespace
+
+std::vector<Family> fan_shot_family_list(bool ray) {
+  std::vector<Family> f;
+  f.push_back({"uniform",
+               "a fan of 3 to 8 triangles around a centre in [-1,1]^3 (closed or open), the source (and target) in "
+               "[-3,3]^3",
+               {0}, [ray](Next& next, int) { return shot_fan_uniform(next, ray); }});
+  f.push_back({"degenerate",
+               "fans on the integer lattice with zero-area triangles (a repeated or collinear ring vertex, the centre "
+               "on the ring), shots through lattice points (a vertex, an edge), sources on the fan",
+               {0}, [ray](Next& next, int) {
+                 auto ivec = [&] {
+                   return V{double(pick(next, 7)) - 3, double(pick(next, 7)) - 3, double(pick(next, 7)) - 3};
+                 };
+                 FanShape f;
+                 f.center = ivec();
+                 const int n = 3 + pick(next, 4);
+                 for (int i = 0; i < n; ++i) f.ring.push_back(ivec());
+                 switch (pick(next, 3)) {
+                   case 0: f.ring[1] = f.ring[0]; break;                                   // a repeated vertex
+                   case 1: f.ring[1] = f.center + 2.0 * (f.ring[0] - f.center); break;     // collinear
+                   default: f.center = f.ring[n - 1]; break;                               // the centre on the ring
+                 }
+                 f.closed = pick(next, 2) == 0;
+                 const V x = pick(next, 2) == 0 ? f.ring[pick(next, n)] : 0.5 * (f.center + f.ring[pick(next, n)]);
+                 V s = pick(next, 4) == 0 ? f.center : ivec();
+                 if (dot(x - s, x - s) == 0) s = s + V{1, 2, 3};
+                 return shot_fan(s, ray ? x - s : s + 2.0 * (x - s), f);
+               }});
+  f.push_back({"watertight",
+               "a closed mesh's fan (a vertex's one-ring of the subdivided icosahedron or a height grid, or the two "
+               "triangles of an edge), sized 10^[-3,3], 10^k from the origin; the shot aimed exactly at the shared "
+               "vertex or at a point of the shared edge, from near or far",
+               range(0, 6), [ray](Next& next, int k) { return shot_fan_watertight(next, ray, k); }});
+  return f;
+}
 
 std::vector<Family> triangle_shot_family_list(bool ray) {
   std::vector<Family> f;

@@ -474,6 +474,11 @@ int score_command(std::vector<std::string> args) {
     std::cout << buf;
   }
   std::cout << "(wrong: false positives/false negatives of a classification)\n";
+  if (qi.mesh_level)
+    for (const auto& [k, cs] : stats)
+      if (all_cols[k].kind == 0)
+        std::cout << "leaks (the exact shot meets the fan, the answer hits none of its triangles): " << cs.fn
+                  << "; phantom hits: " << cs.fp << "\n";
   return bad ? 1 : 0;
 }
 

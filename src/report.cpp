@@ -78,7 +78,7 @@ std::map<int, std::uint64_t> by_power_of_two(const Histogram& h) {
 void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int worst_rows) {
   // per (query, implementation)
   struct Sum {
-    std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0;
+    std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0, fp = 0, fn = 0;
     std::uint64_t certified = 0, uncertain = 0, certain_wrong = 0;
     std::string max_where;
   };
@@ -88,6 +88,8 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     s.n += st.n;
     s.refused += st.refused;
     s.cls += st.cls_fp + st.cls_fn;
+    s.fp += st.cls_fp;
+    s.fn += st.cls_fn;
     s.pred += st.pred_fp + st.pred_fn;
     s.certified += st.certified;
     s.uncertain += st.uncertain;
@@ -131,6 +133,25 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
       std::snprintf(line, sizeof line, "%-20s %-17s %10llu %20s %16llu %16llu\n", key.first.c_str(),
                     key.second.c_str(), (unsigned long long)s.certified, unc.c_str(), (unsigned long long)s.cls,
                     (unsigned long long)s.certain_wrong);
+      o << line;
+    }
+  }
+
+  // the mesh-level queries: leaks and phantom hits
+  bool any_mesh = false;
+  for (const auto& [key, s] : sums) any_mesh = any_mesh || info(query_by_name(key.first)).mesh_level;
+  if (any_mesh) {
+    o << "\nWatertightness (a shot against a fan of triangles that share a vertex or an edge; a leak: the exact\n"
+         "shot meets the fan and the implementation hits none of its triangles; a phantom: the other way):\n\n";
+    std::snprintf(line, sizeof line, "%-20s %-17s %10s %16s %16s\n", "query", "impl", "cases", "leaks", "phantom hits");
+    o << line;
+    for (const auto& [key, s] : sums) {
+      if (!info(query_by_name(key.first)).mesh_level) continue;
+      const double graded = double(std::max<std::uint64_t>(1, s.n - s.refused));
+      const std::string leaks = std::to_string(s.fn) + " (" + num(100.0 * double(s.fn) / graded, "%.2g") + "%)";
+      const std::string ph = std::to_string(s.fp) + " (" + num(100.0 * double(s.fp) / graded, "%.2g") + "%)";
+      std::snprintf(line, sizeof line, "%-20s %-17s %10llu %16s %16s\n", key.first.c_str(), key.second.c_str(),
+                    (unsigned long long)(s.n - s.refused), leaks.c_str(), ph.c_str());
       o << line;
     }
   }

@@ -109,6 +109,7 @@ struct QueryInfo {
   const char* full_call;                  // the full query's call ("cast().hit", ...)
   const char* answer_help;                // what the answer columns mean (cdref cases --describe)
   std::vector<Family> families;
+  bool mesh_level = false;    // a shot against several triangles: a false negative is a leak
   bool book_is_truth = true;  // the book at an exact type is the truth (false: the book
                               // assumes what the inputs do not give, e.g. orthonormal axes)
   // Evaluations on double inputs, each converting them itself (precision 24: float, 53:

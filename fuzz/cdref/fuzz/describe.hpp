@@ -30,6 +30,10 @@ bool finish(const Proximity<S>& p, Mode m) {
 }
 inline bool finish(bool intersect, Mode) { return intersect; }
 template <class S>
+bool finish(const FanCast<S>& c, Mode m) {
+  return finish(static_cast<const Cast<S>&>(c.first), m);
+}
+template <class S>
 bool finish(const Separation<S>& s, Mode) {
   return s.intersect;
 }
@@ -177,6 +181,7 @@ QueryInfo describe() {
   qi.answer_help = Spec::answer_help;
   qi.families = Spec::families();
   qi.book_is_truth = Spec::book_is_truth;
+  if constexpr (requires { Spec::mesh_level; }) qi.mesh_level = Spec::mesh_level;
   qi.book = [](int precision, const Inputs& in) {
     if (precision == 24) return book_at<Spec, float, float>(in, true);
     if (precision == 64) return book_at<Spec, long double, long double>(in, true);

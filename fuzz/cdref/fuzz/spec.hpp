@@ -28,6 +28,7 @@
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/decision.hpp>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
@@ -108,6 +109,64 @@ inline std::vector<std::string> concat(std::vector<std::string> a, const std::ve
   return a;
 }
 
+// A fan of triangles around a shared vertex (the mesh-level queries): triangles
+// (center, ring[k], ring[k + 1]) for k < n - 1, and (center, ring[n - 1], ring[0]) when closed.
+// Its columns: n (2 to 8 ring vertices), closed (0 or 1, closed needs n >= 3), center, r0..r7.
+template <class T>
+struct Fan {
+  static constexpr int max_ring = 8;
+  Vec3<T> center = zero_vec<T>();
+  std::array<Vec3<T>, max_ring> ring{};
+  int n = 0;
+  bool closed = false;
+  int triangles() const { return closed ? n : n - 1; }
+  Triangle<T> triangle(int k) const { return {{center, ring[k], ring[(k + 1) % n]}}; }
+  template <class Fn>
+  bool any(Fn f) const {
+    for (int k = 0; k < triangles(); ++k)
+      if (f(triangle(k))) return true;
+    return false;
+  }
+};
+inline std::string shown(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+template <class T>
+Fan<T> fan(const Inputs& in, int k) {
+  const double n = in[k], closed = in[k + 1];
+  if (!(n >= 2 && n <= Fan<T>::max_ring && n == std::floor(n)))
+    throw invalid_input("fan n must be a whole number of ring vertices from 2 to 8 (" + shown(n) + ")");
+  if (!(closed == 0 || closed == 1)) throw invalid_input("fan closed must be 0 or 1 (" + shown(closed) + ")");
+  if (closed == 1 && n < 3) throw invalid_input("a closed fan needs at least 3 ring vertices (n = 2)");
+  Fan<T> f;
+  f.n = int(n);
+  f.closed = closed == 1;
+  f.center = col3<T>(in, k + 2);
+  for (int i = 0; i < f.n; ++i) f.ring[i] = col3<T>(in, k + 5 + 3 * i);
+  return f;
+}
+// The first hit over a fan (smallest lambda_enter; the first triangle on ties) and the number
+// of triangles hit.
+template <class S>
+struct FanCast {
+  TriangleCast<S> first;
+  int hits = 0;
+};
+template <class T, class Cast1>
+auto first_hit(const Fan<T>& f, Cast1 cast1) {
+  using C = decltype(cast1(f.triangle(0)));
+  FanCast<std::decay_t<decltype(std::declval<C>().lambda_enter)>> r;
+  for (int k = 0; k < f.triangles(); ++k) {
+    const C c = cast1(f.triangle(k));
+    if (!c.hit) continue;
+    ++r.hits;
+    if (!r.first.hit || c.lambda_enter < r.first.lambda_enter) r.first = c;
+  }
+  return r;
+}
+
 inline std::vector<Output> cast_outputs() {
   return {{"lambda_enter", 1, Output::on_hit},
           {"lambda_exit", 1, Output::on_hit},
@@ -174,6 +233,14 @@ void put(Answer& a, const TriangleCast<S>& c, bool values) {
   if (!values) return;
   a.v[8] = value<F>(c.u);
   a.v[9] = value<F>(c.v);
+}
+template <class F, class S>
+void put(Answer& a, const FanCast<S>& c, bool values) {
+  a.cls = c.first.hit;
+  if (!values) return;
+  a.v[0] = value<F>(c.first.lambda_enter);
+  for (int i = 0; i < 3; ++i) a.v[1 + i] = value<F>(c.first.point[i]);
+  a.v[4] = c.hits;
 }
 template <class F, class S>
 void put(Answer& a, const Proximity<S>& p, bool values) {
