@@ -294,7 +294,110 @@ Inputs shot_fan_uniform(Next& next, bool ray) {
   return shot_fan(s, ray ? unit(next) : uvec(next, -3, 3), f);
 }
 
+// ---- two triangles: a_v0, a_v1, a_v2, b_v0, b_v1, b_v2 ----
+Inputs tri_tri(V a0, V a1, V a2, V b0, V b1, V b2) {
+  Inputs in{};
+  put(in, 0, a0);
+  put(in, 3, a1);
+  put(in, 6, a2);
+  put(in, 9, b0);
+  put(in, 12, b1);
+  put(in, 15, b2);
+  return in;
+}
+Inputs tri_tri_uniform(Next& next) {
+  return tri_tri(uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2),
+                 uvec(next, -2, 2));
+}
+// B's tip at a point x of A (interior, an edge or a vertex: kind 0, 1, 2) moved rel * size
+// along A's normal (rel > 0: off A, on the side where B lies), B's other vertices on that side.
+Inputs tri_tri_touching(Next& next, double rel, V offset, int kind) {
+  V a, b, d;
+  const V n = random_triangle(next, offset, a, b, d);
+  V x;
+  if (kind == 0) {
+    double s1 = uni(next, 0.05, 0.9), s2 = uni(next, 0.05, 0.9);
+    if (s1 + s2 > 0.95) s1 *= 0.5, s2 *= 0.5;
+    x = a + s1 * (b - a) + s2 * (d - a);
+  } else if (kind == 1) {
+    x = a + uni(next, 0.05, 0.95) * (b - a);
+  } else {
+    x = a;
+  }
+  const double side = sign(next), size = std::sqrt(dot(b - a, b - a));
+  auto up = [&] { return x + (side * uni(next, 0.3, 2)) * n + uni(next, 0.5, 2) * unit(next); };
+  V y1 = up(), y2 = up();
+  // keep B's other vertices strictly on its side of A's plane
+  if (side * dot(y1 - x, n) < 0.1) y1 = y1 + (side * (0.1 - side * dot(y1 - x, n))) * n;
+  if (side * dot(y2 - x, n) < 0.1) y2 = y2 + (side * (0.1 - side * dot(y2 - x, n))) * n;
+  return tri_tri(a, b, d, x + (side * rel * size) * n, y1, y2);
+}
+// B nearly parallel to A (tilted 2^-k) and overlapping it in projection, at a height near 0.
+Inputs tri_tri_parallel(Next& next, int k) {
+  V a, b, d;
+  const V n = random_triangle(next, V{0, 0, 0}, a, b, d);
+  const V c = (1.0 / 3) * (a + b + d);
+  const V tilt = std::ldexp(1.0, -k) * perp(next, n);
+  auto lift = [&](V p) { return p + (dot(p - c, tilt) + uni(next, -1, 1) * std::ldexp(1.0, -k)) * n; };
+  const V off = uni(next, -1, 1) * (b - a) + uni(next, -1, 1) * (d - a);
+  return tri_tri(a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), lift(b + off + uvec(next, -0.5, 0.5)),
+                 lift(d + off + uvec(next, -0.5, 0.5)));
+}
+// Two triangles exactly in one plane (small integer vertices, points v0 + alpha e1 + beta e2
+// with alpha, beta multiples of 1/4).
+Inputs tri_tri_coplanar(Next& next) {
+  auto ivec = [&] { return V{double(pick(next, 17)) - 8, double(pick(next, 17)) - 8, double(pick(next, 17)) - 8}; };
+  V a, b, d, n;
+  do {
+    a = ivec(), b = ivec(), d = ivec();
+    n = cross(b - a, d - a);
+  } while (dot(n, n) == 0);
+  auto in_plane = [&] {
+    const double al = (double(pick(next, 13)) - 4) / 4, be = (double(pick(next, 13)) - 4) / 4;
+    return a + al * (b - a) + be * (d - a);
+  };
+  return tri_tri(a, b, d, in_plane(), in_plane(), in_plane());
+}
+
 }  // namespace
+
+std::vector<Family> triangle_triangle_family_list() {
+  std::vector<Family> f;
+  f.push_back({"uniform", "all six vertices in [-2,2]^3", {0}, [](Next& next, int) { return tri_tri_uniform(next); }});
+  f.push_back({"near-touching",
+               "B's tip 2^-k of A's size from A's face, an edge or a vertex (off it or through it), B's other "
+               "vertices on one side",
+               tangency_scales, [](Next& next, int k) {
+                 return tri_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
+               }});
+  f.push_back({"long-range", "touching to within 1e-9 of A's size, 10^k from the origin", decades,
+               [](Next& next, int k) {
+                 return tri_tri_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
+               }});
+  f.push_back({"near-parallel", "B tilted 2^-k from A's plane, within 2^-k of it, overlapping it in projection",
+               tangency_scales, [](Next& next, int k) { return tri_tri_parallel(next, k); }});
+  f.push_back({"coplanar", "two triangles exactly in one plane (integer vertices)", {0},
+               [](Next& next, int) { return tri_tri_coplanar(next); }});
+  f.push_back({"degenerate",
+               "zero-area triangles (collinear vertices, a point), triangles sharing a vertex or an edge, on the "
+               "integer lattice",
+               {0}, [](Next& next, int) {
+                 auto ivec = [&] {
+                   return V{double(pick(next, 7)) - 3, double(pick(next, 7)) - 3, double(pick(next, 7)) - 3};
+                 };
+                 const V a = ivec(), b = ivec(), c = ivec(), d = ivec(), e = ivec(), g = ivec();
+                 switch (pick(next, 5)) {
+                   case 0: return tri_tri(a, b, a + 0.5 * (b - a), d, e, g);      // A collinear
+                   case 1: return tri_tri(a, b, c, d, d, d);                      // B a point
+                   case 2: return tri_tri(a, b, c, a, e, g);                      // a shared vertex
+                   case 3: return tri_tri(a, b, c, b, a, g);                      // a shared edge
+                   default: return tri_tri(a, b, a + 2.0 * (b - a), d, e, d + 0.5 * (e - d));  // two segments
+                 }
+               }});
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+               [](Next& next, int k) { return scaled(tri_tri_uniform(next), 18, k); }});
+  return f;
+}
 
 std::vector<Family> fan_shot_family_list(bool ray) {
   std::vector<Family> f;

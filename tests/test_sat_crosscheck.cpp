@@ -19,7 +19,10 @@
 //                          point x, and decides the closed ball against rho^2;
 //   ray/segment-triangle   CGAL::do_intersect(Ray_3 | Segment_3, Triangle_3) decides, and
 //                          CGAL::intersection's point (or segment, for a shot in the plane)
-//                          is the book's entry point (and exit point).
+//                          is the book's entry point (and exit point);
+//   triangle-triangle      CGAL::do_intersect(Triangle_3, Triangle_3) (zero-area triangles as
+//                          their spans) decides, and CGAL::intersection's point or segment is
+//                          the book's [p, q] where the triangles are not coplanar.
 // cdref's answers are the book at Gmpq for the axis-aligned pairs (there it is the truth) and
 // the solid (cdref::solid, Theorem 3.1 on the true normals) at Gmpq for oriented boxes, on the
 // campaign's rounded rotations and on exactly orthonormal rational frames (from integer
@@ -33,6 +36,7 @@
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/intersections.h>
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
@@ -361,4 +365,57 @@ TEST_CASE("ray and segment casts on a triangle agree with CGAL's Ray_3 / Segment
   }
   CHECK(points > 2000);
   CHECK(segments > 20);
+}
+
+TEST_CASE("triangle-triangle agrees with CGAL's Triangle_3 pair (classification and segment) on every family",
+          "[triangle-triangle][cgal]") {
+  std::uint64_t points = 0, segments = 0, coplanar = 0;
+  const Tally t = over_families("triangle-triangle", 180, [&](const fuzz::Inputs& in) {
+    const Triangle<Q> a{{qv(in, 0), qv(in, 3), qv(in, 6)}}, b{{qv(in, 9), qv(in, 12), qv(in, 15)}};
+    const TriangleIntersection<Q> r = book::intersect(a, b);
+    const auto sa = degenerate_span(a), sb = degenerate_span(b);
+    auto seg = [](const Segment<Q>& s) { return K::Segment_3(pt(s.source), pt(s.target)); };
+    auto t3 = [](const Triangle<Q>& x) { return K::Triangle_3(pt(x.vertex[0]), pt(x.vertex[1]), pt(x.vertex[2])); };
+    bool cgal;
+    if (sa && sb) {
+      if (sa->source == sa->target)
+        cgal = sb->source == sb->target ? sa->source == sb->source : seg(*sb).has_on(pt(sa->source));
+      else if (sb->source == sb->target)
+        cgal = seg(*sa).has_on(pt(sb->source));
+      else
+        cgal = CGAL::do_intersect(seg(*sa), seg(*sb));
+    } else if (sa || sb) {
+      const Segment<Q>& s = sa ? *sa : *sb;
+      const K::Triangle_3 other = t3(sa ? b : a);
+      cgal = s.source == s.target ? other.has_on(pt(s.source)) : CGAL::do_intersect(seg(s), other);
+    } else {
+      cgal = CGAL::do_intersect(t3(a), t3(b));
+      if (cgal && r.intersect) {
+        if (r.coplanar) {
+          ++coplanar;
+        } else {
+          const auto x = CGAL::intersection(t3(a), t3(b));
+          REQUIRE(bool(x));
+          if (const P3* p = boost::get<P3>(&*x)) {
+            REQUIRE(*p == pt(r.p));
+            REQUIRE(r.p == r.q);
+            ++points;
+          } else {
+            const K::Segment_3* g = boost::get<K::Segment_3>(&*x);
+            REQUIRE(g);
+            REQUIRE(((g->source() == pt(r.p) && g->target() == pt(r.q)) ||
+                     (g->source() == pt(r.q) && g->target() == pt(r.p))));
+            ++segments;
+          }
+        }
+      }
+    }
+    return std::optional{std::pair{r.intersect, cgal}};
+  });
+  INFO("segments " << segments << ", points " << points << ", coplanar " << coplanar);
+  CHECK(t.n >= 10000);
+  CHECK(t.yes > 1000);
+  CHECK(t.no > 1000);
+  CHECK(segments > 1000);
+  CHECK(coplanar > 20);
 }

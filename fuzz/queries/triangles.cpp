@@ -4,9 +4,12 @@
 
 #include "groups.hpp"
 #include "sphere_triangle.hpp"
+#include "triangle_triangle.hpp"
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> triangle_queries() { return {spec::describe<queries::SphereTriangle>()}; }
+std::vector<QueryInfo> triangle_queries() {
+  return {spec::describe<queries::SphereTriangle>(), spec::describe<queries::TriangleTriangle>()};
+}
 
 }  // namespace cdref::fuzz

@@ -17,6 +17,7 @@
 #include "book/sphere_sphere.hpp"
 #include "book/sphere_triangle.hpp"
 #include "book/ray_triangle.hpp"
+#include "book/triangle_triangle.hpp"
 #include "book/triangle_box.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"

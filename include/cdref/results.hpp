@@ -57,6 +57,20 @@ struct TriangleCast : Cast<S> {
   S v = S(0);
 };
 
+// Two triangles (Section 3.4, book/triangle_triangle.hpp).
+//   intersect    they share a point (closed sets);
+//   coplanar     both lie in one plane (neither of zero area) and meet: the intersection is a
+//                convex polygon, and p = q = 0;
+//   p, q         otherwise, when they meet, the ends of the intersection segment (p = q at a
+//                single point), p first in lexicographic order of (x, y, z).
+template <class T>
+struct TriangleIntersection {
+  bool intersect = false;
+  bool coplanar = false;
+  Vec3<T> p = zero_vec<T>();
+  Vec3<T> q = zero_vec<T>();
+};
+
 // A proximity query on a pair (A, B).
 //   intersect    A and B share a point (closed sets);
 //   distance     max(min |a - b|, 0) over a in A, b in B;

@@ -30,6 +30,11 @@ bool finish(const Proximity<S>& p, Mode m) {
 }
 inline bool finish(bool intersect, Mode) { return intersect; }
 template <class S>
+bool finish(const TriangleIntersection<S>& r, Mode m) {
+  if (m == Mode::first_rounded) return r.intersect != (round_double(r.p[0]) > round_double(r.q[0]));  // never
+  return r.intersect;
+}
+template <class S>
 bool finish(const FanCast<S>& c, Mode m) {
   return finish(static_cast<const Cast<S>&>(c.first), m);
 }

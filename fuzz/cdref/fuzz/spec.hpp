@@ -242,6 +242,17 @@ void put(Answer& a, const FanCast<S>& c, bool values) {
   for (int i = 0; i < 3; ++i) a.v[1 + i] = value<F>(c.first.point[i]);
   a.v[4] = c.hits;
 }
+// two triangles: the classification; coplanar (a label), p and q
+template <class F, class S>
+void put(Answer& a, const TriangleIntersection<S>& r, bool values) {
+  a.cls = r.intersect;
+  if (!values) return;
+  a.v[0] = r.coplanar ? 1 : 0;
+  for (int i = 0; i < 3; ++i) {
+    a.v[1 + i] = value<F>(r.p[i]);
+    a.v[4 + i] = value<F>(r.q[i]);
+  }
+}
 template <class F, class S>
 void put(Answer& a, const Proximity<S>& p, bool values) {
   a.cls = p.intersect;
