@@ -79,7 +79,7 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   // hardest scale (2^-52 from tangency or touching, grazing edges and corners, or shots through
   // the shared vertices and edges of a mesh 10^6 from the origin)
   const Family* hp = nullptr;
-  for (const char* name : {"near-tangent", "near-touching", "grazing", "watertight"})
+  for (const char* name : {"near-tangent", "near-touching", "grazing", "watertight", "near-edge"})
     for (const Family& f : families(q))
       if (!hp && f.name == name) hp = &f;
   if (!hp) throw std::logic_error(std::string("no near-boundary family for ") + info(q).name);

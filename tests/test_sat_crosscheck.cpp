@@ -22,7 +22,9 @@
 //                          is the book's entry point (and exit point);
 //   triangle-triangle      CGAL::do_intersect(Triangle_3, Triangle_3) (zero-area triangles as
 //                          their spans) decides, and CGAL::intersection's point or segment is
-//                          the book's [p, q] where the triangles are not coplanar.
+//                          the book's [p, q] where the triangles are not coplanar;
+//   polygons               the union of CGAL's answers on the fan triangles (Ray_3, Segment_3,
+//                          Triangle_3, Iso_cuboid_3; squared_distance for the sphere).
 // cdref's answers are the book at Gmpq for the axis-aligned pairs (there it is the truth) and
 // the solid (cdref::solid, Theorem 3.1 on the true normals) at Gmpq for oriented boxes, on the
 // campaign's rounded rotations and on exactly orthonormal rational frames (from integer
@@ -418,4 +420,115 @@ TEST_CASE("triangle-triangle agrees with CGAL's Triangle_3 pair (classification 
   CHECK(t.no > 1000);
   CHECK(segments > 1000);
   CHECK(coplanar > 20);
+}
+
+TEST_CASE("polygon queries agree with CGAL on the fan triangles on every family", "[polygon][cgal]") {
+  // A polygon is the union of its fan triangles (v0, v_i, v_i+1): CGAL decides each triangle
+  // (Ray_3, Segment_3, Triangle_3 and Iso_cuboid_3 pairs; squared_distance for the sphere), a
+  // zero-area triangle as the segment or point it spans, and the polygon's answer is the union.
+  auto fan = [](const fuzz::Inputs& in, int k) {
+    std::vector<Triangle<Q>> out;
+    const int n = int(in[k]);
+    for (int i = 1; i + 1 < n; ++i) out.push_back({{qv(in, k + 1), qv(in, k + 1 + 3 * i), qv(in, k + 4 + 3 * i)}});
+    return out;
+  };
+  auto t3 = [](const Triangle<Q>& x) { return K::Triangle_3(pt(x.vertex[0]), pt(x.vertex[1]), pt(x.vertex[2])); };
+  auto seg3 = [](const Segment<Q>& s) { return K::Segment_3(pt(s.source), pt(s.target)); };
+  auto poly_of = [](const fuzz::Inputs& in, int k) {
+    Polygon<Q> p;
+    p.n = int(in[k]);
+    for (int i = 0; i < p.n; ++i) p.vertex[i] = qv(in, k + 1 + 3 * i);
+    return p;
+  };
+  for (const bool is_ray : {true, false}) {
+    const Tally t = over_families(is_ray ? "ray-polygon-cast" : "segment-polygon-cast", 230, [&](const fuzz::Inputs& in) {
+      const Vec3<Q> s = qv(in, 0), e = qv(in, 3);
+      if (is_ray && book::detail::is_zero(e)) return std::optional<std::pair<bool, bool>>{};
+      bool cgal = false;
+      for (const Triangle<Q>& tr : fan(in, 6)) {
+        const auto span = degenerate_span(tr);
+        if (!is_ray && s == e) {
+          cgal = cgal || (span ? (span->source == span->target ? s == span->source : seg3(*span).has_on(pt(s)))
+                               : t3(tr).has_on(pt(s)));
+          continue;
+        }
+        const K::Ray_3 r(pt(s), K::Vector_3(ft(e[0]), ft(e[1]), ft(e[2])));
+        const K::Segment_3 g(pt(s), pt(e));
+        if (span && span->source == span->target)
+          cgal = cgal || (is_ray ? r.has_on(pt(span->source)) : g.has_on(pt(span->source)));
+        else if (span)
+          cgal = cgal || (is_ray ? CGAL::do_intersect(r, seg3(*span)) : CGAL::do_intersect(g, seg3(*span)));
+        else
+          cgal = cgal || (is_ray ? CGAL::do_intersect(r, t3(tr)) : CGAL::do_intersect(g, t3(tr)));
+      }
+      const Polygon<Q> p = poly_of(in, 6);
+      const bool mine = is_ray ? book::cast(Ray<Q>{s, e}, p).hit : book::cast(Segment<Q>{s, e}, p).hit;
+      return std::optional{std::pair{mine, cgal}};
+    });
+    CHECK(t.n >= 10000);
+    CHECK(t.yes > 1000);
+    CHECK(t.no > 1000);
+  }
+  const Tally sph = over_families("polygon-sphere", 230, [&](const fuzz::Inputs& in) {
+    const Vec3<Q> c = qv(in, 25);
+    const Q rho(in[28]);
+    bool cgal = false;
+    for (const Triangle<Q>& tr : fan(in, 0)) {
+      FT d2;
+      if (const auto span = degenerate_span(tr))
+        d2 = span->source == span->target ? CGAL::squared_distance(pt(c), pt(span->source))
+                                          : CGAL::squared_distance(pt(c), seg3(*span));
+      else
+        d2 = CGAL::squared_distance(pt(c), t3(tr));
+      cgal = cgal || d2 <= ft(rho * rho);
+    }
+    return std::optional{std::pair{book::proximity(Sphere<Q>{c, rho}, poly_of(in, 0), want_all).intersect, cgal}};
+  });
+  const Tally box = over_families("polygon-box", 230, [&](const fuzz::Inputs& in) {
+    const Box<Q> b{qv(in, 25), qv(in, 28)};
+    bool cgal = false;
+    for (const Triangle<Q>& tr : fan(in, 0)) {
+      if (const auto span = degenerate_span(tr)) {
+        if (span->source == span->target) {
+          const Vec3<Q> x = span->source;
+          bool inside = true;
+          for (int i = 0; i < 3; ++i) inside = inside && x[i] >= b.center[i] - b.extent[i] && x[i] <= b.center[i] + b.extent[i];
+          cgal = cgal || inside;
+        } else {
+          cgal = cgal || CGAL::do_intersect(seg3(*span), cuboid(b));
+        }
+      } else {
+        cgal = cgal || CGAL::do_intersect(t3(tr), cuboid(b));
+      }
+    }
+    return std::optional{std::pair{book::intersect(poly_of(in, 0), b), cgal}};
+  });
+  const Tally pp = over_families("polygon-polygon", 230, [&](const fuzz::Inputs& in) {
+    bool cgal = false;
+    for (const Triangle<Q>& x : fan(in, 0))
+      for (const Triangle<Q>& y : fan(in, 25)) {
+        if (cgal) break;
+        const auto sx = degenerate_span(x), sy = degenerate_span(y);
+        if (sx && sy) {
+          if (sx->source == sx->target)
+            cgal = sy->source == sy->target ? sx->source == sy->source : seg3(*sy).has_on(pt(sx->source));
+          else if (sy->source == sy->target)
+            cgal = seg3(*sx).has_on(pt(sy->source));
+          else
+            cgal = CGAL::do_intersect(seg3(*sx), seg3(*sy));
+        } else if (sx || sy) {
+          const Segment<Q>& g = sx ? *sx : *sy;
+          const K::Triangle_3 o = t3(sx ? y : x);
+          cgal = g.source == g.target ? o.has_on(pt(g.source)) : CGAL::do_intersect(seg3(g), o);
+        } else {
+          cgal = CGAL::do_intersect(t3(x), t3(y));
+        }
+      }
+    return std::optional{std::pair{book::intersect(poly_of(in, 0), poly_of(in, 25)), cgal}};
+  });
+  for (const Tally& t : {sph, box, pp}) {
+    CHECK(t.n >= 10000);
+    CHECK(t.yes > 1000);
+    CHECK(t.no > 1000);
+  }
 }

@@ -11,6 +11,7 @@
 #include <cdref/robust/ray_triangle.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
+#include <cdref/robust/polygon.hpp>
 #include <cdref/robust/triangle_triangle.hpp>
 
 #include "prox_check.hpp"
@@ -456,4 +457,126 @@ TEMPLATE_TEST_CASE("robust triangle-triangle: exact classification and accurate 
   }
   INFO(certain << " of " << n << " certain");
   CHECK(certain * 2 > n);
+}
+
+// ---- polygons: the union of the fan triangles (v0, v_i, v_i+1) ----
+namespace {
+
+Polygon<double> poly(std::initializer_list<Vec3<double>> vs) {
+  Polygon<double> p;
+  for (const auto& v : vs) p.vertex[p.n++] = v;
+  return p;
+}
+template <class T>
+Polygon<T> poly_at(const Polygon<double>& p) {
+  Polygon<T> r;
+  r.n = p.n;
+  for (int k = 0; k < p.n; ++k) r.vertex[k] = v3<T>(p.vertex[k][0], p.vertex[k][1], p.vertex[k][2]);
+  return r;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("polygons (3.4) on hard cases: casts, spheres, boxes, polygons", "[polygon]", float, double,
+                   long double, CGAL::Gmpq, CGAL::Epeck::FT) {
+  using T = TestType;
+  // the square [0, 4]^2 in the plane z = 0, its fan's diagonal from (0,0) to (4,4)
+  const Polygon<T> sq = poly_at<T>(poly({P(0, 0, 0), P(4, 0, 0), P(4, 4, 0), P(0, 4, 0)}));
+  auto ray = [](double x, double y, double z, double dx, double dy, double dz) {
+    return Ray<T>{v3<T>(x, y, z), v3<T>(dx, dy, dz)};
+  };
+  auto is = [](const auto& v, const Expr& e) { return exact_equal(v, e); };
+  SECTION("casts") {
+    // through the fan's diagonal: both fan triangles are hit at the same lambda, the first wins
+    auto c = book::cast(ray(2, 2, 3, 0, 0, -1), sq);
+    REQUIRE(c.hit);
+    REQUIRE(is(c.lambda_enter, 3));
+    REQUIRE(is(c.normal[2], 1));
+    REQUIRE(book::hit(ray(2, 2, 3, 0, 0, -1), sq));
+    REQUIRE(book::cast(ray(1, 3, 3, 0, 0, -1), sq).hit);
+    REQUIRE_FALSE(book::cast(ray(5, 1, 3, 0, 0, -1), sq).hit);
+    REQUIRE_FALSE(book::hit(ray(5, 1, 3, 0, 0, -1), sq));
+    // in the plane, across the square: the interval is the union of the two triangles' intervals
+    c = book::cast(ray(-1, 1, 0, 1, 0, 0), sq);
+    REQUIRE(c.hit);
+    REQUIRE(is(c.lambda_enter, 1));
+    REQUIRE(is(c.lambda_exit, 5));
+    REQUIRE(is(c.normal[2], 0));
+    // a segment ending on the square's edge
+    const Segment<T> s{v3<T>(4, 2, 2), v3<T>(4, 2, 0)};
+    REQUIRE(book::cast(s, sq).hit);
+    REQUIRE(is(book::cast(s, sq).lambda_enter, 1));
+  }
+  SECTION("a sphere") {
+    const Sphere<T> touching{v3<T>(2, 1, 3), T(3)}, above{v3<T>(2, 1, 3), T(2)}, corner{v3<T>(5, 5, 0), T(1)};
+    auto p = book::proximity(touching, sq, want_all);
+    REQUIRE(p.intersect);
+    REQUIRE(is(p.distance, 0));
+    REQUIRE(is(p.on_b[0], 2));
+    REQUIRE(is(p.on_b[1], 1));
+    p = book::proximity(above, sq, want_all);
+    REQUIRE_FALSE(p.intersect);
+    REQUIRE(is(p.distance, 1));
+    // nearest the corner (4, 4): sqrt(2) - 1 away
+    p = book::proximity(corner, sq, want_all);
+    REQUIRE_FALSE(book::intersect(corner, sq));
+    REQUIRE(is(p.on_b[0], 4));
+    REQUIRE(is(p.on_b[1], 4));
+    if constexpr (is_exact_v<T>)
+      REQUIRE(to_expr(p.distance) == CGAL::sqrt(Expr(2)) - 1);
+    else
+      REQUIRE(ulps<T>(p.distance, CGAL::sqrt(Expr(2)) - 1) <= 2);
+  }
+  SECTION("a box") {
+    REQUIRE(book::intersect(sq, Box<T>{v3<T>(2, 2, 1), v3<T>(1, 1, 1)}));          // touching the face
+    REQUIRE_FALSE(book::intersect(sq, Box<T>{v3<T>(2, 2, 2), v3<T>(1, 1, 1)}));    // one unit above
+    REQUIRE(book::intersect(sq, Box<T>{v3<T>(5, 5, 0), v3<T>(1, 1, 1)}));          // at the corner (4, 4)
+  }
+  SECTION("polygons") {
+    const Polygon<T> wall = poly_at<T>(poly({P(2, -1, -1), P(2, 5, -1), P(2, 5, 1), P(2, -1, 1)}));
+    REQUIRE(book::intersect(sq, wall));
+    const Polygon<T> lifted = poly_at<T>(poly({P(0, 0, 1), P(4, 0, 1), P(4, 4, 1), P(0, 4, 1)}));
+    REQUIRE_FALSE(book::intersect(sq, lifted));
+    // coplanar, touching at the corner (4, 4) only
+    const Polygon<T> next = poly_at<T>(poly({P(4, 4, 0), P(6, 4, 0), P(6, 6, 0), P(4, 6, 0)}));
+    REQUIRE(book::intersect(sq, next));
+  }
+  SECTION("vertex lists that are not convex planar polygons: their fan") {
+    // a reflex vertex at (1, 1): the fan from (0, 0) covers (0,0)-(4,0)-(1,1) and (0,0)-(1,1)-(0,4),
+    // so the point (3, 3) is not in it, while (1, 0.5) is
+    const Polygon<T> dart = poly_at<T>(poly({P(0, 0, 0), P(4, 0, 0), P(1, 1, 0), P(0, 4, 0)}));
+    REQUIRE_FALSE(book::hit(ray(3, 3, 1, 0, 0, -1), dart));
+    REQUIRE(book::hit(ray(1, 0.5, 1, 0, 0, -1), dart));
+    // repeated and collinear vertices make zero-area fan triangles: the segments they span
+    const Polygon<T> rep = poly_at<T>(poly({P(0, 0, 0), P(4, 0, 0), P(4, 0, 0), P(2, 0, 0), P(0, 4, 0)}));
+    REQUIRE(book::hit(ray(1, 1, 1, 0, 0, -1), rep));
+    // a vertex off the plane: the fan is two triangles in two planes
+    const Polygon<T> bent = poly_at<T>(poly({P(0, 0, 0), P(4, 0, 0), P(4, 4, 0), P(0, 4, 4)}));
+    REQUIRE(book::hit(ray(1, 3, 5, 0, 0, -1), bent));
+    REQUIRE(is(book::cast(ray(1, 3, 5, 0, 0, -1), bent).lambda_enter, 3));  // the plane z = y - x, at (1, 3, 2)
+  }
+  SECTION("bad vertex counts are refused by name") {
+    Polygon<T> two = sq;
+    two.n = 2;
+    REQUIRE_THROWS_WITH(book::hit(ray(2, 2, 3, 0, 0, -1), two), "polygon has 2 vertices (3 to 8 are allowed)");
+  }
+}
+
+TEMPLATE_TEST_CASE("robust polygons: exact and certain on the hard cases", "[polygon][robust]", float, double,
+                   long double) {
+  using F = TestType;
+  const Polygon<F> sq = poly_at<F>(poly({P(0, 0, 0), P(4, 0, 0), P(4, 4, 0), P(0, 4, 0)}));
+  const Ray<F> diag{v3<F>(2, 2, 3), v3<F>(0, 0, -1)}, off{v3<F>(5, 1, 3), v3<F>(0, 0, -1)};
+  auto d = robust::decide(diag, sq);
+  REQUIRE((d.value && d.certain));
+  REQUIRE(robust::cast(diag, sq).hit);
+  d = robust::decide(off, sq);
+  REQUIRE((!d.value && d.certain));
+  d = robust::decide(Sphere<F>{v3<F>(2, 1, 3), F(3)}, sq);
+  REQUIRE((d.value && d.certain));
+  d = robust::decide(sq, Box<F>{v3<F>(2, 2, 2), v3<F>(1, 1, 1)});
+  REQUIRE((!d.value && d.certain));
+  const Polygon<F> wall = poly_at<F>(poly({P(2, -1, -1), P(2, 5, -1), P(2, 5, 1), P(2, -1, 1)}));
+  d = robust::decide(sq, wall);
+  REQUIRE((d.value && d.certain));
 }

@@ -14,5 +14,6 @@ std::vector<QueryInfo> sat_box_queries();  // fuzz/queries/sat_boxes.cpp
 std::vector<QueryInfo> obb_queries();      // fuzz/queries/sat_obbs.cpp
 std::vector<QueryInfo> triangle_queries(); // fuzz/queries/triangles.cpp
 std::vector<QueryInfo> triangle_cast_queries();  // fuzz/queries/triangle_casts.cpp
+std::vector<QueryInfo> polygon_queries();        // fuzz/queries/polygons.cpp
 
 }  // namespace cdref::fuzz

@@ -18,6 +18,7 @@
 #include "book/sphere_triangle.hpp"
 #include "book/ray_triangle.hpp"
 #include "book/triangle_triangle.hpp"
+#include "book/polygon.hpp"
 #include "book/triangle_box.hpp"
 #include "error.hpp"
 #include "number_traits.hpp"

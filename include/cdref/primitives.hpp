@@ -14,6 +14,8 @@
 //   Triangle<T>    vertices v0, v1, v2: the closed, two-sided triangle (edges and vertices
 //                  belong to it). A triangle of zero area is the segment or the point its
 //                  vertices span, and every query treats it as that set; it is not an error.
+//   Polygon<T>     3 to 8 vertices: the union of the fan triangles (v0, v_i, v_i+1), which for a
+//                  convex planar polygon is the polygon (closed, two-sided); see the struct.
 //   OrientedBox<T> centre c, extents h >= 0 and three axes a_0, a_1, a_2: the solid
 //                  {c + sum_i t_i h_i a_i : |t_i| <= 1}. Axes given as floats are orthonormal
 //                  only to rounding (the only exactly orthonormal matrices with dyadic entries
@@ -73,6 +75,20 @@ struct Ray {
 template <class T>
 struct Triangle {
   std::array<Vec3<T>, 3> vertex;
+};
+
+// A polygon of 3 to 8 vertices (Section 3.4): the union of the fan triangles
+// (v0, v_i, v_i+1), i = 1 .. n - 2. For a convex planar polygon (the chapter's) that is the
+// polygon, closed and two-sided. Any other vertex list (not planar, not convex, with repeated or
+// collinear vertices) is that fan: a well-defined set, the same at every number type, so no
+// vertex list is refused for its shape; only n outside 3..8 and non-finite coordinates are.
+template <class T>
+struct Polygon {
+  static constexpr int max_vertices = 8;
+  std::array<Vec3<T>, max_vertices> vertex{};
+  int n = 0;
+  int triangles() const { return n - 2; }
+  Triangle<T> triangle(int k) const { return {{vertex[0], vertex[k + 1], vertex[k + 2]}}; }
 };
 
 template <class T>
@@ -175,6 +191,15 @@ template <class T>
 void check(const Triangle<T>& t, const char* name = "triangle") {
   static const char* const field[3] = {"vertex 0", "vertex 1", "vertex 2"};
   for (int k = 0; k < 3; ++k) detail::check_finite(t.vertex[k], name, field[k]);
+}
+
+template <class T>
+void check(const Polygon<T>& p, const char* name = "polygon") {
+  if (p.n < 3 || p.n > Polygon<T>::max_vertices)
+    throw invalid_input(std::string(name) + " has " + std::to_string(p.n) + " vertices (3 to 8 are allowed)");
+  static const char* const field[8] = {"vertex 0", "vertex 1", "vertex 2", "vertex 3",
+                                       "vertex 4", "vertex 5", "vertex 6", "vertex 7"};
+  for (int k = 0; k < p.n; ++k) detail::check_finite(p.vertex[k], name, field[k]);
 }
 
 template <class T>

@@ -21,6 +21,11 @@ std::vector<Family> sphere_triangle_family_list();
 std::vector<Family> triangle_shot_family_list(bool ray);  // a segment (or a ray) and a triangle
 std::vector<Family> fan_shot_family_list(bool ray);       // a segment (or a ray) and a fan of triangles
 std::vector<Family> triangle_triangle_family_list();
+// fuzz/families_polygons.cpp
+std::vector<Family> polygon_shot_family_list(bool ray);  // a segment (or a ray) and a polygon
+std::vector<Family> polygon_polygon_family_list();
+std::vector<Family> polygon_box_family_list();
+std::vector<Family> polygon_sphere_family_list();
 // An axis-aligned family as one against an oriented box (see families_sat.cpp).
 std::vector<Family> rotated_family_list(std::vector<Family> base, std::vector<int> points, std::vector<int> vectors,
                                         std::vector<int> scalars, int center, int extent, int box_at);

@@ -1,0 +1,98 @@
+// cdref/robust/polygon.hpp - the robust polygon queries (Section 3.4) at float, double and long
+// double: the robust triangle queries over the polygon's fan (book/polygon.hpp says why the fan
+// is the polygon).
+//
+// Certificate: the union's. A triangle certainly hit (met) makes the polygon's answer certainly
+// yes; every triangle certainly missed makes it certainly no; otherwise the answer is the union
+// of the triangles' answers, uncertain. The casts keep the triangle casts' guarantee: they never
+// miss where the exact shot meets a triangle of the fan, so no ray leaks through a diagonal.
+// Values come from the triangle that gives them (the first hit, the nearest triangle), as that
+// triangle's robust query reports them.
+#pragma once
+
+#include <cdref/book/polygon.hpp>
+
+#include "ray_triangle.hpp"
+#include "separating_axes.hpp"
+#include "sphere_triangle.hpp"
+#include "triangle_triangle.hpp"
+
+namespace cdref::robust {
+
+namespace detail {
+
+// The union of the decisions of the fan's triangles (or pairs), stopping at a certain yes.
+template <class Each>
+Decision union_of(int count, Each each) {
+  Decision u{false, true};
+  for (int k = 0; k < count; ++k) {
+    const Decision d = each(k);
+    if (d.value && d.certain) return d;
+    u.value = u.value || d.value;
+    u.certain = u.certain && d.certain;
+  }
+  return u;
+}
+
+}  // namespace detail
+
+template <class F>
+Decision decide(const Segment<F>& s, const Polygon<F>& p) {
+  check(p);
+  return detail::union_of(p.triangles(), [&](int k) { return decide(s, p.triangle(k)); });
+}
+template <class F>
+Decision decide(const Ray<F>& r, const Polygon<F>& p) {
+  check(p);
+  return detail::union_of(p.triangles(), [&](int k) { return decide(r, p.triangle(k)); });
+}
+template <class F>
+Cast<F> cast(const Segment<F>& s, const Polygon<F>& p) {
+  check(p);
+  return book::detail::polygon_cast(p, [&](const Triangle<F>& t) { return cast(s, t); });
+}
+template <class F>
+Cast<F> cast(const Ray<F>& r, const Polygon<F>& p) {
+  check(p);
+  return book::detail::polygon_cast(p, [&](const Triangle<F>& t) { return cast(r, t); });
+}
+template <class F>
+bool hit(const Segment<F>& s, const Polygon<F>& p) { return decide(s, p).value; }
+template <class F>
+bool hit(const Ray<F>& r, const Polygon<F>& p) { return decide(r, p).value; }
+
+template <class F>
+Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
+  check(p);
+  return detail::union_of(p.triangles(), [&](int k) { return decide(s, p.triangle(k)); });
+}
+template <class F>
+Proximity<F> proximity(const Sphere<F>& s, const Polygon<F>& p, unsigned w = want_proximity) {
+  check(s, "sphere");
+  check(p);
+  Proximity<F> r = proximity(s, p.triangle(book::detail::nearest_triangle(p, s.center)), w);
+  r.intersect = decide(s, p).value;  // the union's classification, as decide() gives it
+  return r;
+}
+template <class F>
+bool intersect(const Sphere<F>& s, const Polygon<F>& p) { return decide(s, p).value; }
+
+template <class F>
+Decision decide(const Polygon<F>& p, const Box<F>& b) {
+  check(p);
+  return detail::union_of(p.triangles(), [&](int k) { return decide(p.triangle(k), b); });
+}
+template <class F>
+bool intersect(const Polygon<F>& p, const Box<F>& b) { return decide(p, b).value; }
+
+template <class F>
+Decision decide(const Polygon<F>& a, const Polygon<F>& b) {
+  check(a, "polygon A");
+  check(b, "polygon B");
+  const int nb = b.triangles();
+  return detail::union_of(a.triangles() * nb, [&](int k) { return decide(a.triangle(k / nb), b.triangle(k % nb)); });
+}
+template <class F>
+bool intersect(const Polygon<F>& a, const Polygon<F>& b) { return decide(a, b).value; }
+
+}  // namespace cdref::robust

@@ -1,0 +1,134 @@
+// cdref/book/polygon.hpp - Section 3.4: convex planar polygons against rays, segments, spheres,
+// boxes and polygons.
+//
+// A polygon (primitives.hpp) is the union of its fan triangles (v0, v_i, v_i+1); a convex planar
+// polygon is exactly that union, and so every query here is its triangle query taken over the
+// fan: exact at an exact type whatever the vertex list, and for the chapter's polygons the
+// polygon's own answer.
+//   cast(shot, polygon)       the fan triangles' casts: hit if any hits; lambda_enter the smallest
+//                             over the hits (point and normal from that triangle, the first on
+//                             ties), lambda_exit the largest (for a convex planar polygon the hit
+//                             parameters form one interval: a shot in its plane enters at one edge
+//                             and leaves at another); hit() by the triangles' division-free tests.
+//   proximity(sphere, polygon) the closest point of the polygon is the closest of the fan
+//                             triangles' closest points (|x - c|^2 compared exactly at exact
+//                             types; the first triangle on ties), and the query is the sphere-
+//                             triangle query on that triangle (book/sphere_triangle.hpp).
+//   intersect(polygon, box)   the separating-axis test of triangle-box (Akenine-Moller's 13 axes)
+//                             on each fan triangle: for a convex planar polygon with normal n
+//                             this is Theorem 3.1 with n, the box's faces and the polygon's edges
+//                             crossed with the box's, taken triangle by triangle (an axis that
+//                             separates the polygon separates each triangle, and a box that meets
+//                             a triangle meets the polygon).
+//   intersect(polygon, polygon) any pair of fan triangles meets (book/triangle_triangle.hpp).
+// A fan of n vertices has n - 2 triangles, so a query costs up to 6 (36 for two polygons)
+// triangle queries; repeated or collinear vertices make zero-area triangles, which are the
+// segments they span.
+#pragma once
+
+#include "common.hpp"
+#include "ray_triangle.hpp"
+#include "sphere_triangle.hpp"
+#include "triangle_box.hpp"
+#include "triangle_triangle.hpp"
+
+namespace cdref::book {
+
+namespace detail {
+
+// The fan's first hit (smallest lambda_enter, first on ties) with the largest lambda_exit.
+template <class Cast1, class T>
+auto polygon_cast(const Polygon<T>& p, Cast1 cast1) {
+  using C = decltype(cast1(p.triangle(0)));
+  Cast<std::decay_t<decltype(std::declval<C>().lambda_enter)>> r;
+  for (int k = 0; k < p.triangles(); ++k) {
+    const C c = cast1(p.triangle(k));
+    if (!c.hit) continue;
+    if (!r.hit) {
+      r = c;
+      continue;
+    }
+    const auto exit = max_of(r.lambda_exit, c.lambda_exit);
+    if (c.lambda_enter < r.lambda_enter) r = c;
+    r.lambda_exit = exit;
+  }
+  return r;
+}
+
+// The index of the fan triangle whose closest point to c is nearest (the first on ties).
+template <class T>
+int nearest_triangle(const Polygon<T>& p, const Vec3<T>& c) {
+  int best = 0;
+  T best_d(0);
+  for (int k = 0; k < p.triangles(); ++k) {
+    const Vec3<T> x = closest_on_triangle(p.triangle(k), c);
+    const T d = Vec3<T>(x - c).squaredNorm();
+    if (k == 0 || d < best_d) best = k, best_d = d;
+  }
+  return best;
+}
+
+}  // namespace detail
+
+template <class T>
+Cast<sqrt_t<T>> cast(const Segment<T>& s, const Polygon<T>& p, unsigned w = want_all) {
+  check(s, "segment");
+  check(p);
+  return detail::polygon_cast(p, [&](const Triangle<T>& t) { return cast(s, t, w | want_lambda_enter | want_lambda_exit); });
+}
+template <class T>
+Cast<sqrt_t<T>> cast(const Ray<T>& r, const Polygon<T>& p, unsigned w = want_all) {
+  check(r, "ray");
+  check(p);
+  return detail::polygon_cast(p, [&](const Triangle<T>& t) { return cast(r, t, w | want_lambda_enter | want_lambda_exit); });
+}
+template <class T>
+bool hit(const Segment<T>& s, const Polygon<T>& p) {
+  check(p);
+  for (int k = 0; k < p.triangles(); ++k)
+    if (hit(s, p.triangle(k))) return true;
+  return false;
+}
+template <class T>
+bool hit(const Ray<T>& r, const Polygon<T>& p) {
+  check(p);
+  for (int k = 0; k < p.triangles(); ++k)
+    if (hit(r, p.triangle(k))) return true;
+  return false;
+}
+
+template <class T>
+Proximity<sqrt_t<T>> proximity(const Sphere<T>& s, const Polygon<T>& p, unsigned w = want_proximity) {
+  check(s, "sphere");
+  check(p);
+  return proximity(s, p.triangle(detail::nearest_triangle(p, s.center)), w);
+}
+template <class T>
+bool intersect(const Sphere<T>& s, const Polygon<T>& p) {
+  check(s, "sphere");
+  check(p);
+  for (int k = 0; k < p.triangles(); ++k)
+    if (intersect(s, p.triangle(k))) return true;
+  return false;
+}
+
+template <class T>
+bool intersect(const Polygon<T>& p, const Box<T>& b) {
+  check(p);
+  check(b, "box");
+  for (int k = 0; k < p.triangles(); ++k)
+    if (intersect(p.triangle(k), b)) return true;
+  return false;
+}
+
+template <class T>
+bool intersect(const Polygon<T>& a, const Polygon<T>& b) {
+  check(a, "polygon A");
+  check(b, "polygon B");
+  for (int i = 0; i < a.triangles(); ++i)
+    for (int j = 0; j < b.triangles(); ++j)
+      if (detail::intersect_triangles(a.triangle(i), b.triangle(j), T(0)).intersect) return true;
+  return false;
+}
+
+}  // namespace cdref::book
