@@ -49,7 +49,7 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
     if (!qi.oracle_stage) continue;  // queries whose oracle has no separate stages
     for (const Family& f : families(q))
       for (int k : f.scales)
-        for (std::uint64_t i = 0; i < 200; ++i) {
+        for (std::uint64_t i = 0; i < 120; ++i) {
           const Inputs in = make_case(11, q, f, k, i);
           const Answer t = truth(q, in, 53);
           INFO(qi.name << " " << f.name << "/" << k << " case " << i);
