@@ -130,19 +130,28 @@ Inputs shot_tri_grazing(Next& next, bool ray, int k) {
   const V dir = along + (sign(next) * std::ldexp(1.0, -k)) * n;
   return aimed(next, ray, x - uni(next, 1, 4) * dir, x, a, b, d);
 }
-// A triangle with small integer coordinates and a shot exactly in its plane (points
-// v0 + alpha e1 + beta e2 with alpha, beta multiples of 1/4: exact in double).
-Inputs shot_tri_coplanar(Next& next, bool ray) {
-  auto ivec = [&] { return V{double(pick(next, 17)) - 8, double(pick(next, 17)) - 8, double(pick(next, 17)) - 8}; };
-  V a, b, d, n;
-  do {
-    a = ivec(), b = ivec(), d = ivec();
-    n = cross(b - a, d - a);
-  } while (dot(n, n) == 0);
-  auto in_plane = [&] {
-    const double al = (double(pick(next, 17)) - 6) / 4, be = (double(pick(next, 17)) - 6) / 4;
+// A triangle with small integer coordinates (in [-8, 8], of nonzero area), and points exactly in
+// its plane: v0 + alpha e1 + beta e2 with alpha, beta = (j - low) / 4, j < count (exact in double).
+struct LatticePlane {
+  V a, b, d;
+  explicit LatticePlane(Next& next) {
+    auto ivec = [&] { return V{double(pick(next, 17)) - 8, double(pick(next, 17)) - 8, double(pick(next, 17)) - 8}; };
+    V n;
+    do {
+      a = ivec(), b = ivec(), d = ivec();
+      n = cross(b - a, d - a);
+    } while (dot(n, n) == 0);
+  }
+  V point(Next& next, int count, int low) const {
+    const double al = (double(pick(next, count)) - low) / 4, be = (double(pick(next, count)) - low) / 4;
     return a + al * (b - a) + be * (d - a);
-  };
+  }
+};
+// A shot exactly in the plane of a lattice triangle.
+Inputs shot_tri_coplanar(Next& next, bool ray) {
+  const LatticePlane pl(next);
+  const V a = pl.a, b = pl.b, d = pl.d;
+  auto in_plane = [&] { return pl.point(next, 17, 6); };
   const V s = in_plane();
   V t = in_plane();
   if (ray && dot(t - s, t - s) == 0) t = s + (b - a);
@@ -343,20 +352,11 @@ Inputs tri_tri_parallel(Next& next, int k) {
   return tri_tri(a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), lift(b + off + uvec(next, -0.5, 0.5)),
                  lift(d + off + uvec(next, -0.5, 0.5)));
 }
-// Two triangles exactly in one plane (small integer vertices, points v0 + alpha e1 + beta e2
-// with alpha, beta multiples of 1/4).
+// Two triangles exactly in one plane: a lattice triangle and one of points in its plane.
 Inputs tri_tri_coplanar(Next& next) {
-  auto ivec = [&] { return V{double(pick(next, 17)) - 8, double(pick(next, 17)) - 8, double(pick(next, 17)) - 8}; };
-  V a, b, d, n;
-  do {
-    a = ivec(), b = ivec(), d = ivec();
-    n = cross(b - a, d - a);
-  } while (dot(n, n) == 0);
-  auto in_plane = [&] {
-    const double al = (double(pick(next, 13)) - 4) / 4, be = (double(pick(next, 13)) - 4) / 4;
-    return a + al * (b - a) + be * (d - a);
-  };
-  return tri_tri(a, b, d, in_plane(), in_plane(), in_plane());
+  const LatticePlane pl(next);
+  auto in_plane = [&] { return pl.point(next, 13, 4); };
+  return tri_tri(pl.a, pl.b, pl.d, in_plane(), in_plane(), in_plane());
 }
 
 }  // namespace
