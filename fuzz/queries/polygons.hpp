@@ -25,12 +25,13 @@ inline std::vector<std::string> polygon_cols(const std::string& prefix) {
   return out;
 }
 template <class T>
-Polygon<T> polygon(const Inputs& in, int k) {
+Polygon<T> polygon(const Inputs& in, int k, const std::string& prefix = "") {
   const double n = in[k];
   if (!(n >= 3 && n <= Polygon<T>::max_vertices && n == std::floor(n)))
     throw invalid_input("polygon n must be a whole number of vertices from 3 to 8 (" + shown(n) + ")");
   Polygon<T> p;
   p.n = int(n);
+  unused_finite(in, k + 1 + 3 * p.n, k + 1 + 3 * Polygon<T>::max_vertices, k + 1 + 3 * p.n, "p", p.n, prefix);
   for (int i = 0; i < p.n; ++i) p.vertex[i] = col3<T>(in, k + 1 + 3 * i);
   return p;
 }
@@ -112,7 +113,7 @@ struct PolygonPolygon {
   static std::vector<Family> families() { return polygon_polygon_family_list(); }
   template <class T>
   static std::pair<Polygon<T>, Polygon<T>> make(const Inputs& in) {
-    return {spec::polygon<T>(in, 0), spec::polygon<T>(in, 25)};
+    return {spec::polygon<T>(in, 0, "a_"), spec::polygon<T>(in, 25, "b_")};
   }
   template <class T>
   static bool book(const Polygon<T>& a, const Polygon<T>& b, unsigned) { return cdref::book::intersect(a, b); }

@@ -133,6 +133,17 @@ inline std::string shown(double x) {
   std::snprintf(b, sizeof b, "%.17g", x);
   return b;
 }
+// Columns a vertex list does not use (beyond its n) must still be finite, as every column of a
+// case is: a NaN there is refused by its name (`r6_y is not finite (nan)`), at every type.
+inline void unused_finite(const Inputs& in, int from, int to, int first_col, const std::string& name, int first_vertex,
+                          const std::string& prefix = "") {
+  for (int c = from; c < to; ++c)
+    if (!std::isfinite(in[c])) {
+      const int rel = c - first_col;
+      throw invalid_input(prefix + name + std::to_string(first_vertex + rel / 3) + "_" + "xyz"[rel % 3] +
+                          " is not finite (" + (std::isnan(in[c]) ? "nan" : (in[c] > 0 ? "inf" : "-inf")) + ")");
+    }
+}
 template <class T>
 Fan<T> fan(const Inputs& in, int k) {
   const double n = in[k], closed = in[k + 1];
@@ -143,6 +154,7 @@ Fan<T> fan(const Inputs& in, int k) {
   Fan<T> f;
   f.n = int(n);
   f.closed = closed == 1;
+  unused_finite(in, k + 5 + 3 * f.n, k + 5 + 3 * Fan<T>::max_ring, k + 5 + 3 * f.n, "r", f.n);
   f.center = col3<T>(in, k + 2);
   for (int i = 0; i < f.n; ++i) f.ring[i] = col3<T>(in, k + 5 + 3 * i);
   return f;
