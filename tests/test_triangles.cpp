@@ -174,6 +174,16 @@ std::vector<TriCast> triangle_cast_cases() {
       tri(P(1, 1, 1), P(1, 1, 1), P(1, 1, 1)));
   seg("a point triangle beyond the segment", {0, 0, 0}, {1, 1, 1}, false, false, 0, 0, z, 0, 0,
       tri(P(2, 2, 2), P(2, 2, 2), P(2, 2, 2)));
+  // long range: the triangle and the ray 2^27 (about 1.3e8) from the origin, the ray 2^-20 outside
+  // the hypotenuse and 2^-20 inside it (exact in double, not in float: not run at float)
+  {
+    const double o = std::ldexp(1.0, 27);
+    const Triangle<double> far = tri(P(o, o, 0), P(o + 4, o, 0), P(o, o + 4, 0));
+    ray("2^-20 past the hypotenuse, 2^27 from the origin", {o + 2, o + 2 + e20, 1}, {0, 0, -1}, false, false, 0, 0,
+        z, 0, 0, far);
+    ray("2^-20 inside the hypotenuse, 2^27 from the origin", {o + 2, o + 2 - e20, 1}, {0, 0, -1}, true, true, 1, 1,
+        up, Q(1, 2), Q(1, 2) - Q(e20) / 4, far);
+  }
   // magnitudes: the face case scaled by 2^500 and 2^-500 (exact in double). Moller-Trumbore's
   // det is of degree 3 in the coordinates: at 2^500 it overflows double (2^1500) and the book
   // reports a miss, while hit()'s triple products overflow to infinities of the right signs and
@@ -192,12 +202,18 @@ std::vector<TriCast> triangle_cast_cases() {
   return v;
 }
 
-// Inputs that T rounds to zero (2^-500 at float) make another case: not run at T.
+// Inputs that T rounds to zero (2^-500 at float), or rounds at all where they are finite in it
+// (2^27 + 2 at float), make another case: not run at T.
 template <class T>
 bool flushed(const TriCast& tc) {
-  auto gone = [](double x) { return x != 0 && from_double<T>(x) == T(0); };
+  auto gone = [](double x) {
+    const T y = from_double<T>(x);
+    return (x != 0 && y == T(0)) || (number_traits<T>::is_finite(y) && exact_q(y) != Q(x));
+  };
   for (int i = 0; i < 3; ++i)
-    if (gone(tc.c.s[i]) || gone(tc.c.t[i]) || gone(tc.t.vertex[1][i]) || gone(tc.t.vertex[2][i])) return true;
+    if (gone(tc.c.s[i]) || gone(tc.c.t[i]) || gone(tc.t.vertex[0][i]) || gone(tc.t.vertex[1][i]) ||
+        gone(tc.t.vertex[2][i]))
+      return true;
   return false;
 }
 
@@ -368,6 +384,13 @@ std::vector<TriTri> triangle_triangle_cases() {
   meet("two segment triangles crossing", tri(P(0, 0, 0), P(2, 2, 0), P(1, 1, 0)),
        tri(P(0, 2, 0), P(2, 0, 0), P(1, 1, 0)), x3(1, 1, 0), x3(1, 1, 0));
   apart("two skew segment triangles", tri(P(0, 0, 0), P(2, 2, 0), P(1, 1, 0)), tri(P(0, 2, 1), P(2, 0, 1), P(1, 1, 1)));
+  // nearly parallel: B in the plane z = 2^-20 x, crossing A's plane along the y-axis, where A has
+  // its edge from (0, 0) to (0, 4): they meet along [0, 3] of it
+  meet("nearly parallel (2^-20), meeting along A's edge", t,
+       tri(P(-4, -1, -4 * e20), P(4, -1, 4 * e20), P(0, 3, 0)), x3(0, 0, 0), x3(0, 3, 0));
+  apart("nearly parallel (2^-20), lifted 2^-40 off A's edge", t,
+        tri(P(-4, -1, -4 * e20 + std::ldexp(1.0, -40)), P(4, -1, 4 * e20 + std::ldexp(1.0, -40)),
+            P(0, 3, std::ldexp(1.0, -40))));
   // magnitudes: the first case scaled by 2^300 and 2^-300 (exact in double). The cut points are
   // ordered by their projections on D = nA x nB, of degree 4, so D . x is of degree 5: 2^1500
   // overflows double and 2^-1500 underflows to 0. The plane tests (degree 3) still hold and the
