@@ -1,8 +1,10 @@
 // cdref/robust/ray_triangle.hpp - the robust ray and segment casts on a triangle (Section 3.4)
 // at float, double and long double: watertight, with a certificate.
 //
-// Formulation: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection" (JCGT 2013), the
-// test pbrt-v4 ships. With the vertices moved to the source (P_k = v_k - s), the axes permuted so
+// Two pieces: the classification (below, "Classification and certificate": exact where the
+// double words decide, never a false miss where they do not), and the values where the double
+// words cannot give them, from Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection"
+// (JCGT 2013), the test pbrt-v4 ships, run in F (watertight() below). With the vertices moved to the source (P_k = v_k - s), the axes permuted so
 // that z is the direction's largest coordinate (kz), and the shear Sx = -d_x/d_z, Sy = -d_y/d_z
 // applied (p_k = (P_kx + Sx P_kz, P_ky + Sy P_kz)), the ray is the origin of the sheared plane
 // looking down z, and the edge functions
