@@ -12,9 +12,12 @@
 //                differences of inputs; evaluated in double each monomial carries at most 7
 //                roundings (two differences, two products, a difference in the cross product,
 //                two sums in the dot product), so |computed - exact| <= gamma_7 P, P the same
-//                expression on absolute values; the filter takes 10u (1 + 16u) P~ + 64 * 2^-1074
-//                (P~ computed in double: at most 7 more roundings upward of P; the last term
-//                covers underflow). It decides a miss when two w_k have opposite certain signs,
+//                expression on absolute values; the filter takes 10u (1 + 16u) P~ (P~ computed in
+//                double: at most 7 more roundings upward of P) plus 64 * 2^-1074 (1 + |a|_1) for
+//                underflow: a rounding that underflows errs by up to 2^-1075 absolute, and one
+//                inside the cross product b x c is then multiplied by a's coordinate (found by the
+//                fuzz target: a subnormal product scaled by 2^1009). It decides a miss when two
+//                w_k have opposite certain signs,
 //                and a hit or a miss when all three w_k have the same certain sign and Ns (and
 //                Nt) certainly have theirs. A non-finite value leaves the case to stage 2.
 //   2. double word  the book's hit() run on double words (robust/words.hpp), certain when every
@@ -45,7 +48,10 @@ inline int triple_sign(const double (&a)[3], const double (&b)[3], const double 
   const double p1 = std::fabs(b[2] * c[0]) + std::fabs(b[0] * c[2]);
   const double p2 = std::fabs(b[0] * c[1]) + std::fabs(b[1] * c[0]);
   const double P = std::fabs(a[0]) * p0 + std::fabs(a[1]) * p1 + std::fabs(a[2]) * p2;
-  const double e = 10 * u_ * grow * P + eta;
+  // a rounding that underflows errs by at most 2^-1075 absolute; in a cross product component
+  // that error is then multiplied by a's coordinate, so it enters scaled by |a|
+  const double sa = std::fabs(a[0]) + std::fabs(a[1]) + std::fabs(a[2]);
+  const double e = 10 * u_ * grow * P + eta * (1 + sa);
   if (!std::isfinite(v) || !std::isfinite(e)) finite = false;
   return v > e ? 1 : v < -e ? -1 : 0;
 }
