@@ -134,11 +134,8 @@ TriangleCast<sqrt_t<T>> cast_flat(const Vec3<T>& s, const Vec3<T>& d, const Tria
   const Vec3<T> e1 = tri.vertex[1] - v0, e2 = tri.vertex[2] - v0;
   const Vec3<T> n = e1.cross(e2);
   if (is_zero(n)) {
-    int iP = 0, iQ = 1;
-    T far = e1.squaredNorm();
-    const T dac = e2.squaredNorm(), dbc = Vec3<T>(tri.vertex[2] - tri.vertex[1]).squaredNorm();
-    if (far < dac) iP = 0, iQ = 2, far = dac;
-    if (far < dbc) iP = 1, iQ = 2;
+    int iP, iQ;
+    farthest_pair(tri, iP, iQ);
     return cast_on_segment(s, d, bounded, tri.vertex[iP], tri.vertex[iQ], iP, iQ, w);
   }
   if (Vec3<T>(s - v0).dot(n) != T(0)) return r;  // parallel to the plane, off it

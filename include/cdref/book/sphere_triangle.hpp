@@ -40,6 +40,17 @@ namespace cdref::book {
 
 namespace detail {
 
+// The two vertices of a triangle farthest apart (i < j; the first pair of 01, 02, 12 on ties):
+// a zero-area triangle is the segment between them, or the point.
+template <class T>
+void farthest_pair(const Triangle<T>& t, int& i, int& j) {
+  i = 0, j = 1;
+  T far = Vec3<T>(t.vertex[1] - t.vertex[0]).squaredNorm();
+  const T d02 = Vec3<T>(t.vertex[2] - t.vertex[0]).squaredNorm(), d12 = Vec3<T>(t.vertex[2] - t.vertex[1]).squaredNorm();
+  if (far < d02) i = 0, j = 2, far = d02;
+  if (far < d12) i = 1, j = 2;
+}
+
 // The point of the triangle closest to p, and for a zero-area triangle whether it is one.
 template <class T>
 Vec3<T> closest_on_triangle(const Triangle<T>& tri, const Vec3<T>& p, Vec3<T>* degenerate_direction = nullptr) {
@@ -49,13 +60,12 @@ Vec3<T> closest_on_triangle(const Triangle<T>& tri, const Vec3<T>& p, Vec3<T>* d
   const Vec3<T> ab = b - a, ac = c - a;
   if (is_zero(Vec3<T>(ab.cross(ac)))) {
     // the segment between the two farthest vertices (or the point)
-    const Vec3<T>* s = &a;
-    const Vec3<T>* t = &b;
-    T far = ab.squaredNorm();
-    const T dac = ac.squaredNorm(), dbc = Vec3<T>(c - b).squaredNorm();
-    if (far < dac) s = &a, t = &c, far = dac;
-    if (far < dbc) s = &b, t = &c, far = dbc;
+    int i, j;
+    farthest_pair(tri, i, j);
+    const Vec3<T>* s = &tri.vertex[i];
+    const Vec3<T>* t = &tri.vertex[j];
     const Vec3<T> r = *t - *s;
+    const T far = r.squaredNorm();
     if (degenerate_direction) *degenerate_direction = r;
     const T delta = -Vec3<T>(*s - p).dot(r);
     if (delta <= T(0)) return *s;

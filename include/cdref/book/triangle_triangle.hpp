@@ -69,11 +69,8 @@ T rational_of(const S& x) {
 // The segment (or point) a zero-area triangle spans.
 template <class T>
 Segment<T> span_of(const Triangle<T>& t) {
-  int i = 0, j = 1;
-  T far = Vec3<T>(t.vertex[1] - t.vertex[0]).squaredNorm();
-  const T d02 = Vec3<T>(t.vertex[2] - t.vertex[0]).squaredNorm(), d12 = Vec3<T>(t.vertex[2] - t.vertex[1]).squaredNorm();
-  if (far < d02) i = 0, j = 2, far = d02;
-  if (far < d12) i = 1, j = 2;
+  int i, j;
+  farthest_pair(t, i, j);
   return {t.vertex[i], t.vertex[j]};
 }
 
