@@ -21,6 +21,7 @@
 
 #include "casefiles.hpp"
 #include "report.hpp"
+#include "scene/scene.hpp"
 
 int run_demo();
 
@@ -70,6 +71,14 @@ const char* usage = R"(usage:
                                  drift against scale as SVG (gnuplot): misclassified share
                                  and p99/max ulps of output O, book-float and book-double
   cdref demo                     the chapter's algorithms beside the exact answer on hard cases
+  cdref scene [FILE] [--precision float|double|exact]... [--compare A,B]... [--json F] [--svg F]
+              [--quiet]
+                                 run a scene (JSON, see docs/scenes.md; no FILE: the built-in
+                                 default, scenes/default.json) evaluating only the queries its
+                                 effects name, and print its event log; --compare float,exact
+                                 runs both and prints the events they disagree on and the
+                                 differences of the continuous outputs (default: float,exact
+                                 and double,exact); --svg draws the top view with the events
 )";
 
 struct Args {
@@ -288,6 +297,7 @@ int main(int argc, char* argv[]) {
     if (cmd == "score") return cli::score_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "plot") return cli::plot_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "report") return cli::report_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "scene") return scene::scene_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << usage;
       return 0;

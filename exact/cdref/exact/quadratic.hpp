@@ -76,6 +76,22 @@ class Quad {
   Quad& operator*=(const Quad& y) { return *this = *this * y; }
   Quad& operator/=(const Quad& y) { return *this = *this / y; }
 
+  // The exact sign of x - y for values of any two quadratic fields (x = a + b sqrt p,
+  // y = c + e sqrt q with p != q): with X = (a - c) + b sqrt p and Y = -e sqrt q, when X and
+  // Y differ in sign the larger magnitude wins, and X^2 - Y^2 = ((a - c)^2 + b^2 p - e^2 q)
+  // + 2 (a - c) b sqrt p is again a value of one field. Used where values of several
+  // fields meet (the first of several hits, the deepest of several contacts).
+  friend int compare_fields(const Quad& x, const Quad& y) {
+    if (x.is_rational() || y.is_rational() || x.d_ == y.d_) return (x - y).sign();
+    const T A = x.a_ - y.a_;
+    const int sx = sign_of(A, x.b_, x.d_);
+    const int sy = -sgn(y.b_);
+    if (sx == 0) return sy;
+    if (sy == 0 || sx == sy) return sx;
+    const int z = sign_of(T(A * A + x.b_ * x.b_ * x.d_ - y.b_ * y.b_ * y.d_), T(T(2) * A * x.b_), x.d_);
+    return sx > 0 ? z : -z;
+  }
+
   friend bool operator<(const Quad& x, const Quad& y) { return (x - y).sign() < 0; }
   friend bool operator>(const Quad& x, const Quad& y) { return (x - y).sign() > 0; }
   friend bool operator<=(const Quad& x, const Quad& y) { return (x - y).sign() <= 0; }

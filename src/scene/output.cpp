@@ -1,0 +1,278 @@
+// src/scene/output.cpp - a scene's runs as JSON and as a picture (SVG, top view), and the
+// `cdref scene` command.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "scene.hpp"
+
+namespace cdref::scene {
+
+std::string event_text(const Scene& s, const Event& e);  // compare.cpp
+
+namespace {
+
+using nlohmann::json;
+
+json event_json(const Scene& s, const Event& e) {
+  return {{"frame", e.frame},
+          {"effect", s.effects[e.effect].name},
+          {"type", effect_name(s.effects[e.effect].kind)},
+          {"kind", e.kind},
+          {"a", s.bodies[e.a].name},
+          {"b", e.b >= 0 ? json(s.bodies[e.b].name) : json(nullptr)},
+          {"values", e.values}};
+}
+
+}  // namespace
+
+std::string to_json(const Scene& s, const std::vector<Run>& runs, const std::vector<Comparison>& cmps) {
+  json j;
+  j["scene"] = s.source;
+  j["frames"] = s.frames;
+  j["time_step"] = s.time_step;
+  for (const Run& r : runs) {
+    json jr;
+    jr["precision"] = precision_name(r.precision);
+    for (const Event& e : r.events) jr["events"].push_back(event_json(s, e));
+    if (r.events.empty()) jr["events"] = json::array();
+    jr["counts"] = r.counts;
+    jr["naive"] = r.naive;
+    jr["seconds"] = r.seconds;
+    j["runs"].push_back(jr);
+  }
+  for (const Comparison& c : cmps) {
+    json jc;
+    jc["approximate"] = precision_name(c.approx);
+    jc["reference"] = precision_name(c.reference);
+    jc["matched"] = c.matched;
+    jc["missing"] = json::array();
+    jc["extra"] = json::array();
+    jc["moved"] = json::array();
+    for (const Event& e : c.missing) jc["missing"].push_back(event_json(s, e));
+    for (const Event& e : c.extra) jc["extra"].push_back(event_json(s, e));
+    for (const auto& [r, a] : c.shifted) jc["moved"].push_back({{"reference", event_json(s, r)}, {"approximate", event_json(s, a)}});
+    for (const auto& [name, d] : c.values)
+      jc["values"][name] = {{"compared", d.compared}, {"max_abs", d.max_abs}, {"max_ulps", d.max_ulps}, {"where", d.where}};
+    j["comparisons"].push_back(jc);
+  }
+  return j.dump(1) + "\n";
+}
+
+// ---- the picture: the scene from above (x to the right, y up), the bodies where they start
+// (outlines) and their paths, each run's events as marks on the path of the body concerned,
+// and the events on which the runs disagree circled in red ----
+std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vector<Comparison>& cmps) {
+  const Run& ref = runs.back();
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  auto grow = [&](double x, double y) {
+    lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+    lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+  };
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const Body& b = s.bodies[i];
+    for (const auto& frame : ref.path) {
+      const V3& p = frame[i];
+      double rx = 0, ry = 0;
+      if (b.shape == Shape::sphere) rx = ry = b.radius;
+      if (b.shape == Shape::box) rx = b.extent[0], ry = b.extent[1];
+      if (b.shape == Shape::obb)
+        for (int a = 0; a < 3; ++a) rx += std::fabs(b.axes[a][0] * b.extent[a]), ry += std::fabs(b.axes[a][1] * b.extent[a]);
+      grow(p[0] - rx, p[1] - ry);
+      grow(p[0] + rx, p[1] + ry);
+      if (b.shape == Shape::mesh)
+        for (const V3& v : b.vertices) grow(p[0] + v[0], p[1] + v[1]);
+    }
+  }
+  // the scene far from the origin is drawn relative to its own corner
+  const double W = 900, margin = 30, span = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9});
+  const double k = (W - 2 * margin) / span;
+  const double H = std::ceil((hi[1] - lo[1]) * k + 2 * margin + 90);
+  auto X = [&](double x) { return margin + (x - lo[0]) * k; };
+  auto Y = [&](double y) { return H - 90 - margin - (y - lo[1]) * k; };
+  std::ostringstream o;
+  o.precision(6);
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    << "<text x=\"" << margin << "\" y=\"18\" font-size=\"14\">" << s.source << ": top view, " << s.frames + 1
+    << " frames of " << s.time_step << " s (x from " << lo[0] << ", y from " << lo[1] << ")</text>\n";
+  const char* fill[] = {"#d9e6f2", "#e8e8e8", "#f2e6d9", "#e6f2d9"};
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const Body& b = s.bodies[i];
+    const V3& p = ref.path.front()[i];
+    const char* f = fill[i % 4];
+    if (b.shape == Shape::sphere) {
+      o << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"" << b.radius * k << "\" fill=\"" << f
+        << "\" stroke=\"#555\"/>\n";
+    } else if (b.shape == Shape::box) {
+      o << "<rect x=\"" << X(p[0] - b.extent[0]) << "\" y=\"" << Y(p[1] + b.extent[1]) << "\" width=\""
+        << 2 * b.extent[0] * k << "\" height=\"" << 2 * b.extent[1] * k << "\" fill=\"" << f << "\" stroke=\"#555\"/>\n";
+    } else if (b.shape == Shape::obb) {
+      // the outline of the footprint: the box's corners projected, their convex hull
+      std::vector<std::pair<double, double>> c;
+      for (int m = 0; m < 8; ++m) {
+        double x = p[0], y = p[1];
+        for (int a = 0; a < 3; ++a) {
+          const double sg = ((m >> a) & 1) ? 1 : -1;
+          x += sg * b.extent[a] * b.axes[a][0];
+          y += sg * b.extent[a] * b.axes[a][1];
+        }
+        c.push_back({x, y});
+      }
+      std::sort(c.begin(), c.end());
+      std::vector<std::pair<double, double>> h;
+      auto cross = [](auto o_, auto a, auto b_) {
+        return (a.first - o_.first) * (b_.second - o_.second) - (a.second - o_.second) * (b_.first - o_.first);
+      };
+      for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t base = h.size();
+        for (std::size_t q = 0; q < c.size(); ++q) {
+          const auto& pt = pass == 0 ? c[q] : c[c.size() - 1 - q];
+          while (h.size() >= base + 2 && cross(h[h.size() - 2], h.back(), pt) <= 0) h.pop_back();
+          h.push_back(pt);
+        }
+        h.pop_back();
+      }
+      o << "<polygon points=\"";
+      for (const auto& [x, y] : h) o << X(x) << "," << Y(y) << " ";
+      o << "\" fill=\"" << f << "\" stroke=\"#555\"/>\n";
+    } else if (b.shape == Shape::mesh) {
+      for (const auto& face : b.faces) {
+        o << "<polygon points=\"";
+        for (int c = 0; c < 3; ++c) o << X(p[0] + b.vertices[face[c]][0]) << "," << Y(p[1] + b.vertices[face[c]][1]) << " ";
+        o << "\" fill=\"" << f << "\" fill-opacity=\"0.5\" stroke=\"#999\"/>\n";
+      }
+    } else {
+      const double len = b.shape == Shape::segment ? 1 : span / std::max(1e-300, std::hypot(b.direction[0], b.direction[1])) * 0.25;
+      o << "<line x1=\"" << X(p[0]) << "\" y1=\"" << Y(p[1]) << "\" x2=\"" << X(p[0] + len * b.direction[0])
+        << "\" y2=\"" << Y(p[1] + len * b.direction[1]) << "\" stroke=\"#c80\" stroke-dasharray=\"6 3\"/>\n";
+    }
+    o << "<text x=\"" << X(p[0]) + 4 << "\" y=\"" << Y(p[1]) - 4 << "\" fill=\"#333\">" << b.name << "</text>\n";
+  }
+  // paths: the reference run's, and each other run's where it leaves it by more than a pixel
+  const char* colour[] = {"#1f77b4", "#2ca02c", "#000"};
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+      bool moves = false;
+      for (const auto& fr : runs[r].path) moves = moves || fr[i] != runs[r].path.front()[i];
+      if (!moves) continue;
+      o << "<polyline fill=\"none\" stroke=\"" << colour[std::min<std::size_t>(r, 2)] << "\" stroke-width=\""
+        << (r + 1 == runs.size() ? 1 : 2.5) << "\" stroke-opacity=\"0.6\" points=\"";
+      for (const auto& fr : runs[r].path) o << X(fr[i][0]) << "," << Y(fr[i][1]) << " ";
+      o << "\"/>\n";
+    }
+  // events: a mark at the position of body a at the event's frame, per run
+  std::set<std::tuple<int, int, std::string, int, int>> disputed;
+  for (const Comparison& c : cmps) {
+    for (const Event& e : c.missing) disputed.insert({e.frame, e.effect, e.kind, e.a, e.b});
+    for (const Event& e : c.extra) disputed.insert({e.frame, e.effect, e.kind, e.a, e.b});
+    for (const auto& [x, y] : c.shifted) {
+      disputed.insert({x.frame, x.effect, x.kind, x.a, x.b});
+      disputed.insert({y.frame, y.effect, y.kind, y.a, y.b});
+    }
+  }
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    for (const Event& e : runs[r].events) {
+      const V3& p = runs[r].path[std::min<std::size_t>(e.frame, runs[r].path.size() - 1)][e.a];
+      const bool bad = disputed.count({e.frame, e.effect, e.kind, e.a, e.b}) > 0;
+      o << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"" << (bad ? 7 : 4) << "\" fill=\""
+        << (bad ? "none" : colour[std::min<std::size_t>(r, 2)]) << "\" stroke=\"" << (bad ? "#d62728" : "none")
+        << "\" stroke-width=\"2\"><title>" << precision_name(runs[r].precision) << ": " << event_text(s, e)
+        << "</title></circle>\n";
+    }
+  // legend
+  double ly = H - 70;
+  for (std::size_t r = 0; r < runs.size(); ++r, ly += 16)
+    o << "<circle cx=\"" << margin + 5 << "\" cy=\"" << ly - 4 << "\" r=\"4\" fill=\"" << colour[std::min<std::size_t>(r, 2)]
+      << "\"/><text x=\"" << margin + 15 << "\" y=\"" << ly << "\">" << precision_name(runs[r].precision)
+      << " run: paths and events (" << runs[r].events.size() << ")</text>\n";
+  std::size_t nd = 0;
+  for (const Comparison& c : cmps) nd += c.missing.size() + c.extra.size() + c.shifted.size();
+  o << "<circle cx=\"" << margin + 5 << "\" cy=\"" << ly - 4 << "\" r=\"6\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\"/>"
+    << "<text x=\"" << margin + 15 << "\" y=\"" << ly << "\">events on which the runs disagree (" << nd
+    << "): missing, extra or at another frame</text>\n</svg>\n";
+  return o.str();
+}
+
+namespace {
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  if (!f || !(f << text) || !(f.flush())) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+int scene_command(const std::vector<std::string>& args) {
+  std::string file, json_out, svg_out;
+  std::vector<Precision> only;
+  std::vector<std::pair<Precision, Precision>> compares;
+  bool quiet = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--precision") {
+      only.push_back(precision_by_name(value()));
+    } else if (a == "--compare") {
+      const std::string v = value();
+      const auto comma = v.find(',');
+      if (comma == std::string::npos) throw std::invalid_argument("--compare wants two precisions, e.g. float,exact");
+      compares.push_back({precision_by_name(v.substr(0, comma)), precision_by_name(v.substr(comma + 1))});
+    } else if (a == "--json") {
+      json_out = value();
+    } else if (a == "--svg") {
+      svg_out = value();
+    } else if (a == "--quiet") {
+      quiet = true;
+    } else if (!a.empty() && a[0] == '-') {
+      throw std::invalid_argument("unknown option '" + a + "' for scene (--precision, --compare, --json, --svg, --quiet)");
+    } else if (file.empty()) {
+      file = a;
+    } else {
+      throw std::invalid_argument("scene takes one file ('" + file + "' and '" + a + "')");
+    }
+  }
+  const Scene s = file.empty() ? default_scene() : load_scene(file);
+  if (only.empty() && compares.empty()) compares = {{Precision::float_, Precision::exact}, {Precision::double_, Precision::exact}};
+  // each precision runs once; the logs printed are those asked for with --precision, or the
+  // reference runs of the comparisons
+  std::vector<Precision> order;
+  auto want = [&](Precision p) {
+    if (std::find(order.begin(), order.end(), p) == order.end()) order.push_back(p);
+  };
+  for (const auto& [x, y] : compares) want(x), want(y);
+  for (Precision p : only) want(p);
+  std::sort(order.begin(), order.end());
+  std::vector<Run> runs;
+  for (Precision p : order) runs.push_back(run_scene(s, p));
+  auto run_of = [&](Precision p) -> const Run& {
+    for (const Run& r : runs)
+      if (r.precision == p) return r;
+    throw std::logic_error("scene: a run is missing");
+  };
+  std::vector<Comparison> cmps;
+  for (const auto& [x, y] : compares) cmps.push_back(compare(s, run_of(x), run_of(y)));
+  if (!quiet) {
+    std::set<Precision> logged(only.begin(), only.end());
+    if (only.empty())
+      for (const auto& [x, y] : compares) logged.insert(y);
+    for (Precision p : logged) print_log(std::cout, s, run_of(p));
+    for (const Comparison& c : cmps) {
+      std::cout << "\n";
+      print_comparison(std::cout, s, c);
+    }
+  }
+  if (!json_out.empty()) write_file(json_out, to_json(s, runs, cmps));
+  if (!svg_out.empty()) write_file(svg_out, to_svg(s, runs, cmps));
+  return 0;
+}
+
+}  // namespace cdref::scene
