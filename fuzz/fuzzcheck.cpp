@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "../src/casefiles.hpp"
+#include "../src/scene/scene.hpp"
 
 namespace cdref::fuzz {
 
@@ -165,6 +166,45 @@ void check_case_reader(const std::uint8_t* data, std::size_t size) {
       }
     }
   }
+}
+
+void check_scene_reader(const std::uint8_t* data, std::size_t size) {
+  // bytes 0xf0.. stand for the numbers and literals a scene file must survive
+  static const char* const tokens[16] = {"1e400", "-1e400", "NaN", "Infinity", "1e39", "-0", "4.9406564584124654e-324",
+                                         "1e308", "\"sphere\"", "\"mesh\"", "\"oriented-box\"", "\"ray\"",
+                                         "\"time-of-impact\"", "\"contact\"", "[0, 0, 0]", "-1"};
+  std::string text;
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::uint8_t b = data[i];
+    if (b >= 0xf0)
+      text += tokens[b - 0xf0];
+    else
+      text += char(b);
+  }
+  scene::Scene s;
+  try {
+    s = scene::parse_scene(text, "fuzz");
+  } catch (const scene::scene_error&) {
+    return;  // refused with its place
+  }
+  std::size_t work = 0;
+  for (const scene::Body& b : s.bodies) work += b.shape == scene::Shape::mesh ? b.faces.size() : 1;
+  if (work * std::size_t(s.frames + 1) > 2000) return;  // parsed; too long to run under the sanitizers
+  std::vector<scene::Run> runs;
+  for (scene::Precision p : {scene::Precision::float_, scene::Precision::double_, scene::Precision::exact}) {
+    try {
+      runs.push_back(scene::run_scene(s, p));
+    } catch (const invalid_input& e) {
+      // float and double may meet a value beyond their range; the exact run takes every
+      // scene the parser accepts
+      if (p == scene::Precision::exact) {
+        std::fprintf(stderr, "cdref fuzz: the exact run refused a parsed scene: %s\n", e.what());
+        std::abort();
+      }
+    }
+  }
+  for (const scene::Run& r : runs)
+    if (r.precision != scene::Precision::exact) scene::compare(s, r, runs.back());
 }
 
 }  // namespace cdref::fuzz

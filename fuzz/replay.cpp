@@ -1,8 +1,9 @@
 // fuzz/replay.cpp - replays a fuzz corpus through the same checks as the libFuzzer targets,
 // in any build (g++ included):
-//   cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...   TARGET is a query name or "casefile"
-//   cdref_fuzz_replay --all CORPUS                  every query's CORPUS/<query> and
-//                                                   CORPUS/casefile, each required non-empty
+//   cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...   TARGET is a query name, "casefile" or "scene"
+//   cdref_fuzz_replay --all CORPUS                  every query's CORPUS/<query>,
+//                                                   CORPUS/casefile and CORPUS/scene, each
+//                                                   required non-empty
 //   cdref_fuzz_replay --list                        the targets, one a line
 // Prints the number of inputs replayed per target.
 #include <cdref/fuzz/fuzzcheck.hpp>
@@ -16,8 +17,8 @@
 namespace {
 
 std::size_t replay(const std::string& target, const std::vector<std::filesystem::path>& paths) {
-  const bool casefile = target == "casefile";
-  const cdref::fuzz::Query q = casefile ? cdref::fuzz::Query{} : cdref::fuzz::query_by_name(target);
+  const bool casefile = target == "casefile", scene = target == "scene";
+  const cdref::fuzz::Query q = casefile || scene ? cdref::fuzz::Query{} : cdref::fuzz::query_by_name(target);
   std::vector<std::filesystem::path> files;
   for (const auto& p : paths) {
     if (std::filesystem::is_directory(p)) {
@@ -33,6 +34,8 @@ std::size_t replay(const std::string& target, const std::vector<std::filesystem:
     const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
     if (casefile)
       cdref::fuzz::check_case_reader(data, bytes.size());
+    else if (scene)
+      cdref::fuzz::check_scene_reader(data, bytes.size());
     else
       cdref::fuzz::check_query(q, data, bytes.size());
   }
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> targets;
   for (cdref::fuzz::Query q : cdref::fuzz::all_queries()) targets.push_back(cdref::fuzz::info(q).name);
   targets.push_back("casefile");
+  targets.push_back("scene");
   if (first == "--list") {
     for (const auto& t : targets) std::printf("%s\n", t.c_str());
     return 0;

@@ -130,4 +130,32 @@ for q in d['queries']:
 grep -q "<svg" report.svg || fail "report SVG"
 "$cdref" report --query box-box --n 10 --reps 1 --error-n 5 > one.txt
 grep -q "^box-box" one.txt && ! grep -q "^sphere-box" one.txt || fail "report --query"
+# scenes: the default runs and compares; --json and --svg write; a malformed scene is refused
+# with its place and exit status 2, before anything runs; a run its type cannot carry is
+# named and the others still print (exit status 1)
+"$cdref" scene --json scene.json --svg scene.svg > scene.txt
+grep -q "^float against exact: " scene.txt && grep -q "^double against exact: " scene.txt || fail "scene: $(head -3 scene.txt)"
+grep -q "trigger 'door-opens' begin door-area/avatar" scene.txt || fail "scene log"
+python3 -c "
+import json
+d = json.load(open('scene.json'))
+assert [r['precision'] for r in d['runs']] == ['float', 'double', 'exact'], d['runs']
+assert len(d['comparisons']) == 2
+assert all(r['counts']['intersect'] > 0 for r in d['runs'])
+" || fail "scene JSON"
+grep -q "<svg" scene.svg || fail "scene SVG"
+"$cdref" scene --precision double | grep -q "^scene built-in default (scenes/default.json) at double" || fail "scene --precision"
+printf '{"time_step": 0.1, "frames": 3,\n "bodies": [{"name": "a", "shape": "sphere", "radius": -1}], "effects": []}' > bad.json
+set +e
+"$cdref" scene bad.json > out.txt 2> err.txt; st=$?
+set -e
+[ "$st" = 2 ] && grep -q "bad.json: at /bodies/0/radius: negative radius (-1)" err.txt && [ ! -s out.txt ] \
+  || fail "malformed scene: status $st, $(cat err.txt)"
+printf '{"time_step": 0.5, "frames": 3, "bodies": [{"name": "o", "shape": "sphere", "radius": 1e39},
+  {"name": "p", "shape": "sphere", "radius": 1, "position": [3, 0, 0]}], "effects": [{"type": "trigger", "a": "o", "b": "p"}]}' > big.json
+set +e
+"$cdref" scene big.json > out.txt 2> err.txt; st=$?
+set -e
+[ "$st" = 1 ] && grep -q "body 'o' radius (9.9999999999999994e+38) is beyond float's range" err.txt \
+  && grep -q "^double against exact: 1 events at the same frame" out.txt || fail "scene beyond float: status $st, $(cat err.txt)"
 echo "cli: all checks passed"

@@ -36,6 +36,8 @@
 #include <cdref/book/obb_obb.hpp>
 #include <cdref/solid/obb.hpp>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -212,6 +214,7 @@ class Engine {
 
   Engine(const Scene& sc, Precision p) : s_(sc), n_(int(sc.bodies.size())) {
     run_.precision = p;
+    if constexpr (!exact) representable(sc);
     dt_ = T(sc.time_step);
     pos_.resize(n_);
     prev_.resize(n_);
@@ -251,9 +254,16 @@ class Engine {
 
   Run run() {
     const auto t0 = std::chrono::steady_clock::now();
+    // A value the run's type cannot hold (a coordinate beyond float's range, a position
+    // that overflows after many frames) stops the run where it happens, named with its frame.
     for (int k = 0; k <= s_.frames; ++k) {
-      if (k > 0) advance(k);
-      frame(k);
+      try {
+        if (k > 0) advance(k);
+        frame(k);
+      } catch (const invalid_input& e) {
+        throw invalid_input(std::string("the ") + precision_name(run_.precision) + " run stopped at frame " +
+                            std::to_string(k) + ": " + e.what());
+      }
     }
     run_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return std::move(run_);
@@ -273,6 +283,41 @@ class Engine {
       }
     }
     return v3<T>(ks.back().position);
+  }
+  // At float (or double) every number of the scene must be a finite value of T: a radius
+  // of 1e39 is refused by name rather than run as an infinity.
+  static void representable(const Scene& sc) {
+    auto check = [](double x, const std::string& what) {
+      if (!std::isfinite(T(x)) || (x != 0 && std::fabs(x) < double(std::numeric_limits<T>::denorm_min()) / 2))
+        throw invalid_input(what + " (" + detail::show(x) + ") is beyond " + precision_name_of() + "'s range");
+    };
+    check(sc.time_step, "the time step");
+    for (const Body& b : sc.bodies) {
+      const std::string n = "body '" + b.name + "' ";
+      auto v = [&](const V3& x, const std::string& what) {
+        for (int i = 0; i < 3; ++i) check(x[i], n + what);
+      };
+      check(b.radius, n + "radius");
+      v(b.extent, "extent");
+      for (const V3& a : b.axes) v(a, "axis");
+      for (const V3& x : b.vertices) v(x, "vertex");
+      v(b.direction, "direction");
+      v(b.position, "position");
+      v(b.velocity, "velocity");
+      for (const Keyframe& kf : b.keyframes) {
+        check(kf.time, n + "keyframe time");
+        v(kf.position, "keyframe position");
+      }
+    }
+  }
+  static const char* precision_name_of() { return std::is_same_v<T, float> ? "float" : "double"; }
+  // An engine's position that overflows is refused where it happens.
+  void finite_positions(int k) const {
+    for (int i = 0; i < n_; ++i)
+      for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(pos_[i][c]))
+          throw invalid_input("body '" + s_.bodies[i].name + "' has left " + precision_name_of() +
+                              "'s range (position " + detail::show(pos_[i][c]) + " at frame " + std::to_string(k) + ")");
   }
   void advance(int k) {
     prev_ = pos_;
@@ -294,6 +339,7 @@ class Engine {
         }
       }
     }
+    if constexpr (!exact) finite_positions(k);
   }
   Vec3<T> origin(int i) const {  // a sensor's source
     const Body& b = s_.bodies[i];

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <cdref/error.hpp>
+
 #include "scene.hpp"
 
 namespace cdref::scene {
@@ -74,10 +76,12 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
     lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
     lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
   };
+  // the view: every body where it starts, and the paths of the bodies in the scene's bounds
+  // (a body that leaves them, like a ball thrown through a wall, is drawn to the edge)
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
-    for (const auto& frame : ref.path) {
-      const V3& p = frame[i];
+    {
+      const V3& p = ref.path.front()[i];
       double rx = 0, ry = 0;
       if (b.shape == Shape::sphere) rx = ry = b.radius;
       if (b.shape == Shape::box) rx = b.extent[0], ry = b.extent[1];
@@ -98,9 +102,12 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
   std::ostringstream o;
   o.precision(6);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "<defs><clipPath id=\"view\"><rect x=\"" << margin / 2 << "\" y=\"" << Y(hi[1]) - margin / 2 << "\" width=\""
+    << (hi[0] - lo[0]) * k + margin << "\" height=\"" << (hi[1] - lo[1]) * k + margin << "\"/></clipPath></defs>\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
     << "<text x=\"" << margin << "\" y=\"18\" font-size=\"14\">" << s.source << ": top view, " << s.frames + 1
     << " frames of " << s.time_step << " s (x from " << lo[0] << ", y from " << lo[1] << ")</text>\n";
+  o << "<g clip-path=\"url(#view)\">\n";
   const char* fill[] = {"#d9e6f2", "#e8e8e8", "#f2e6d9", "#e6f2d9"};
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
@@ -108,7 +115,7 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
     const char* f = fill[i % 4];
     if (b.shape == Shape::sphere) {
       o << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"" << b.radius * k << "\" fill=\"" << f
-        << "\" stroke=\"#555\"/>\n";
+        << "\" fill-opacity=\"0.6\" stroke=\"#555\"/>\n";
     } else if (b.shape == Shape::box) {
       o << "<rect x=\"" << X(p[0] - b.extent[0]) << "\" y=\"" << Y(p[1] + b.extent[1]) << "\" width=\""
         << 2 * b.extent[0] * k << "\" height=\"" << 2 * b.extent[1] * k << "\" fill=\"" << f << "\" stroke=\"#555\"/>\n";
@@ -152,7 +159,12 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
       o << "<line x1=\"" << X(p[0]) << "\" y1=\"" << Y(p[1]) << "\" x2=\"" << X(p[0] + len * b.direction[0])
         << "\" y2=\"" << Y(p[1] + len * b.direction[1]) << "\" stroke=\"#c80\" stroke-dasharray=\"6 3\"/>\n";
     }
-    o << "<text x=\"" << X(p[0]) + 4 << "\" y=\"" << Y(p[1]) - 4 << "\" fill=\"#333\">" << b.name << "</text>\n";
+    double lx = p[0], ly_ = p[1];
+    if (b.shape == Shape::mesh) {  // a mesh is named at its first face's centre
+      lx += (b.vertices[b.faces[0][0]][0] + b.vertices[b.faces[0][1]][0] + b.vertices[b.faces[0][2]][0]) / 3;
+      ly_ += (b.vertices[b.faces[0][0]][1] + b.vertices[b.faces[0][1]][1] + b.vertices[b.faces[0][2]][1]) / 3;
+    }
+    o << "<text x=\"" << X(lx) + 4 << "\" y=\"" << Y(ly_) - 4 << "\" fill=\"#333\">" << b.name << "</text>\n";
   }
   // paths: the reference run's, and each other run's where it leaves it by more than a pixel
   const char* colour[] = {"#1f77b4", "#2ca02c", "#000"};
@@ -185,6 +197,7 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
         << "\" stroke-width=\"2\"><title>" << precision_name(runs[r].precision) << ": " << event_text(s, e)
         << "</title></circle>\n";
     }
+  o << "</g>\n";
   // legend
   double ly = H - 70;
   for (std::size_t r = 0; r < runs.size(); ++r, ly += 16)
@@ -251,28 +264,43 @@ int scene_command(const std::vector<std::string>& args) {
   for (const auto& [x, y] : compares) want(x), want(y);
   for (Precision p : only) want(p);
   std::sort(order.begin(), order.end());
+  // A run its type cannot carry through (a value beyond float's range) is reported and left
+  // out; the other runs and their comparisons are still printed and written.
   std::vector<Run> runs;
-  for (Precision p : order) runs.push_back(run_scene(s, p));
+  std::vector<std::string> failed;
+  for (Precision p : order) {
+    try {
+      runs.push_back(run_scene(s, p));
+    } catch (const invalid_input& e) {
+      failed.push_back(e.what());
+    }
+  }
+  auto has = [&](Precision p) {
+    return std::any_of(runs.begin(), runs.end(), [p](const Run& r) { return r.precision == p; });
+  };
   auto run_of = [&](Precision p) -> const Run& {
     for (const Run& r : runs)
       if (r.precision == p) return r;
     throw std::logic_error("scene: a run is missing");
   };
   std::vector<Comparison> cmps;
-  for (const auto& [x, y] : compares) cmps.push_back(compare(s, run_of(x), run_of(y)));
+  for (const auto& [x, y] : compares)
+    if (has(x) && has(y)) cmps.push_back(compare(s, run_of(x), run_of(y)));
   if (!quiet) {
     std::set<Precision> logged(only.begin(), only.end());
     if (only.empty())
       for (const auto& [x, y] : compares) logged.insert(y);
-    for (Precision p : logged) print_log(std::cout, s, run_of(p));
+    for (Precision p : logged)
+      if (has(p)) print_log(std::cout, s, run_of(p));
     for (const Comparison& c : cmps) {
       std::cout << "\n";
       print_comparison(std::cout, s, c);
     }
   }
   if (!json_out.empty()) write_file(json_out, to_json(s, runs, cmps));
-  if (!svg_out.empty()) write_file(svg_out, to_svg(s, runs, cmps));
-  return 0;
+  if (!svg_out.empty() && !runs.empty()) write_file(svg_out, to_svg(s, runs, cmps));
+  for (const std::string& f : failed) std::cerr << "cdref: " << s.source << ": " << f << "\n";
+  return failed.empty() ? 0 : 1;
 }
 
 }  // namespace cdref::scene

@@ -23,5 +23,8 @@ namespace cdref::fuzz {
 bool decode_inputs(Query q, const std::uint8_t* data, std::size_t size, Inputs& in);
 void check_query(Query q, const std::uint8_t* data, std::size_t size);
 void check_case_reader(const std::uint8_t* data, std::size_t size);
+// A scene file: refused with a scene_error, or (when small enough to run quickly) run at
+// float, double and exact precision and compared, never anything else.
+void check_scene_reader(const std::uint8_t* data, std::size_t size);
 
 }  // namespace cdref::fuzz
