@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 #include <sstream>
+#include <vector>
 
 #include "scene.hpp"
 
@@ -57,8 +58,10 @@ int main(int argc, char** argv) {
               crates, frames, seed, parse_s);
   double fps[2] = {0, 0};
   int k = 0;
+  std::vector<Run> runs;
   for (Precision p : {Precision::double_, Precision::exact}) {
-    const Run r = run_scene(s, p);
+    runs.push_back(run_scene(s, p));
+    const Run& r = runs.back();
     std::uint64_t evaluated = 0;
     for (const auto& [name, n] : r.counts)
       if (name != "broad") evaluated += n;
@@ -71,5 +74,8 @@ int main(int argc, char** argv) {
     for (const auto& [name, n] : r.counts) std::printf("         %-10s %llu\n", name.c_str(), (unsigned long long)n);
   }
   std::printf("exact / double time per frame: %.1f\n", fps[0] / fps[1]);
+  const Comparison c = compare(s, runs[0], runs[1]);
+  std::printf("double against exact: %zu events at the same frame, %zu missing, %zu extra, %zu at another frame\n",
+              c.matched, c.missing.size(), c.extra.size(), c.shifted.size());
   return 0;
 }

@@ -173,12 +173,14 @@ std::optional<sqrt_t<T>> sweep_triangle(const Vec3<T>& s, const Vec3<T>& d, cons
   const Vec3<T> n = (t.vertex[1] - t.vertex[0]).cross(t.vertex[2] - t.vertex[0]);
   const T nn = n.dot(n);
   if (nn != T(0)) {
-    // planes m.x <= o, clipped over lambda in [0, 1]
+    // planes m.(x - v0) <= o, clipped over lambda in [0, 1]; relative to v0, so that a
+    // triangle far from the origin does not cancel its plane offsets at float
+    const Vec3<T> w(s - t.vertex[0]);
     S lo(0), hi(1);
     bool empty = false;
     auto clip = [&](const Vec3<T>& m, const S& o) {
       const T md = m.dot(d);
-      const S gap = o - S(m.dot(s));
+      const S gap = o - S(m.dot(w));
       if (md == T(0)) {
         if (gap < S(0)) empty = true;
       } else if (md > T(0)) {
@@ -190,11 +192,11 @@ std::optional<sqrt_t<T>> sweep_triangle(const Vec3<T>& s, const Vec3<T>& d, cons
       }
     };
     const S off = S(r) * root(nn);
-    clip(n, S(n.dot(t.vertex[0])) + off);
-    clip(Vec3<T>(-n), S(T(-n.dot(t.vertex[0]))) + off);
+    clip(n, off);
+    clip(Vec3<T>(-n), off);
     for (int i = 0; i < 3; ++i) {
       const Vec3<T> m = (t.vertex[(i + 1) % 3] - t.vertex[i]).cross(n);  // outward for the winding of n
-      clip(m, S(m.dot(t.vertex[i])));
+      clip(m, S(m.dot(Vec3<T>(t.vertex[i] - t.vertex[0]))));
     }
     if (!empty && lo <= hi) take(best, lo);
   }

@@ -109,7 +109,14 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
     << " frames of " << s.time_step << " s (x from " << lo[0] << ", y from " << lo[1] << ")</text>\n";
   o << "<g clip-path=\"url(#view)\">\n";
   const char* fill[] = {"#d9e6f2", "#e8e8e8", "#f2e6d9", "#e6f2d9"};
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+  // meshes (floors, ramps) underneath, the other bodies over them, the names over everything
+  std::vector<std::size_t> order;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+      if ((s.bodies[i].shape == Shape::mesh) == (pass == 0)) order.push_back(i);
+  std::ostringstream names;
+  names.precision(6);
+  for (std::size_t i : order) {
     const Body& b = s.bodies[i];
     const V3& p = ref.path.front()[i];
     const char* f = fill[i % 4];
@@ -164,7 +171,7 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
       lx += (b.vertices[b.faces[0][0]][0] + b.vertices[b.faces[0][1]][0] + b.vertices[b.faces[0][2]][0]) / 3;
       ly_ += (b.vertices[b.faces[0][0]][1] + b.vertices[b.faces[0][1]][1] + b.vertices[b.faces[0][2]][1]) / 3;
     }
-    o << "<text x=\"" << X(lx) + 4 << "\" y=\"" << Y(ly_) - 4 << "\" fill=\"#333\">" << b.name << "</text>\n";
+    names << "<text x=\"" << X(lx) + 4 << "\" y=\"" << Y(ly_) - 4 << "\" fill=\"#333\">" << b.name << "</text>\n";
   }
   // paths: the reference run's, and each other run's where it leaves it by more than a pixel
   const char* colour[] = {"#1f77b4", "#2ca02c", "#000"};
@@ -175,7 +182,13 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
       if (!moves) continue;
       o << "<polyline fill=\"none\" stroke=\"" << colour[std::min<std::size_t>(r, 2)] << "\" stroke-width=\""
         << (r + 1 == runs.size() ? 1 : 2.5) << "\" stroke-opacity=\"0.6\" points=\"";
-      for (const auto& fr : runs[r].path) o << X(fr[i][0]) << "," << Y(fr[i][1]) << " ";
+      double px = -1e300, py = -1e300;  // points closer than half a pixel to the last are left out
+      for (std::size_t f = 0; f < runs[r].path.size(); ++f) {
+        const double x = X(runs[r].path[f][i][0]), y = Y(runs[r].path[f][i][1]);
+        if (std::hypot(x - px, y - py) < 0.5 && f + 1 < runs[r].path.size()) continue;
+        o << x << "," << y << " ";
+        px = x, py = y;
+      }
       o << "\"/>\n";
     }
   // events: a mark at the position of body a at the event's frame, per run
@@ -197,7 +210,7 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
         << "\" stroke-width=\"2\"><title>" << precision_name(runs[r].precision) << ": " << event_text(s, e)
         << "</title></circle>\n";
     }
-  o << "</g>\n";
+  o << names.str() << "</g>\n";
   // legend
   double ly = H - 70;
   for (std::size_t r = 0; r < runs.size(); ++r, ly += 16)
