@@ -215,7 +215,7 @@ int campaign(Args& a, bool defaults) {
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.3, the book's algorithms and the\n"
+    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.4, the book's algorithms and the\n"
                  "robust versions at float, double and long double (and the queries' own variants) against the\n"
                  "exact answer, "
               << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
