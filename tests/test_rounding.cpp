@@ -154,6 +154,25 @@ TEST_CASE("a + b sqrt(d) rounds to nearest, checked exactly", "[rounding]") {
   REQUIRE(round_double(v) < 1e-48);
 }
 
+TEST_CASE("values of different quadratic fields are ordered exactly (compare_fields)", "[rounding]") {
+  std::mt19937_64 g(29);
+  std::uniform_int_distribution<int> small(-60, 60);
+  auto sign = [](const Expr& e) { return e > Expr(0) ? 1 : (e < Expr(0) ? -1 : 0); };
+  for (int i = 0; i < 3000; ++i) {
+    const QS x(Q(small(g)) / Q(7), Q(small(g)) / Q(3), Q(std::abs(small(g)) + 1));
+    const QS y(Q(small(g)) / Q(5), Q(small(g)) / Q(11), Q(std::abs(small(g)) + 1));
+    REQUIRE(compare_fields(x, y) == sign(to_expr(x) - to_expr(y)));
+    REQUIRE(compare_fields(y, x) == -compare_fields(x, y));
+  }
+  // equal values written in two fields: sqrt(8) = 2 sqrt(2)
+  CHECK(compare_fields(QS(Q(0), Q(1), Q(8)), QS(Q(0), Q(2), Q(2))) == 0);
+  // 10^-41 apart: sqrt(2) against (sqrt(2) - sqrt(3)) to 41 digits + sqrt(3)
+  const Q c = -q("31783724519578224472575761729617428837313/100000000000000000000000000000000000000000");
+  const QS x = QS::sqrt_of(Q(2)), y(c, Q(1), Q(3));
+  CHECK(compare_fields(x, y) == sign(to_expr(x) - to_expr(y)));
+  CHECK(compare_fields(x, y) != 0);
+}
+
 TEST_CASE("edges of the double range", "[rounding]") {
   const double mx = std::numeric_limits<double>::max();
   const Q qmax(mx);
