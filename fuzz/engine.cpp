@@ -265,6 +265,7 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       c += w;
       // a cast's lambdas and points exist only on a hit, a separating axis only on a miss
       if (out.when != Output::always && !(a.cls == t.cls && a.cls == (out.when == Output::on_hit))) continue;
+      if (!((a.given >> g) & 1)) continue;  // not answered by this implementation
       OutputStats& os = st.out[g];
       bool nonfinite = false;
       std::uint64_t worst = 0;
@@ -341,7 +342,12 @@ Results run(const Spec& spec) {
   const std::vector<Cell> cells = cells_of(spec);
   const std::vector<Item> items = items_of(spec, cells);
   std::vector<const Implementation*> impls;
-  for (const auto& name : spec.impls) impls.push_back(&implementation_by_name(name));
+  for (const auto& name : spec.impls) {
+    const Implementation* found = nullptr;
+    for (const Implementation& c : spec.custom)
+      if (c.name == name) found = &c;
+    impls.push_back(found ? found : &implementation_by_name(name));
+  }
   if (impls.empty()) throw std::invalid_argument("the campaign names no implementation");
 
   Results total;

@@ -56,6 +56,9 @@ struct Answer {
   bool certified = false;  // the implementation gives a certificate
   bool certain = false;    // ... and it says its classification is the exact one
   std::array<long double, max_values> v{};  // exact for float, double and long double
+  // The output groups the implementation answers (bit g: QueryInfo::outputs[g]); the others
+  // are not graded. The built-in implementations answer every group.
+  std::uint64_t given = ~std::uint64_t(0);
 };
 
 // ---- families ----
@@ -248,6 +251,9 @@ struct Spec {
   std::string checkpoint;     // file to write as it goes ("" for none)
   bool resume = false;        // continue from `checkpoint`
   std::function<void(double cases_done, double cases_total)> progress;  // optional, per cell-case
+  // Implementations the caller brings (cdref/validate.hpp): named in `impls` like the
+  // built-in ones, which they take precedence over.
+  std::vector<Implementation> custom;
   std::string fingerprint() const;  // identifies the work, for merge and resume checks
 };
 

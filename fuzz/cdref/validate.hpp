@@ -1,0 +1,98 @@
+// cdref/validate.hpp - validating your own float code against the exact answer, from C++.
+//
+// Wrap your implementation of one of cdref's queries in a callable that reads a case's
+// inputs by column name and answers what it computes; cdref::validate::run runs a campaign
+// on it (the query's families, n cases each, a seed) against the exact answer and returns
+// a report to assert on in your own tests:
+//
+//   auto report = cdref::validate::run({.query = "ray-sphere-cast", .n = 2000},
+//       [](const cdref::validate::Case& c) {
+//         const MyRay ray{c.vec("source"), c.vec("direction")};
+//         const MySphere s{c.vec("center"), c("radius")};
+//         const MyHit h = my_raycast(ray, s);
+//         return cdref::validate::Answer(h.hit).value("lambda_enter", h.t);
+//       });
+//   REQUIRE(report.misclassified() == 0);
+//   REQUIRE(report.max_ulps("lambda_enter") <= 64);
+//
+// The columns are those of `cdref cases --describe QUERY` (`vec("source")` reads source_x,
+// source_y, source_z); the answer gives the classification (hit / intersect) and any subset of
+// the output groups, and only those are graded. At precision 24 the inputs are the float
+// roundings of the cases (convert them to float) and errors are ulps of float.
+#pragma once
+
+#include <cdref/fuzz/campaign.hpp>
+#include <cdref/vec.hpp>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cdref::validate {
+
+struct Options {
+  std::string query;                  // a query's name: "ray-sphere-cast", "sphere-box", ...
+  std::vector<std::string> families;  // empty: every family of the query
+  std::uint64_t n = 1000;             // cases per (family, scale)
+  std::uint64_t seed = 1;
+  int precision = 53;                 // 24 float, 53 double, 64 long double
+  int threads = 1;
+  std::string name = "yours";         // the implementation's name in the report
+};
+
+// One case's inputs, by column name.
+class Case {
+ public:
+  Case(const fuzz::QueryInfo& qi, const fuzz::Inputs& in) : qi_(&qi), in_(&in) {}
+  double operator()(const std::string& column) const;  // throws std::invalid_argument naming the columns
+  Vec3<double> vec(const std::string& prefix) const;   // prefix_x, prefix_y, prefix_z
+  const fuzz::Inputs& inputs() const { return *in_; }
+
+ private:
+  const fuzz::QueryInfo* qi_;
+  const fuzz::Inputs* in_;
+};
+
+// An implementation's answer: the classification, and the output groups it computes.
+class Answer {
+ public:
+  explicit Answer(bool classification) { a_.cls = a_.pred = classification; a_.given = 0; }
+  Answer& value(const std::string& group, double x);
+  Answer& value(const std::string& group, const Vec3<double>& v);
+  // internal: resolved against the query's output groups by run()
+  struct Named {
+    std::string group;
+    std::vector<double> v;
+  };
+  bool classification() const { return a_.cls; }
+  const std::vector<Named>& values() const { return named_; }
+
+ private:
+  fuzz::Answer a_;
+  std::vector<Named> named_;
+};
+
+class Report {
+ public:
+  std::string query, name;
+  int precision = 53;
+  std::uint64_t seed = 1;
+  fuzz::Results results;
+
+  std::uint64_t cases() const;
+  std::uint64_t misclassified() const;   // the classification differs from the exact one
+  std::uint64_t false_positives() const;  // says hit / intersect where the exact answer does not
+  std::uint64_t false_negatives() const;
+  std::uint64_t refused() const;          // inputs the precision cannot hold, or the callable refused
+  // Over every graded case of an output group: the largest error, and the 99th percentile
+  // (the lower edge of its histogram bin, an eighth of an octave wide), in ulps of the
+  // precision. An unknown group throws std::invalid_argument naming the groups.
+  std::uint64_t max_ulps(const std::string& group) const;
+  std::uint64_t p99_ulps(const std::string& group) const;
+  // The table `cdref campaign` prints, with the worst cases' inputs in hex-float.
+  std::string table() const;
+};
+
+Report run(const Options& options, const std::function<Answer(const Case&)>& implementation);
+
+}  // namespace cdref::validate
