@@ -23,6 +23,10 @@
 #include "report.hpp"
 #include "scene/scene.hpp"
 
+namespace cdref::peers {
+int peers_command(const std::vector<std::string>& args);  // src/peers/peers.cpp
+}
+
 int run_demo();
 
 namespace {
@@ -79,6 +83,10 @@ const char* usage = R"(usage:
                                  runs both and prints the events they disagree on and the
                                  differences of the continuous outputs (default: float,exact
                                  and double,exact); --svg draws the top view with the events
+  cdref peers [--n N] [--seed S] [--threads T] [--json F]
+                                 GLM's, Bullet's and Eigen's functions on cdref's families at
+                                 float against the exact answer: cases where their convention
+                                 gives another meaning set apart, misclassifications, p99/max ulps
 )";
 
 struct Args {
@@ -298,6 +306,7 @@ int main(int argc, char* argv[]) {
     if (cmd == "plot") return cli::plot_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "report") return cli::report_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "scene") return scene::scene_command({a.v.begin() + long(a.i), a.v.end()});
+    if (cmd == "peers") return peers::peers_command({a.v.begin() + long(a.i), a.v.end()});
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << usage;
       return 0;

@@ -158,4 +158,17 @@ set +e
 set -e
 [ "$st" = 1 ] && grep -q "body 'o' radius (9.9999999999999994e+38) is beyond float's range" err.txt \
   && grep -q "^double against exact: 1 events at the same frame" out.txt || fail "scene beyond float: status $st, $(cat err.txt)"
+# peers: every adapter runs on its query's families; the JSON has a row per family
+"$cdref" peers --n 40 --json peers.json > peers.txt
+python3 -c "
+import json
+d = json.load(open('peers.json'))
+names = [p['function'] for p in d]
+assert any(n.startswith('AlignedBox3f::intersects') for n in names), names
+for p in d:
+    assert p['families'], p['function']
+    for f in p['families']:
+        assert f['cases'] >= f['convention'] + f['false_positives'] + f['false_negatives'], (p['function'], f)
+" || fail "peers JSON"
+grep -q "^Eigen 3.4: AlignedBox3f::exteriorDistance" peers.txt || fail "peers table"
 echo "cli: all checks passed"

@@ -1,0 +1,362 @@
+// src/peers/peers.cpp - `cdref peers`: widely used libraries' float functions on cdref's
+// families against the exact answer.
+//
+// Each adapter maps a query's case onto one library function in the library's own
+// conventions and states where those conventions give another meaning than cdref's (a ray
+// starting inside a sphere reported at its exit, a line that also hits behind its source, a
+// triangle test that is its bounds' test). Cases where the meanings differ are decided from
+// the exact answer and set apart as "convention" cases: they are not counted as drift. What
+// remains is the function's numerical drift, graded like any implementation of a campaign.
+//
+// Built when GLM (libglm-dev), Bullet (libbullet-dev) and Eigen are present; Bullet in its
+// float build (the default btScalar). All adapters run at float (precision 24): the inputs
+// are the cases' float roundings.
+#include <CGAL/Gmpq.h>
+
+#include <Eigen/Geometry>
+#include <cdref/error.hpp>
+#include <cdref/fuzz/campaign.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifdef CDREF_HAVE_GLM
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/glm.hpp>
+#include <glm/gtx/intersect.hpp>
+#endif
+#ifdef CDREF_HAVE_BULLET
+#include <LinearMath/btAabbUtil2.h>
+#include <LinearMath/btVector3.h>
+#endif
+
+namespace cdref::peers {
+
+using fuzz::Answer;
+using fuzz::Inputs;
+using fuzz::Query;
+
+namespace {
+
+struct Adapter {
+  std::string library, function, query;
+  std::string convention;  // what differs in meaning, in words
+  std::vector<std::string> graded;  // output groups answered
+  // the case's meaning differs under the library's convention (decided exactly)
+  std::function<bool(const Inputs& in, const Answer& truth)> differs;
+  std::function<Answer(const Inputs& in)> run;
+};
+
+float f(double x) { return float(x); }
+int group(Query q, const std::string& g, int* first) {
+  int c = 0;
+  const auto& outs = fuzz::info(q).outputs;
+  for (std::size_t k = 0; k < outs.size(); ++k) {
+    if (outs[k].name == g) {
+      *first = c;
+      return int(k);
+    }
+    c += outs[k].width;
+  }
+  throw std::logic_error("peers: no output " + g);
+}
+struct Out {
+  Query q;
+  Answer a;
+  explicit Out(Query q_, bool cls) : q(q_) {
+    a.cls = a.pred = cls;
+    a.given = 0;
+  }
+  Out& set(const std::string& g, std::initializer_list<double> v) {
+    int first = 0;
+    const int k = group(q, g, &first);
+    int i = 0;
+    for (double x : v) a.v[first + i++] = x;
+    a.given |= std::uint64_t(1) << k;
+    return *this;
+  }
+};
+
+// exact helpers (rationals from the doubles of the case)
+using Q = CGAL::Gmpq;
+struct QV {
+  Q x, y, z;
+};
+QV qv(const Inputs& in, int k) { return {Q(in[k]), Q(in[k + 1]), Q(in[k + 2])}; }
+QV sub(const QV& a, const QV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+QV cross(const QV& a, const QV& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Q dot(const QV& a, const QV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// a ray's source inside or on the sphere (columns: source 0, direction 3, centre 6, radius 9)
+bool source_inside(const Inputs& in) {
+  const QV m = sub(qv(in, 0), qv(in, 6));
+  const Q r(in[9]);
+  return dot(m, m) <= r * r;
+}
+// a ray lies in the triangle's plane (columns: source 0, direction 3, v0 6, v1 9, v2 12)
+bool in_plane(const Inputs& in) {
+  const QV v0 = qv(in, 6), n = cross(sub(qv(in, 9), v0), sub(qv(in, 12), v0));
+  return dot(n, sub(qv(in, 0), v0)) == 0 && dot(n, qv(in, 3)) == 0;
+}
+// the reversed ray hits (a line test that also reports hits behind the source)
+bool behind(Query q, const Inputs& in) {
+  Inputs r = in;
+  for (int i = 3; i < 6; ++i) r[i] = -r[i];
+  return fuzz::oracle_truth(q, r, 24).cls;
+}
+
+std::vector<Adapter> adapters() {
+  std::vector<Adapter> out;
+  const Query ray_sphere = fuzz::query_by_name("ray-sphere-cast");
+  const Query ray_tri = fuzz::query_by_name("ray-triangle-cast");
+  const Query seg_box = fuzz::query_by_name("segment-box-cast");
+  const Query box_box = fuzz::query_by_name("box-box");
+  const Query tri_box = fuzz::query_by_name("triangle-box");
+  const Query sphere_box = fuzz::query_by_name("sphere-box");
+  (void)ray_tri;
+#ifdef CDREF_HAVE_GLM
+  out.push_back(
+      {"GLM 0.9.9.8", "glm::intersectRaySphere (vec3, radius squared, unit direction)", "ray-sphere-cast",
+       "a source inside or on the sphere: GLM reports the exit point (or no hit when the distance is below "
+       "epsilon); the adapter normalizes the direction and squares the radius in float",
+       {"point"},
+       [](const Inputs& in, const Answer&) { return source_inside(in); },
+       [ray_sphere](const Inputs& in) {
+         const glm::vec3 s(f(in[0]), f(in[1]), f(in[2])), d = glm::normalize(glm::vec3(f(in[3]), f(in[4]), f(in[5])));
+         const glm::vec3 c(f(in[6]), f(in[7]), f(in[8]));
+         const float r = f(in[9]);
+         float dist = 0;
+         const bool hit = glm::intersectRaySphere(s, d, c, r * r, dist);
+         Out o(ray_sphere, hit);
+         const glm::vec3 p = s + d * dist;
+         return o.set("point", {p.x, p.y, p.z}).a;
+       }});
+  out.push_back(
+      {"GLM 0.9.9.8", "glm::intersectLineSphere (vec3, through source and source + direction)", "ray-sphere-cast",
+       "a line, not a ray: it also meets spheres behind the source; a source inside reports the line's first point; "
+       "the adapter passes source + direction rounded to float as the second point",
+       {"point"},
+       [ray_sphere](const Inputs& in, const Answer& t) { return source_inside(in) || (!t.cls && behind(ray_sphere, in)); },
+       [ray_sphere](const Inputs& in) {
+         const glm::vec3 s(f(in[0]), f(in[1]), f(in[2])), d(f(in[3]), f(in[4]), f(in[5]));
+         const glm::vec3 c(f(in[6]), f(in[7]), f(in[8]));
+         glm::vec3 p1, n1, p2, n2;
+         const bool hit = glm::intersectLineSphere(s, glm::vec3(s + d), c, f(in[9]), p1, n1, p2, n2);
+         Out o(ray_sphere, hit);
+         return o.set("point", {p1.x, p1.y, p1.z}).a;
+       }});
+  out.push_back(
+      {"GLM 0.9.9.8", "glm::intersectRayTriangle (vec3)", "ray-triangle-cast",
+       "no test of the distance's sign: a triangle behind the source is hit (a line test); a ray in the "
+       "triangle's plane is never a hit",
+       {"lambda_enter", "u", "v"},
+       [ray_tri](const Inputs& in, const Answer& t) { return in_plane(in) || (!t.cls && behind(ray_tri, in)); },
+       [ray_tri](const Inputs& in) {
+         const glm::vec3 s(f(in[0]), f(in[1]), f(in[2])), d(f(in[3]), f(in[4]), f(in[5]));
+         const glm::vec3 a(f(in[6]), f(in[7]), f(in[8])), b(f(in[9]), f(in[10]), f(in[11])), c(f(in[12]), f(in[13]), f(in[14]));
+         glm::vec2 bary(0);
+         float dist = 0;
+         const bool hit = glm::intersectRayTriangle(s, d, a, b, c, bary, dist);
+         Out o(ray_tri, hit);
+         return o.set("lambda_enter", {dist}).set("u", {bary.x}).set("v", {bary.y}).a;
+       }});
+#endif
+#ifdef CDREF_HAVE_BULLET
+  auto bt = [](const Inputs& in, int k) { return btVector3(f(in[k]), f(in[k + 1]), f(in[k + 2])); };
+  out.push_back({"Bullet 3.24 (float)", "btRayAabb (segment against min-max box)", "segment-box-cast",
+                 "Bullet's normal is the entry face's inward normal (cdref's: outward), which the adapter "
+                 "negates; a source inside hits at 0 with a zero normal, as in cdref; the adapter gives the box as "
+                 "min = centre - extent and max = centre + extent rounded to float",
+                 {"lambda_enter", "normal"},
+                 [](const Inputs&, const Answer&) { return false; },
+                 [seg_box, bt](const Inputs& in) {
+                   const btVector3 s = bt(in, 0), t = bt(in, 3), c = bt(in, 6), h = bt(in, 9);
+                   btScalar param = 1;
+                   btVector3 n(0, 0, 0);
+                   const bool hit = btRayAabb(s, t, c - h, c + h, param, n);
+                   Out o(seg_box, hit);
+                   return o.set("lambda_enter", {param}).set("normal", {-n.x(), -n.y(), -n.z()}).a;
+                 }});
+  out.push_back({"Bullet 3.24 (float)", "TestAabbAgainstAabb2", "box-box",
+                 "none; the adapter gives each box as min and max rounded to float", {},
+                 [](const Inputs&, const Answer&) { return false; },
+                 [box_box, bt](const Inputs& in) {
+                   const btVector3 ca = bt(in, 0), ha = bt(in, 3), cb = bt(in, 6), hb = bt(in, 9);
+                   return Out(box_box, TestAabbAgainstAabb2(ca - ha, ca + ha, cb - hb, cb + hb)).a;
+                 }});
+  out.push_back(
+      {"Bullet 3.24 (float)", "TestTriangleAgainstAabb2", "triangle-box",
+       "a conservative test: the triangle's bounds against the box, so a triangle apart from the box whose "
+       "bounds meet it is reported as overlapping",
+       {},
+       [](const Inputs& in, const Answer& t) {
+         if (t.cls) return false;
+         for (int i = 0; i < 3; ++i) {  // the triangle's exact bounds meet the box's
+           Q lo = Q(in[i]), hi = lo;
+           for (int v = 1; v < 3; ++v) {
+             const Q x(in[3 * v + i]);
+             if (x < lo) lo = x;
+             if (hi < x) hi = x;
+           }
+           if (hi < Q(in[9 + i]) - Q(in[12 + i]) || Q(in[9 + i]) + Q(in[12 + i]) < lo) return false;
+         }
+         return true;
+       },
+       [tri_box, bt](const Inputs& in) {
+         const btVector3 v[3] = {bt(in, 0), bt(in, 3), bt(in, 6)};
+         const btVector3 c = bt(in, 9), h = bt(in, 12);
+         return Out(tri_box, TestTriangleAgainstAabb2(v, c - h, c + h)).a;
+       }});
+#endif
+  out.push_back({"Eigen 3.4", "AlignedBox3f::intersects", "box-box",
+                 "none; the adapter gives each box as min and max rounded to float", {},
+                 [](const Inputs&, const Answer&) { return false; },
+                 [box_box](const Inputs& in) {
+                   auto box = [&](int k) {
+                     const Eigen::Vector3f c(f(in[k]), f(in[k + 1]), f(in[k + 2])), h(f(in[k + 3]), f(in[k + 4]), f(in[k + 5]));
+                     return Eigen::AlignedBox3f(c - h, c + h);
+                   };
+                   return Out(box_box, box(0).intersects(box(6))).a;
+                 }});
+  out.push_back({"Eigen 3.4", "AlignedBox3f::exteriorDistance (point to box, minus the radius)", "sphere-box",
+                 "none (intersect: the centre's distance <= radius; distance: max(that - radius, 0)); the adapter "
+                 "gives the box as min and max rounded to float",
+                 {"distance"},
+                 [](const Inputs&, const Answer&) { return false; },
+                 [sphere_box](const Inputs& in) {
+                   const Eigen::Vector3f p(f(in[0]), f(in[1]), f(in[2])), c(f(in[4]), f(in[5]), f(in[6])),
+                       h(f(in[7]), f(in[8]), f(in[9]));
+                   const float r = f(in[3]);
+                   const float e = Eigen::AlignedBox3f(c - h, c + h).exteriorDistance(p);
+                   Out o(sphere_box, e <= r);
+                   return o.set("distance", {std::max(e - r, 0.0f)}).a;
+                 }});
+  return out;
+}
+
+struct Row {
+  std::string family;
+  std::uint64_t cases = 0, convention = 0, refused = 0, fp = 0, fn = 0;
+  std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> ulps;  // group -> (p99, max)
+};
+
+}  // namespace
+
+int peers_command(const std::vector<std::string>& args) {
+  std::uint64_t n = 2000, seed = 1;
+  std::string json_out;
+  int threads = 2;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + " needs a value");
+      return args[++i];
+    };
+    if (args[i] == "--n")
+      n = std::stoull(value());
+    else if (args[i] == "--seed")
+      seed = std::stoull(value());
+    else if (args[i] == "--threads")
+      threads = std::stoi(value());
+    else if (args[i] == "--json")
+      json_out = value();
+    else
+      throw std::invalid_argument("unknown option '" + args[i] + "' for peers (--n, --seed, --threads, --json)");
+  }
+  nlohmann::json j = nlohmann::json::array();
+  std::cout << "Library functions on cdref's families at float, against the exact answer (" << n
+            << " cases per family and scale, seed " << seed << ").\n"
+            << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
+            << "misclassified: false positives / false negatives among the others; errors in ulps of float (p99 / max).\n";
+#ifndef CDREF_HAVE_GLM
+  std::cout << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
+#endif
+#ifndef CDREF_HAVE_BULLET
+  std::cout << "(Bullet not found at build time: apt-get install libbullet-dev and rebuild)\n";
+#endif
+  for (const Adapter& ad : adapters()) {
+    const Query q = fuzz::query_by_name(ad.query);
+    fuzz::Spec spec;
+    spec.queries = {q};
+    spec.n = n;
+    spec.seed = seed;
+    spec.threads = threads;
+    spec.impls = {"peer"};
+    spec.custom.push_back({"peer", 24,
+                           [&ad](Query qq, const Inputs& in) -> Answer {
+                             const Answer truth = fuzz::oracle_truth(qq, in, 24);
+                             if (ad.differs(in, truth)) throw invalid_input("convention");
+                             return ad.run(in);
+                           },
+                           {q}});
+    // the convention cases counted apart: the engine counts them as refused, with the
+    // inputs float cannot hold; the latter are counted by a second pass that refuses only them
+    spec.custom.push_back({"peer-all", 24, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}});
+    spec.impls.push_back("peer-all");
+    const fuzz::Results res = fuzz::run(spec);
+    std::map<std::string, Row> rows;
+    const auto& outs = fuzz::info(q).outputs;
+    for (const auto& [k, st] : res.cells) {
+      Row& r = rows[k.family];
+      r.family = k.family;
+      if (k.impl == "peer-all") {
+        r.refused += st.refused;
+        continue;
+      }
+      r.cases += st.n;
+      r.convention += st.refused;  // corrected below by the inputs float cannot hold
+      r.fp += st.cls_fp;
+      r.fn += st.cls_fn;
+      for (const std::string& g : ad.graded) {
+        int first = 0;
+        const int gi = group(q, g, &first);
+        (void)outs;
+        auto& u = r.ulps[g];
+        fuzz::Histogram h = st.out[gi].hist;
+        u.second = std::max<std::uint64_t>(u.second, st.out[gi].worst.set ? st.out[gi].worst.metric : 0);
+        u.first = std::max<std::uint64_t>(u.first, h.total() ? h.quantile(0.99) : 0);
+      }
+    }
+    std::cout << "\n" << ad.library << ": " << ad.function << " as " << ad.query << "\n  convention: " << ad.convention
+              << "\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
+    std::cout << line;
+    for (const auto& g : ad.graded) std::cout << "  " << g << " p99/max";
+    std::cout << "\n";
+    nlohmann::json ja;
+    ja["library"] = ad.library;
+    ja["function"] = ad.function;
+    ja["query"] = ad.query;
+    ja["convention"] = ad.convention;
+    for (auto& [fam, r] : rows) {
+      const std::uint64_t conv = r.convention - r.refused;  // refused at float for both passes
+      std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %7llu/%-8llu", fam.c_str(), (unsigned long long)r.cases,
+                    (unsigned long long)conv, (unsigned long long)r.fp, (unsigned long long)r.fn);
+      std::cout << line;
+      nlohmann::json jr = {{"family", fam}, {"cases", r.cases}, {"convention", conv}, {"refused", r.refused},
+                           {"false_positives", r.fp}, {"false_negatives", r.fn}};
+      for (const auto& g : ad.graded) {
+        std::snprintf(line, sizeof line, "  %10llu/%-10llu", (unsigned long long)r.ulps[g].first,
+                      (unsigned long long)r.ulps[g].second);
+        std::cout << line;
+        jr["ulps"][g] = {{"p99", r.ulps[g].first}, {"max", r.ulps[g].second}};
+      }
+      std::cout << "\n";
+      ja["families"].push_back(jr);
+    }
+    j.push_back(ja);
+  }
+  if (!json_out.empty()) {
+    std::ofstream o(json_out);
+    if (!(o << j.dump(1) << "\n")) throw std::runtime_error("cannot write " + json_out);
+  }
+  return 0;
+}
+
+}  // namespace cdref::peers
