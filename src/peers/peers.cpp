@@ -9,7 +9,7 @@
 // remains is the function's numerical drift, graded like any implementation of a campaign.
 //
 // Built when GLM (libglm-dev), Bullet (libbullet-dev) and Eigen are present; Bullet in its
-// float build (the default btScalar). All adapters run at float (precision 24): the inputs
+// float build (the default btScalar; its header-only functions, so nothing is linked). All adapters run at float (precision 24): the inputs
 // are the cases' float roundings.
 #include <CGAL/Gmpq.h>
 
@@ -183,6 +183,33 @@ std::vector<Adapter> adapters() {
                    Out o(seg_box, hit);
                    return o.set("lambda_enter", {param}).set("normal", {-n.x(), -n.y(), -n.z()}).a;
                  }});
+  out.push_back({"Bullet 3.24 (float)", "btRayAabb2 (slabs with the inverse direction, lambda in [0, 1])",
+                 "segment-box-cast",
+                 "a source inside the box gives the slabs' entry, which is negative (cdref: 0), so those cases are "
+                 "set apart; the adapter computes the inverse direction as Bullet's callers do (BT_LARGE_FLOAT for "
+                 "a zero component) and the box as min and max in float",
+                 {"lambda_enter"},
+                 [](const Inputs& in, const Answer&) {  // the source inside or on the box, exactly
+                   for (int i = 0; i < 3; ++i) {
+                     const Q d = Q(in[i]) - Q(in[6 + i]), h(in[9 + i]);
+                     if (d > h || -d > h) return false;
+                   }
+                   return true;
+                 },
+                 [seg_box, bt](const Inputs& in) {
+                   const btVector3 s = bt(in, 0), t = bt(in, 3), c = bt(in, 6), h = bt(in, 9);
+                   const btVector3 dir = t - s;
+                   btVector3 inv;
+                   unsigned sign[3];
+                   for (int i = 0; i < 3; ++i) {
+                     inv[i] = dir[i] == btScalar(0) ? btScalar(BT_LARGE_FLOAT) : btScalar(1) / dir[i];
+                     sign[i] = inv[i] < btScalar(0);
+                   }
+                   const btVector3 bounds[2] = {c - h, c + h};
+                   btScalar tmin = 0;
+                   const bool hit = btRayAabb2(s, inv, sign, bounds, tmin, 0, 1);
+                   return Out(seg_box, hit).set("lambda_enter", {tmin}).a;
+                 }});
   out.push_back({"Bullet 3.24 (float)", "TestAabbAgainstAabb2", "box-box",
                  "none; the adapter gives each box as min and max rounded to float", {},
                  [](const Inputs&, const Answer&) { return false; },
@@ -236,6 +263,19 @@ std::vector<Adapter> adapters() {
                    const float e = Eigen::AlignedBox3f(c - h, c + h).exteriorDistance(p);
                    Out o(sphere_box, e <= r);
                    return o.set("distance", {std::max(e - r, 0.0f)}).a;
+                 }});
+  out.push_back({"Eigen 3.4", "ParametrizedLine3f::intersectionParameter with Hyperplane3f::Through(v0, v1, v2)",
+                 "ray-triangle-cast",
+                 "a plane, not a triangle: the cases the exact answer calls a miss, and rays in the plane, are set "
+                 "apart; a hit is a finite parameter >= 0",
+                 {"lambda_enter"},
+                 [](const Inputs& in, const Answer& t) { return !t.cls || in_plane(in); },
+                 [ray_tri](const Inputs& in) {
+                   auto v = [&](int k) { return Eigen::Vector3f(f(in[k]), f(in[k + 1]), f(in[k + 2])); };
+                   const Eigen::ParametrizedLine<float, 3> line(v(0), v(3));
+                   const auto plane = Eigen::Hyperplane<float, 3>::Through(v(6), v(9), v(12));
+                   const float t = line.intersectionParameter(plane);
+                   return Out(ray_tri, std::isfinite(t) && t >= 0).set("lambda_enter", {t}).a;
                  }});
   return out;
 }
