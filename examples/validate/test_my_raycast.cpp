@@ -68,3 +68,35 @@ TEST_CASE("my float ray cast: exact on uniform cases, wrong near tangency") {
               (unsigned long long)tangent.false_positives(), (unsigned long long)tangent.false_negatives());
   CHECK(tangent.misclassified() > 0);
 }
+
+TEST_CASE("a cast with another convention: a source inside reports the exit point") {
+  // like several libraries, this cast reports where the ray leaves a sphere it starts in;
+  // those cases mean something else than cdref's (a hit at lambda 0) and are set apart
+  auto exit_convention = [](const cdref::validate::Case& c) {
+    const auto s = c.vec("source"), d = c.vec("direction"), ctr = c.vec("center");
+    const Hit h = my_raycast<double>(s.data(), d.data(), ctr.data(), c("radius"));
+    if (!h.hit || h.t != 0) return cdref::validate::Answer(h.hit).value("lambda_enter", h.t);
+    double m[3], a = 0, b = 0, k = -c("radius") * c("radius");  // inside: the far root
+    for (int i = 0; i < 3; ++i) {
+      m[i] = s[i] - ctr[i];
+      a += d[i] * d[i];
+      b += d[i] * m[i];
+      k += m[i] * m[i];
+    }
+    return cdref::validate::Answer(true).value("lambda_enter", (-b + std::sqrt(b * b - a * k)) / a);
+  };
+  cdref::validate::Options o{.query = "ray-sphere-cast", .families = {"uniform"}, .n = 2000};
+  o.convention = [](const cdref::validate::Case& c) {
+    return c.exact_classification() && c.exact_value("lambda_enter") == 0;  // the source inside or on
+  };
+  const auto report = cdref::validate::run(o, exit_convention);
+  INFO(report.table());
+  std::printf("exit convention, uniform: %llu cases set apart, %llu misclassified among the rest\n",
+              (unsigned long long)report.convention_cases, (unsigned long long)report.misclassified());
+  CHECK(report.convention_cases > 0);
+  CHECK(report.misclassified() == 0);
+  CHECK(report.max_ulps("lambda_enter") <= 88);  // the other cases are the plain cast's
+  // without the convention the 42 exits would be graded as errors against lambda 0
+  o.convention = nullptr;
+  CHECK(cdref::validate::run(o, exit_convention).max_ulps("lambda_enter") > 1000000);
+}

@@ -30,6 +30,8 @@
 
 namespace cdref::validate {
 
+class Case;
+
 struct Options {
   std::string query;                  // a query's name: "ray-sphere-cast", "sphere-box", ...
   std::vector<std::string> families;  // empty: every family of the query
@@ -38,19 +40,30 @@ struct Options {
   int precision = 53;                 // 24 float, 53 double, 64 long double
   int threads = 1;
   std::string name = "yours";         // the implementation's name in the report
+  // Where your implementation's convention gives another meaning than cdref's (a ray starting
+  // inside reported at its exit, a one-sided triangle, hits behind the source), say so: the
+  // cases for which this returns true are counted apart (Report::convention_cases) and not
+  // graded, so a difference of meaning is never reported as drift. It may read the exact
+  // answer through Case::exact_*.
+  std::function<bool(const Case&)> convention;
 };
 
 // One case's inputs, by column name.
 class Case {
  public:
-  Case(const fuzz::QueryInfo& qi, const fuzz::Inputs& in) : qi_(&qi), in_(&in) {}
+  Case(const fuzz::QueryInfo& qi, const fuzz::Inputs& in, int precision = 53)
+      : qi_(&qi), in_(&in), precision_(precision) {}
   double operator()(const std::string& column) const;  // throws std::invalid_argument naming the columns
   Vec3<double> vec(const std::string& prefix) const;   // prefix_x, prefix_y, prefix_z
   const fuzz::Inputs& inputs() const { return *in_; }
+  // The exact answer for this case (from the oracle, values rounded to the precision).
+  bool exact_classification() const;
+  double exact_value(const std::string& group, int component = 0) const;
 
  private:
   const fuzz::QueryInfo* qi_;
   const fuzz::Inputs* in_;
+  int precision_;
 };
 
 // An implementation's answer: the classification, and the output groups it computes.
@@ -84,6 +97,7 @@ class Report {
   std::uint64_t false_positives() const;  // says hit / intersect where the exact answer does not
   std::uint64_t false_negatives() const;
   std::uint64_t refused() const;          // inputs the precision cannot hold, or the callable refused
+  std::uint64_t convention_cases = 0;     // set apart by Options::convention, not graded
   // Over every graded case of an output group: the largest error, and the 99th percentile
   // (the lower edge of its histogram bin, an eighth of an octave wide), in ulps of the
   // precision. An unknown group throws std::invalid_argument naming the groups.
