@@ -83,7 +83,7 @@ const char* usage = R"(usage:
                                  runs both and prints the events they disagree on and the
                                  differences of the continuous outputs (default: float,exact
                                  and double,exact); --svg draws the top view with the events
-  cdref peers [--n N] [--seed S] [--threads T] [--json F]
+  cdref peers [--n N] [--seed S] [--threads T] [--json F] [--svg F]
                                  GLM's, Bullet's and Eigen's functions on cdref's families at
                                  float against the exact answer: cases where their convention
                                  gives another meaning set apart, misclassifications, p99/max ulps

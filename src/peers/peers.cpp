@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 #include <cdref/error.hpp>
 #include <cdref/fuzz/campaign.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -286,11 +287,70 @@ struct Row {
   std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> ulps;  // group -> (p99, max)
 };
 
+// Drift against scale: one panel per family with more than one scale, one curve per
+// library function (the share of its graded cases it misclassifies).
+std::string svg(const std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>>& curves,
+                std::uint64_t n, std::uint64_t seed) {
+  std::vector<std::string> fams;
+  for (const auto& [fam, fns] : curves) {
+    bool several = false;
+    for (const auto& [fn, pts] : fns) several = several || pts.size() > 1;
+    if (several) fams.push_back(fam);
+  }
+  const double pw = 420, ph = 250, legend = 18;
+  const int cols = 2, rows = int((fams.size() + cols - 1) / cols);
+  std::size_t most = 0;
+  for (const auto& fam : fams) most = std::max(most, curves.at(fam).size());
+  const double cell_h = ph + 60 + legend * double(most);
+  std::ostringstream o;
+  o.precision(5);
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << cols * (pw + 200) << "\" height=\"" << rows * cell_h + 40
+    << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    << "<text x=\"10\" y=\"20\" font-size=\"14\">Library functions at float: misclassified share of the graded cases "
+       "against the family's scale ("
+    << n << " cases per scale, seed " << seed << ")</text>\n";
+  const char* colour[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+  for (std::size_t p = 0; p < fams.size(); ++p) {
+    const double x0 = 60 + double(p % cols) * (pw + 200), y0 = 50 + double(p / cols) * cell_h;
+    const auto& fns = curves.at(fams[p]);
+    int lo = 1 << 30, hi = -(1 << 30);
+    double top = 1;
+    for (const auto& [fn, pts] : fns)
+      for (const auto& [sc, v] : pts) lo = std::min(lo, sc), hi = std::max(hi, sc), top = std::max(top, v);
+    top = std::ceil(top / 10) * 10;
+    if (hi == lo) hi = lo + 1;
+    auto X = [&](double sc) { return x0 + (sc - lo) / double(hi - lo) * pw; };
+    auto Y = [&](double v) { return y0 + ph - v / top * ph; };
+    o << "<text x=\"" << x0 << "\" y=\"" << y0 - 6 << "\" font-size=\"13\">" << fams[p] << "</text>\n"
+      << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << pw << "\" height=\"" << ph
+      << "\" fill=\"none\" stroke=\"#999\"/>\n";
+    for (int t = 0; t <= 4; ++t)
+      o << "<text x=\"" << x0 - 6 << "\" y=\"" << Y(top * t / 4) + 4 << "\" text-anchor=\"end\">" << top * t / 4 << "%</text>\n";
+    o << "<text x=\"" << x0 << "\" y=\"" << y0 + ph + 14 << "\">scale " << lo << "</text><text x=\"" << x0 + pw
+      << "\" y=\"" << y0 + ph + 14 << "\" text-anchor=\"end\">" << hi << "</text>\n";
+    int c = 0;
+    for (const auto& [fn, pts0] : fns) {
+      auto pts = pts0;
+      std::sort(pts.begin(), pts.end());
+      const char* col = colour[c % 10];
+      o << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"1.5\" points=\"";
+      for (const auto& [sc, v] : pts) o << X(sc) << "," << Y(v) << " ";
+      o << "\"/>\n";
+      for (const auto& [sc, v] : pts)
+        o << "<circle cx=\"" << X(sc) << "\" cy=\"" << Y(v) << "\" r=\"2.5\" fill=\"" << col << "\"/>\n";
+      o << "<text x=\"" << x0 << "\" y=\"" << y0 + ph + 32 + legend * c << "\" fill=\"" << col << "\">" << fn << "</text>\n";
+      ++c;
+    }
+  }
+  o << "</svg>\n";
+  return o.str();
+}
+
 }  // namespace
 
 int peers_command(const std::vector<std::string>& args) {
   std::uint64_t n = 2000, seed = 1;
-  std::string json_out;
+  std::string json_out, svg_out;
   int threads = 2;
   for (std::size_t i = 0; i < args.size(); ++i) {
     auto value = [&]() -> std::string {
@@ -305,10 +365,14 @@ int peers_command(const std::vector<std::string>& args) {
       threads = std::stoi(value());
     else if (args[i] == "--json")
       json_out = value();
+    else if (args[i] == "--svg")
+      svg_out = value();
     else
-      throw std::invalid_argument("unknown option '" + args[i] + "' for peers (--n, --seed, --threads, --json)");
+      throw std::invalid_argument("unknown option '" + args[i] + "' for peers (--n, --seed, --threads, --json, --svg)");
   }
   nlohmann::json j = nlohmann::json::array();
+  // family -> function -> (scale, misclassified %)
+  std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>> curves;
   std::cout << "Library functions on cdref's families at float, against the exact answer (" << n
             << " cases per family and scale, seed " << seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
@@ -341,12 +405,20 @@ int peers_command(const std::vector<std::string>& args) {
     const fuzz::Results res = fuzz::run(spec);
     std::map<std::string, Row> rows;
     const auto& outs = fuzz::info(q).outputs;
+    std::map<std::pair<std::string, int>, std::uint64_t> all_refused;
+    for (const auto& [k, st] : res.cells)
+      if (k.impl == "peer-all") all_refused[{k.family, k.scale}] = st.refused;
     for (const auto& [k, st] : res.cells) {
       Row& r = rows[k.family];
       r.family = k.family;
       if (k.impl == "peer-all") {
         r.refused += st.refused;
         continue;
+      }
+      {  // the misclassified share of the graded cases, per scale, for the picture
+        const std::uint64_t graded = st.n - st.refused;
+        curves[k.family][ad.library + ": " + ad.function].push_back(
+            {k.scale, graded ? 100.0 * double(st.cls_fp + st.cls_fn) / double(graded) : 0.0});
       }
       r.cases += st.n;
       r.convention += st.refused;  // corrected below by the inputs float cannot hold
@@ -391,6 +463,10 @@ int peers_command(const std::vector<std::string>& args) {
       ja["families"].push_back(jr);
     }
     j.push_back(ja);
+  }
+  if (!svg_out.empty()) {
+    std::ofstream o(svg_out);
+    if (!(o << svg(curves, n, seed))) throw std::runtime_error("cannot write " + svg_out);
   }
   if (!json_out.empty()) {
     std::ofstream o(json_out);
