@@ -159,7 +159,8 @@ set -e
 [ "$st" = 1 ] && grep -q "body 'o' radius (9.9999999999999994e+38) is beyond float's range" err.txt \
   && grep -q "^double against exact: 1 events at the same frame" out.txt || fail "scene beyond float: status $st, $(cat err.txt)"
 # peers: every adapter runs on its query's families; the JSON has a row per family
-"$cdref" peers --n 40 --json peers.json > peers.txt
+"$cdref" peers --n 40 --json peers.json --svg peers.svg > peers.txt
+grep -q "<svg" peers.svg || fail "peers SVG"
 python3 -c "
 import json
 d = json.load(open('peers.json'))

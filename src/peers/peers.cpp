@@ -33,6 +33,7 @@
 #include <glm/gtx/intersect.hpp>
 #endif
 #ifdef CDREF_HAVE_BULLET
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <LinearMath/btVector3.h>
 #endif
@@ -211,6 +212,47 @@ std::vector<Adapter> adapters() {
                    const bool hit = btRayAabb2(s, inv, sign, bounds, tmin, 0, 1);
                    return Out(seg_box, hit).set("lambda_enter", {tmin}).a;
                  }});
+  out.push_back(
+      {"Bullet 3.24 (float)", "btTriangleRaycastCallback::processTriangle (segment, both faces)", "segment-triangle-cast",
+       "the segment must cross the triangle's plane strictly (an end on the plane, or a segment in it, is no hit), "
+       "and the triangle is grown by a tolerance of 1e-4 |n|^2 on its edge functions: the cases where either "
+       "decides otherwise than the closed triangle, decided exactly, are set apart",
+       {"lambda_enter", "normal"},
+       [](const Inputs& in, const Answer& t) {
+         const QV a = qv(in, 0), b = qv(in, 3), v0 = qv(in, 6), v1 = qv(in, 9), v2 = qv(in, 12);
+         const QV n = cross(sub(v1, v0), sub(v2, v0));
+         const Q da = dot(n, sub(a, v0)), db = dot(n, sub(b, v0));
+         if (da * db >= 0) return t.cls;  // no strict crossing: Bullet never hits; set apart where the truth does
+         // the crossing point and the edge functions with Bullet's tolerance, exactly
+         const Q s = da / (da - db);
+         const QV p{a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)};
+         const Q tol = Q(double(btScalar(-0.0001))) * dot(n, n);
+         const QV q0 = sub(v0, p), q1 = sub(v1, p), q2 = sub(v2, p);
+         const bool grown = dot(cross(q0, q1), n) >= tol && dot(cross(q1, q2), n) >= tol && dot(cross(q2, q0), n) >= tol;
+         return grown != t.cls;
+       },
+       [](const Inputs& in) {
+         struct Catch : btTriangleRaycastCallback {
+           bool hit = false;
+           btScalar fraction = 0;
+           btVector3 normal{0, 0, 0};
+           Catch(const btVector3& from, const btVector3& to) : btTriangleRaycastCallback(from, to, 0) {}
+           btScalar reportHit(const btVector3& n, btScalar f, int, int) override {
+             hit = true;
+             fraction = f;
+             normal = n;
+             return f;
+           }
+         };
+         auto v = [&](int k) { return btVector3(f(in[k]), f(in[k + 1]), f(in[k + 2])); };
+         btVector3 tri[3] = {v(6), v(9), v(12)};
+         Catch c(v(0), v(3));
+         c.processTriangle(tri, 0, 0);
+         return Out(fuzz::query_by_name("segment-triangle-cast"), c.hit)
+             .set("lambda_enter", {c.fraction})
+             .set("normal", {c.normal.x(), c.normal.y(), c.normal.z()})
+             .a;
+       }});
   out.push_back({"Bullet 3.24 (float)", "TestAabbAgainstAabb2", "box-box",
                  "none; the adapter gives each box as min and max rounded to float", {},
                  [](const Inputs&, const Answer&) { return false; },
