@@ -33,6 +33,12 @@
 #include <glm/gtx/intersect.hpp>
 #endif
 #ifdef CDREF_HAVE_BULLET
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionDispatch/btSphereBoxCollisionAlgorithm.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <LinearMath/btVector3.h>
@@ -252,6 +258,39 @@ std::vector<Adapter> adapters() {
              .set("lambda_enter", {c.fraction})
              .set("normal", {c.normal.x(), c.normal.y(), c.normal.z()})
              .a;
+       }});
+  out.push_back(
+      {"Bullet 3.24 (float)", "btSphereBoxCollisionAlgorithm::getSphereDistance (box margin 0)", "sphere-box",
+       "none with the box's collision margin set to 0 (Bullet's default 0.04 rounds the box's corners by it); "
+       "Bullet's signed distance d (negative inside) gives intersect = d <= 0, distance = max(d, 0), depth = "
+       "max(-d, 0); a contact distance of 1e18 makes it answer every case",
+       {"distance", "depth"},
+       [](const Inputs&, const Answer&) { return false; },
+       [sphere_box, bt](const Inputs& in) {
+         btBoxShape box(bt(in, 7));
+         box.setMargin(0);
+         btSphereShape ball(f(in[3]));
+         btTransform at;
+         at.setIdentity();
+         at.setOrigin(bt(in, 4));
+         btTransform sat;
+         sat.setIdentity();
+         sat.setOrigin(bt(in, 0));
+         btCollisionObject box_obj, ball_obj;
+         box_obj.setCollisionShape(&box);
+         box_obj.setWorldTransform(at);
+         ball_obj.setCollisionShape(&ball);
+         ball_obj.setWorldTransform(sat);
+         const btCollisionObjectWrapper bw(nullptr, &box, &box_obj, at, -1, -1);
+         const btCollisionObjectWrapper sw(nullptr, &ball, &ball_obj, sat, -1, -1);
+         btCollisionAlgorithmConstructionInfo ci;
+         btPersistentManifold manifold;
+         btSphereBoxCollisionAlgorithm alg(&manifold, ci, &sw, &bw, false);
+         btVector3 on_box, normal;
+         btScalar d = 0;
+         if (!alg.getSphereDistance(&bw, on_box, normal, d, bt(in, 0), f(in[3]), btScalar(1e18)))
+           throw invalid_input("getSphereDistance answered no distance");
+         return Out(sphere_box, d <= 0).set("distance", {std::max<btScalar>(d, 0)}).set("depth", {std::max<btScalar>(-d, 0)}).a;
        }});
   out.push_back({"Bullet 3.24 (float)", "TestAabbAgainstAabb2", "box-box",
                  "none; the adapter gives each box as min and max rounded to float", {},
