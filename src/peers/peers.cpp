@@ -8,9 +8,11 @@
 // the exact answer and set apart as "convention" cases: they are not counted as drift. What
 // remains is the function's numerical drift, graded like any implementation of a campaign.
 //
-// Built when GLM (libglm-dev), Bullet (libbullet-dev) and Eigen are present; Bullet in its
-// float build (the default btScalar; its header-only functions, so nothing is linked). All adapters run at float (precision 24): the inputs
-// are the cases' float roundings.
+// Built when GLM (libglm-dev), Bullet (libbullet-dev) and Eigen are present. GLM, Eigen and
+// Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
+// Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
+// compiled with CDREF_BULLET64 and BT_USE_DOUBLE_PRECISION), because its inline functions carry
+// the same names as the float build's.
 #include <CGAL/Gmpq.h>
 
 #include <Eigen/Geometry>
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -26,6 +29,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #ifdef CDREF_HAVE_GLM
 #define GLM_ENABLE_EXPERIMENTAL
@@ -61,7 +65,16 @@ struct Adapter {
   std::function<Answer(const Inputs& in)> run;
 };
 
-float f(double x) { return float(x); }
+#ifdef CDREF_BULLET64
+using real = double;  // Bullet's float64 build: btScalar is double
+constexpr int kPrecision = 53;
+#define CDREF_BULLET_NAME "Bullet 3.24 (float64)"
+#else
+using real = float;
+constexpr int kPrecision = 24;
+#define CDREF_BULLET_NAME "Bullet 3.24 (float)"
+#endif
+real f(double x) { return real(x); }
 int group(Query q, const std::string& g, int* first) {
   int c = 0;
   const auto& outs = fuzz::info(q).outputs;
@@ -177,10 +190,10 @@ std::vector<Adapter> adapters() {
 #endif
 #ifdef CDREF_HAVE_BULLET
   auto bt = [](const Inputs& in, int k) { return btVector3(f(in[k]), f(in[k + 1]), f(in[k + 2])); };
-  out.push_back({"Bullet 3.24 (float)", "btRayAabb (segment against min-max box)", "segment-box-cast",
+  out.push_back({CDREF_BULLET_NAME, "btRayAabb (segment against min-max box)", "segment-box-cast",
                  "Bullet's normal is the entry face's inward normal (cdref's: outward), which the adapter "
                  "negates; a source inside hits at 0 with a zero normal, as in cdref; the adapter gives the box as "
-                 "min = centre - extent and max = centre + extent rounded to float",
+                 "min = centre - extent and max = centre + extent in the function's type",
                  {"lambda_enter", "normal"},
                  [](const Inputs&, const Answer&) { return false; },
                  [seg_box, bt](const Inputs& in) {
@@ -191,11 +204,11 @@ std::vector<Adapter> adapters() {
                    Out o(seg_box, hit);
                    return o.set("lambda_enter", {param}).set("normal", {-n.x(), -n.y(), -n.z()}).a;
                  }});
-  out.push_back({"Bullet 3.24 (float)", "btRayAabb2 (slabs with the inverse direction, lambda in [0, 1])",
+  out.push_back({CDREF_BULLET_NAME, "btRayAabb2 (slabs with the inverse direction, lambda in [0, 1])",
                  "segment-box-cast",
                  "a source inside the box gives the slabs' entry, which is negative (cdref: 0), so those cases are "
                  "set apart; the adapter computes the inverse direction as Bullet's callers do (BT_LARGE_FLOAT for "
-                 "a zero component) and the box as min and max in float",
+                 "a zero component) and the box as min and max in the function's type",
                  {"lambda_enter"},
                  [](const Inputs& in, const Answer&) {  // the source inside or on the box, exactly
                    for (int i = 0; i < 3; ++i) {
@@ -219,7 +232,7 @@ std::vector<Adapter> adapters() {
                    return Out(seg_box, hit).set("lambda_enter", {tmin}).a;
                  }});
   out.push_back(
-      {"Bullet 3.24 (float)", "btTriangleRaycastCallback::processTriangle (segment, both faces)", "segment-triangle-cast",
+      {CDREF_BULLET_NAME, "btTriangleRaycastCallback::processTriangle (segment, both faces)", "segment-triangle-cast",
        "the segment must cross the triangle's plane strictly (an end on the plane, or a segment in it, is no hit), "
        "and the triangle is grown by a tolerance of 1e-4 |n|^2 on its edge functions: the cases where either "
        "decides otherwise than the closed triangle, decided exactly, are set apart",
@@ -260,7 +273,7 @@ std::vector<Adapter> adapters() {
              .a;
        }});
   out.push_back(
-      {"Bullet 3.24 (float)", "btSphereBoxCollisionAlgorithm::getSphereDistance (box margin 0)", "sphere-box",
+      {CDREF_BULLET_NAME, "btSphereBoxCollisionAlgorithm::getSphereDistance (box margin 0)", "sphere-box",
        "none with the box's collision margin set to 0 (Bullet's default 0.04 rounds the box's corners by it); "
        "Bullet's signed distance d (negative inside) gives intersect = d <= 0, distance = max(d, 0), depth = "
        "max(-d, 0); a contact distance of 1e18 makes it answer every case",
@@ -292,15 +305,15 @@ std::vector<Adapter> adapters() {
            throw invalid_input("getSphereDistance answered no distance");
          return Out(sphere_box, d <= 0).set("distance", {std::max<btScalar>(d, 0)}).set("depth", {std::max<btScalar>(-d, 0)}).a;
        }});
-  out.push_back({"Bullet 3.24 (float)", "TestAabbAgainstAabb2", "box-box",
-                 "none; the adapter gives each box as min and max rounded to float", {},
+  out.push_back({CDREF_BULLET_NAME, "TestAabbAgainstAabb2", "box-box",
+                 "none; the adapter gives each box as min and max in the function's type", {},
                  [](const Inputs&, const Answer&) { return false; },
                  [box_box, bt](const Inputs& in) {
                    const btVector3 ca = bt(in, 0), ha = bt(in, 3), cb = bt(in, 6), hb = bt(in, 9);
                    return Out(box_box, TestAabbAgainstAabb2(ca - ha, ca + ha, cb - hb, cb + hb)).a;
                  }});
   out.push_back(
-      {"Bullet 3.24 (float)", "TestTriangleAgainstAabb2", "triangle-box",
+      {CDREF_BULLET_NAME, "TestTriangleAgainstAabb2", "triangle-box",
        "a conservative test: the triangle's bounds against the box, so a triangle apart from the box whose "
        "bounds meet it is reported as overlapping",
        {},
@@ -323,6 +336,7 @@ std::vector<Adapter> adapters() {
          return Out(tri_box, TestTriangleAgainstAabb2(v, c - h, c + h)).a;
        }});
 #endif
+#ifndef CDREF_BULLET64
   out.push_back({"Eigen 3.4", "AlignedBox3f::intersects", "box-box",
                  "none; the adapter gives each box as min and max rounded to float", {},
                  [](const Inputs&, const Answer&) { return false; },
@@ -359,19 +373,20 @@ std::vector<Adapter> adapters() {
                    const float t = line.intersectionParameter(plane);
                    return Out(ray_tri, std::isfinite(t) && t >= 0).set("lambda_enter", {t}).a;
                  }});
+#endif
   return out;
 }
 
-struct Row {
-  std::string family;
-  std::uint64_t cases = 0, convention = 0, refused = 0, fp = 0, fn = 0;
-  std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> ulps;  // group -> (p99, max)
-};
-
 // Drift against scale: one panel per family with more than one scale, one curve per
 // library function (the share of its graded cases it misclassifies).
-std::string svg(const std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>>& curves,
-                std::uint64_t n, std::uint64_t seed) {
+std::string svg(const nlohmann::json& results, std::uint64_t n, std::uint64_t seed) {
+  // family -> function -> (scale, misclassified %)
+  std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>> curves;
+  for (const auto& r : results)
+    for (const auto& [fam, pts] : r["curves"].items())
+      for (const auto& p : pts)
+        curves[fam][r["library"].get<std::string>() + ": " + r["function"].get<std::string>()].push_back(
+            {p[0].get<int>(), p[1].get<double>()});
   std::vector<std::string> fams;
   for (const auto& [fam, fns] : curves) {
     bool several = false;
@@ -427,133 +442,200 @@ std::string svg(const std::map<std::string, std::map<std::string, std::vector<st
   return o.str();
 }
 
-}  // namespace
+// Runs one adapter's campaign: its rows per family (cases, convention cases, misclassified,
+// p99 and max ulps of each graded output over the family) and its misclassified share per
+// scale, as JSON.
+nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, int threads) {
+  const Query q = fuzz::query_by_name(ad.query);
+  fuzz::Spec spec;
+  spec.queries = {q};
+  spec.n = n;
+  spec.seed = seed;
+  spec.threads = threads;
+  // "peer" refuses the convention cases (the engine counts them as refused, with the inputs
+  // the type cannot hold); "peer-all" refuses only the latter, so the difference counts the former
+  spec.custom.push_back({"peer", kPrecision,
+                         [&ad](Query qq, const Inputs& in) -> Answer {
+                           if (ad.differs(in, fuzz::oracle_truth(qq, in, kPrecision))) throw invalid_input("convention");
+                           return ad.run(in);
+                         },
+                         {q}});
+  spec.custom.push_back({"peer-all", kPrecision, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}});
+  spec.impls = {"peer", "peer-all"};
+  const fuzz::Results res = fuzz::run(spec);
+  struct Fam {
+    std::uint64_t cases = 0, refused_all = 0, refused = 0, fp = 0, fn = 0;
+    std::map<std::string, std::pair<fuzz::Histogram, std::uint64_t>> ulps;  // histogram, max
+  };
+  std::map<std::string, Fam> fams;
+  nlohmann::json out = {{"library", ad.library}, {"function", ad.function}, {"query", ad.query},
+                        {"convention", ad.convention}, {"graded", ad.graded}, {"precision", kPrecision}};
+  out["curves"] = nlohmann::json::object();
+  for (const auto& [k, st] : res.cells) {
+    Fam& f = fams[k.family];
+    if (k.impl == "peer-all") {
+      f.refused_all += st.refused;
+      continue;
+    }
+    const std::uint64_t graded = st.n - st.refused;
+    out["curves"][k.family].push_back({k.scale, graded ? 100.0 * double(st.cls_fp + st.cls_fn) / double(graded) : 0.0});
+    f.cases += st.n;
+    f.refused += st.refused;
+    f.fp += st.cls_fp;
+    f.fn += st.cls_fn;
+    for (const std::string& g : ad.graded) {
+      int first = 0;
+      const int gi = group(q, g, &first);
+      auto& [h, mx] = f.ulps[g];
+      for (int b = 0; b < fuzz::Histogram::bins; ++b) h.count[b] += st.out[gi].hist.count[b];
+      if (st.out[gi].worst.set) mx = std::max(mx, st.out[gi].worst.metric);
+    }
+  }
+  out["families"] = nlohmann::json::array();
+  for (auto& [fam, f] : fams) {
+    nlohmann::json jr = {{"family", fam},
+                         {"cases", f.cases},
+                         {"convention", f.refused - f.refused_all},
+                         {"refused", f.refused_all},
+                         {"false_positives", f.fp},
+                         {"false_negatives", f.fn}};
+    jr["ulps"] = nlohmann::json::object();
+    for (const auto& g : ad.graded) {
+      const auto& [h, mx] = f.ulps[g];
+      jr["ulps"][g] = {{"p99", h.total() ? h.quantile(0.99) : 0}, {"max", mx}};
+    }
+    out["families"].push_back(jr);
+  }
+  return out;
+}
 
-int peers_command(const std::vector<std::string>& args) {
+void print(std::ostream& o, const nlohmann::json& r) {
+  o << "\n" << r["library"].get<std::string>() << ": " << r["function"].get<std::string>() << " as "
+    << r["query"].get<std::string>() << "\n  convention: " << r["convention"].get<std::string>() << "\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
+  o << line;
+  for (const auto& g : r["graded"]) o << "  " << g.get<std::string>() << " p99/max";
+  o << "\n";
+  for (const auto& f : r["families"]) {
+    std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %7llu/%-8llu", f["family"].get<std::string>().c_str(),
+                  f["cases"].get<unsigned long long>(), f["convention"].get<unsigned long long>(),
+                  f["false_positives"].get<unsigned long long>(), f["false_negatives"].get<unsigned long long>());
+    o << line;
+    for (const auto& g : r["graded"]) {
+      const auto& u = f["ulps"][g.get<std::string>()];
+      std::snprintf(line, sizeof line, "  %10llu/%-10llu", u["p99"].get<unsigned long long>(), u["max"].get<unsigned long long>());
+      o << line;
+    }
+    o << "\n";
+  }
+}
+
+struct Args {
   std::uint64_t n = 2000, seed = 1;
-  std::string json_out, svg_out;
+  std::string json_out, svg_out, rows_out;
   int threads = 2;
+};
+Args parse(const std::vector<std::string>& args) {
+  Args a;
   for (std::size_t i = 0; i < args.size(); ++i) {
     auto value = [&]() -> std::string {
       if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + " needs a value");
       return args[++i];
     };
+    auto whole = [&](const std::string& v) {
+      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument(args[i - 1] + " wants a whole number, not '" + v + "'");
+      return std::stoull(v);
+    };
     if (args[i] == "--n")
-      n = std::stoull(value());
+      a.n = whole(value());
     else if (args[i] == "--seed")
-      seed = std::stoull(value());
+      a.seed = whole(value());
     else if (args[i] == "--threads")
-      threads = std::stoi(value());
+      a.threads = int(std::max<std::uint64_t>(1, whole(value())));
     else if (args[i] == "--json")
-      json_out = value();
+      a.json_out = value();
     else if (args[i] == "--svg")
-      svg_out = value();
+      a.svg_out = value();
+    else if (args[i] == "--rows")  // the float64 helper's output (internal)
+      a.rows_out = value();
     else
       throw std::invalid_argument("unknown option '" + args[i] + "' for peers (--n, --seed, --threads, --json, --svg)");
   }
-  nlohmann::json j = nlohmann::json::array();
-  // family -> function -> (scale, misclassified %)
-  std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>> curves;
-  std::cout << "Library functions on cdref's families at float, against the exact answer (" << n
-            << " cases per family and scale, seed " << seed << ").\n"
+  if (a.n == 0) throw std::invalid_argument("--n must be at least 1");
+  return a;
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream o(path);
+  if (!(o << text) || !o.flush()) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+#ifdef CDREF_BULLET64
+// cdref_peers_bullet64: Bullet's float64 build in its own process (its inline functions carry
+// the float build's names), run by `cdref peers`, which prints its rows with the others.
+int helper_main(const std::vector<std::string>& args) {
+  const Args a = parse(args);
+  nlohmann::json all = nlohmann::json::array();
+  for (const Adapter& ad : adapters()) all.push_back(collect(ad, a.n, a.seed, a.threads));
+  write_file(a.rows_out, all.dump() + "\n");
+  return 0;
+}
+#else
+int peers_command(const std::vector<std::string>& args) {
+  const Args a = parse(args);
+  std::cout << "Library functions on cdref's families, against the exact answer (" << a.n
+            << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
-            << "misclassified: false positives / false negatives among the others; errors in ulps of float (p99 / max).\n";
+            << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
+               "type (float; double for Bullet's float64 build): p99 / max.\n";
 #ifndef CDREF_HAVE_GLM
   std::cout << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
 #endif
 #ifndef CDREF_HAVE_BULLET
   std::cout << "(Bullet not found at build time: apt-get install libbullet-dev and rebuild)\n";
 #endif
+  nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
-    const Query q = fuzz::query_by_name(ad.query);
-    fuzz::Spec spec;
-    spec.queries = {q};
-    spec.n = n;
-    spec.seed = seed;
-    spec.threads = threads;
-    spec.impls = {"peer"};
-    spec.custom.push_back({"peer", 24,
-                           [&ad](Query qq, const Inputs& in) -> Answer {
-                             const Answer truth = fuzz::oracle_truth(qq, in, 24);
-                             if (ad.differs(in, truth)) throw invalid_input("convention");
-                             return ad.run(in);
-                           },
-                           {q}});
-    // the convention cases counted apart: the engine counts them as refused, with the
-    // inputs float cannot hold; the latter are counted by a second pass that refuses only them
-    spec.custom.push_back({"peer-all", 24, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}});
-    spec.impls.push_back("peer-all");
-    const fuzz::Results res = fuzz::run(spec);
-    std::map<std::string, Row> rows;
-    const auto& outs = fuzz::info(q).outputs;
-    std::map<std::pair<std::string, int>, std::uint64_t> all_refused;
-    for (const auto& [k, st] : res.cells)
-      if (k.impl == "peer-all") all_refused[{k.family, k.scale}] = st.refused;
-    for (const auto& [k, st] : res.cells) {
-      Row& r = rows[k.family];
-      r.family = k.family;
-      if (k.impl == "peer-all") {
-        r.refused += st.refused;
-        continue;
-      }
-      {  // the misclassified share of the graded cases, per scale, for the picture
-        const std::uint64_t graded = st.n - st.refused;
-        curves[k.family][ad.library + ": " + ad.function].push_back(
-            {k.scale, graded ? 100.0 * double(st.cls_fp + st.cls_fn) / double(graded) : 0.0});
-      }
-      r.cases += st.n;
-      r.convention += st.refused;  // corrected below by the inputs float cannot hold
-      r.fp += st.cls_fp;
-      r.fn += st.cls_fn;
-      for (const std::string& g : ad.graded) {
-        int first = 0;
-        const int gi = group(q, g, &first);
-        (void)outs;
-        auto& u = r.ulps[g];
-        fuzz::Histogram h = st.out[gi].hist;
-        u.second = std::max<std::uint64_t>(u.second, st.out[gi].worst.set ? st.out[gi].worst.metric : 0);
-        u.first = std::max<std::uint64_t>(u.first, h.total() ? h.quantile(0.99) : 0);
-      }
+    all.push_back(collect(ad, a.n, a.seed, a.threads));
+    print(std::cout, all.back());
+  }
+  // Bullet's float64 build, from its helper beside this executable
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
+  const std::string helper = exe.substr(0, exe.rfind('/') + 1) + "cdref_peers_bullet64";
+  if (std::filesystem::exists(helper)) {
+    const std::string rows = std::filesystem::temp_directory_path() / ("cdref-peers-" + std::to_string(::getpid()) + ".json");
+    const std::string cmd = "'" + helper + "' --n " + std::to_string(a.n) + " --seed " + std::to_string(a.seed) +
+                            " --threads " + std::to_string(a.threads) + " --rows '" + rows + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the float64 helper failed: " + cmd);
+    std::ifstream in(rows);
+    const nlohmann::json more = nlohmann::json::parse(in);
+    std::filesystem::remove(rows);
+    for (const auto& r : more) {
+      all.push_back(r);
+      print(std::cout, r);
     }
-    std::cout << "\n" << ad.library << ": " << ad.function << " as " << ad.query << "\n  convention: " << ad.convention
-              << "\n";
-    char line[256];
-    std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
-    std::cout << line;
-    for (const auto& g : ad.graded) std::cout << "  " << g << " p99/max";
-    std::cout << "\n";
-    nlohmann::json ja;
-    ja["library"] = ad.library;
-    ja["function"] = ad.function;
-    ja["query"] = ad.query;
-    ja["convention"] = ad.convention;
-    for (auto& [fam, r] : rows) {
-      const std::uint64_t conv = r.convention - r.refused;  // refused at float for both passes
-      std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %7llu/%-8llu", fam.c_str(), (unsigned long long)r.cases,
-                    (unsigned long long)conv, (unsigned long long)r.fp, (unsigned long long)r.fn);
-      std::cout << line;
-      nlohmann::json jr = {{"family", fam}, {"cases", r.cases}, {"convention", conv}, {"refused", r.refused},
-                           {"false_positives", r.fp}, {"false_negatives", r.fn}};
-      for (const auto& g : ad.graded) {
-        std::snprintf(line, sizeof line, "  %10llu/%-10llu", (unsigned long long)r.ulps[g].first,
-                      (unsigned long long)r.ulps[g].second);
-        std::cout << line;
-        jr["ulps"][g] = {{"p99", r.ulps[g].first}, {"max", r.ulps[g].second}};
-      }
-      std::cout << "\n";
-      ja["families"].push_back(jr);
-    }
-    j.push_back(ja);
+  } else {
+    std::cout << "\n(Bullet's float64 build: no helper " << helper << ")\n";
   }
-  if (!svg_out.empty()) {
-    std::ofstream o(svg_out);
-    if (!(o << svg(curves, n, seed))) throw std::runtime_error("cannot write " + svg_out);
-  }
-  if (!json_out.empty()) {
-    std::ofstream o(json_out);
-    if (!(o << j.dump(1) << "\n")) throw std::runtime_error("cannot write " + json_out);
-  }
+  if (!a.svg_out.empty()) write_file(a.svg_out, svg(all, a.n, a.seed));
+  if (!a.json_out.empty()) write_file(a.json_out, all.dump(1) + "\n");
   return 0;
 }
+#endif
 
 }  // namespace cdref::peers
+
+#ifdef CDREF_BULLET64
+int main(int argc, char** argv) {
+  try {
+    return cdref::peers::helper_main({argv + 1, argv + argc});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cdref_peers_bullet64: %s\n", e.what());
+    return 2;
+  }
+}
+#endif
