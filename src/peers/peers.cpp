@@ -546,6 +546,7 @@ Args parse(const std::vector<std::string>& args) {
     auto whole = [&](const std::string& v) {
       if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
         throw std::invalid_argument(args[i - 1] + " wants a whole number, not '" + v + "'");
+      if (v.size() > 12) throw std::invalid_argument(args[i - 1] + " is too large ('" + v + "')");
       return std::stoull(v);
     };
     if (args[i] == "--n")
