@@ -5,5 +5,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 cmake --preset release >/dev/null
-cmake --build --preset release --target cdref
+cmake --build --preset release --target cdref_tools
 exec ./build/release/cdref "$@"
