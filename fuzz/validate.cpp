@@ -22,7 +22,10 @@ std::string group_list(const fuzz::QueryInfo& qi) {
   for (const auto& o : qi.outputs) s += (s.empty() ? "" : ", ") + o.name;
   return s;
 }
-int group_of(const fuzz::QueryInfo& qi, const std::string& g, int* first = nullptr) {
+
+}  // namespace
+
+int output_group(const fuzz::QueryInfo& qi, const std::string& g, int* first) {
   int c = 0;
   for (std::size_t k = 0; k < qi.outputs.size(); ++k) {
     if (qi.outputs[k].name == g) {
@@ -33,8 +36,6 @@ int group_of(const fuzz::QueryInfo& qi, const std::string& g, int* first = nullp
   }
   throw std::invalid_argument(std::string(qi.name) + " has no output '" + g + "' (its outputs: " + group_list(qi) + ")");
 }
-
-}  // namespace
 
 double Case::operator()(const std::string& column) const {
   for (std::size_t k = 0; k < qi_->inputs.size(); ++k)
@@ -49,7 +50,7 @@ Vec3<double> Case::vec(const std::string& prefix) const {
 bool Case::exact_classification() const { return fuzz::oracle_truth(qi_->q, *in_, precision_).cls; }
 double Case::exact_value(const std::string& group, int component) const {
   int first = 0;
-  const int g = group_of(*qi_, group, &first);
+  const int g = output_group(*qi_, group, &first);
   if (component < 0 || component >= qi_->outputs[g].width) throw std::invalid_argument(group + ": no such component");
   return double(fuzz::oracle_truth(qi_->q, *in_, precision_).v[first + component]);
 }
@@ -94,7 +95,7 @@ Report run(const Options& o, const std::function<Answer(const Case&)>& impl) {
                            r.given = 0;
                            for (const auto& nv : a.values()) {
                              int first = 0;
-                             const int g = group_of(qi, nv.group, &first);
+                             const int g = output_group(qi, nv.group, &first);
                              if (int(nv.v.size()) != qi.outputs[g].width)
                                throw std::invalid_argument(nv.group + " has " + std::to_string(qi.outputs[g].width) +
                                                            " components");
@@ -136,14 +137,14 @@ std::uint64_t Report::refused() const {
   return n - convention_cases;  // the engine counts convention cases as refused
 }
 std::uint64_t Report::max_ulps(const std::string& group) const {
-  const int g = group_of(fuzz::info(fuzz::query_by_name(query)), group);
+  const int g = output_group(fuzz::info(fuzz::query_by_name(query)), group);
   std::uint64_t m = 0;
   for (const auto& [k, st] : results.cells)
     if (st.out[g].worst.set && st.out[g].worst.metric > m) m = st.out[g].worst.metric;
   return m;
 }
 std::uint64_t Report::p99_ulps(const std::string& group) const {
-  const int g = group_of(fuzz::info(fuzz::query_by_name(query)), group);
+  const int g = output_group(fuzz::info(fuzz::query_by_name(query)), group);
   fuzz::Histogram all;
   for (const auto& [k, st] : results.cells)
     for (int b = 0; b < fuzz::Histogram::bins; ++b) all.count[b] += st.out[g].hist.count[b];

@@ -109,4 +109,8 @@ class Report {
 
 Report run(const Options& options, const std::function<Answer(const Case&)>& implementation);
 
+// The index of a query's output group, and (first_value) where its values start in an
+// answer; throws std::invalid_argument naming the query's groups.
+int output_group(const fuzz::QueryInfo& qi, const std::string& group, int* first_value = nullptr);
+
 }  // namespace cdref::validate

@@ -739,9 +739,7 @@ class Engine {
   template <class Shot, class Shape_>
   static auto cast_any(const Shot& shot, const Shape_& shape) {
     if constexpr (exact && std::is_same_v<Shape_, OrientedBox<T>>)
-      return solid::cast(shot, shape, want_cast);
-    else if constexpr (std::is_same_v<Shape_, Triangle<T>>)
-      return book::cast(shot, shape, want_cast);
+      return solid::cast(shot, shape, want_cast);  // the truth for any independent axes
     else
       return book::cast(shot, shape, want_cast);
   }
