@@ -195,8 +195,9 @@ bool all_finite(const Inputs& in, std::size_t n) {
   return true;
 }
 
+// stats[j]: the cell's statistics of impls[j] (null when it does not implement the query).
 void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::vector<const Implementation*>& impls,
-              bool exact_truth, Results& res) {
+              const Spec& spec, const std::vector<CellStats*>& stats) {
   const QueryInfo& qi = info(cell.q);
   const Inputs in = make_case(seed, cell.q, *cell.family, cell.scale, i);
   const Inputs in_f = float_inputs(cell.q, in);
@@ -206,8 +207,8 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   // implementations of that type and counted as such.
   bool need[3] = {false, false, false};  // precision 24, 53, 64
   auto slot = [](int precision) { return precision == 24 ? 0 : (precision == 53 ? 1 : 2); };
-  for (const Implementation* im : impls)
-    if (im->supports(cell.q)) need[slot(im->precision)] = true;
+  for (std::size_t j = 0; j < impls.size(); ++j)
+    if (stats[j]) need[slot(impls[j]->precision)] = true;
   Answer truths[3];
   bool valid[3] = {need[0] && all_finite(in_f, qi.inputs.size()), need[1], need[2]};
   for (int k = 0; k < 3; ++k) {
@@ -215,16 +216,20 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       if (valid[k]) {
         const Inputs& x = k == 0 ? in_f : in;
         const int p = k == 0 ? 24 : (k == 1 ? 53 : 64);
-        truths[k] = exact_truth ? truth(cell.q, x, p) : oracle_truth(cell.q, x, p);
+        // the classification alone needs no rounded outputs: the classification oracle
+        truths[k] = spec.exact_truth             ? truth(cell.q, x, p)
+                    : spec.classification_only ? oracle_classify(cell.q, x)
+                                               : oracle_truth(cell.q, x, p);
       }
     } catch (const invalid_input&) {
       valid[k] = false;
     }
   }
 
-  for (const Implementation* im : impls) {
-    if (!im->supports(cell.q)) continue;
-    CellStats& st = res.cells[{cell.q, im->name, cell.family->name, cell.scale}];
+  for (std::size_t j = 0; j < impls.size(); ++j) {
+    if (!stats[j]) continue;
+    const Implementation* im = impls[j];
+    CellStats& st = *stats[j];
     ++st.n;
     const bool f24 = im->precision == 24;
     if (!valid[slot(im->precision)]) {
@@ -257,6 +262,7 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       ++(a.pred ? st.pred_fp : st.pred_fn);
       st.pred_example.offer(0, i, seen, a.pred, t.pred);
     }
+    if (spec.classification_only) continue;
     int c = 0;
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const Output& out = qi.outputs[g];
@@ -323,7 +329,9 @@ std::string read_file(const std::string& path) {
 // so a campaign may be resumed or merged across the two.
 std::string Spec::fingerprint() const {
   std::ostringstream o;
-  o << "seed=" << seed << ";n=" << n << ";queries=";
+  o << "seed=" << seed << ";n=" << n;
+  if (classification_only) o << ";outputs=cls";  // (absent: every output graded)
+  o << ";queries=";
   for (Query q : queries) o << info(q).name << ",";
   o << ";impls=";
   for (const auto& i : impls) o << i << ",";
@@ -381,10 +389,17 @@ Results run(const Spec& spec) {
       try {
         for (std::uint64_t k; (k = next++) < end;) {
           const Item& it = items[k];
+          const Cell& cell = cells[it.cell];
+          std::vector<CellStats*> stats;  // looked up once per block, at its first case of this shard
           const std::uint64_t last = std::min(spec.n, it.first + block);
-          for (std::uint64_t i = it.first; i < last; ++i)
-            if (i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard))
-              run_case(cells[it.cell], spec.seed, i, impls, spec.exact_truth, local[t]);
+          for (std::uint64_t i = it.first; i < last; ++i) {
+            if (i % std::uint64_t(spec.shards) != std::uint64_t(spec.shard)) continue;
+            if (stats.empty())
+              for (const Implementation* im : impls)
+                stats.push_back(im->supports(cell.q) ? &local[t].cells[{cell.q, im->name, cell.family->name, cell.scale}]
+                                                     : nullptr);
+            run_case(cell, spec.seed, i, impls, spec, stats);
+          }
         }
       } catch (...) {
         errors[t] = std::current_exception();

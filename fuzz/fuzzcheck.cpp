@@ -82,7 +82,14 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   const bool may_refuse = qi.double_may_refuse && qi.double_may_refuse(in);
   if (g_refused != d_refused && !(may_refuse && d_refused))
     violated(q, in, "double and the exact types disagree on refusing the input");
-  if (g_refused) return;
+  if (g_refused) {
+    // the classification oracle (campaigns and case files grading the classification alone)
+    // refuses what the exact types refuse
+    Answer oc;
+    if (!refuses([&] { return oracle_classify(q, in); }, oc))
+      violated(q, in, "the classification oracle answered an input the exact types refuse");
+    return;
+  }
   if (g.cls != l.cls || g.pred != l.pred) violated(q, in, "Gmpq and Epeck::FT classify differently");
   for (int k = 0; k < max_values; ++k)
     if (!same_value(g.v[k], l.v[k])) violated(q, in, "Gmpq and Epeck::FT give different values");
@@ -99,7 +106,9 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   if (o.cls != t.cls || o.pred != t.pred) violated(q, in, "the oracle classifies differently from the truth");
   for (int k = 0; k < max_values; ++k)
     if (!same_value(o.v[k], t.v[k])) violated(q, in, "the oracle's values differ from the truth's");
-  const Answer oc = oracle_classify(q, in);
+  Answer oc;
+  if (refuses([&] { return oracle_classify(q, in); }, oc))
+    violated(q, in, "the classification oracle refused an input the exact types take");
   if (oc.cls != t.cls || oc.pred != t.pred) violated(q, in, "the classification oracle differs from the truth");
   // the robust versions: a classification they call certain is the exact one
   for (int precision : {53, 64}) {
@@ -112,6 +121,17 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
     }
     if (!r.certified) violated(q, in, "a robust version gave no certificate");
     if (r.certain && r.cls != t.cls) violated(q, in, "a robust version is certain and wrong");
+  }
+  // the stable tier (no certificate): it takes what the exact types take, and its full query
+  // and its classification alone decide alike
+  if (qi.stable) {
+    Answer s;
+    try {
+      s = qi.stable(53, in);
+    } catch (const invalid_input&) {
+      if (!may_refuse) violated(q, in, "the stable tier refused an input the exact types take");
+    }
+    if (s.cls != s.pred) violated(q, in, "the stable tier's full query and classification disagree");
   }
   {
     bool finite = true;

@@ -77,6 +77,13 @@ const std::vector<Implementation>& builtin_implementations() {
         {"robust-double", 53, [](Query q, const Inputs& in) { return info(q).robust(53, in); }},
         {"robust-long-double", 64, [](Query q, const Inputs& in) { return info(q).robust(64, in); }},
     };
+    // the stable tier, over the queries that have one
+    for (const auto& [name, precision] : {std::pair<const char*, int>{"stable-float", 24}, {"stable-double", 53}}) {
+      Implementation im{name, precision, [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }};
+      for (Query q : all_queries())
+        if (info(q).stable) im.queries.push_back(q);
+      if (!im.queries.empty()) v.push_back(std::move(im));
+    }
     // the queries' own variants; one implementation per name, over every query that has it
     std::map<std::string, std::size_t> at;
     for (Query q : all_queries())

@@ -28,7 +28,9 @@ std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::str
 // implementation receives them), as `cdref oracle` writes it. Throws cdref::invalid_input
 // naming the problem for a case outside the query's domain, non-finite inputs included (they
 // are refused by column before any exact conversion).
-fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision);
+// The exact answer to a case at the precision (24: for its inputs rounded to float); with
+// values false the classification alone (the classification oracle).
+fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision, bool values = true);
 
 int cases_command(std::vector<std::string> args);
 int oracle_command(std::vector<std::string> args);

@@ -2,8 +2,10 @@
 // one run, for every query the campaign engine runs.
 //
 // Rows (each query's descriptor makes them: fuzz/cdref/fuzz/describe.hpp; each answers the
-// same prepared inputs; a row that computes a query's outputs asks for all of them):
-//   book at float, double (all outputs, and the classification alone: book::hit or
+// same prepared inputs in one loop, no call per case; a row that computes a query's outputs
+// asks for all of them):
+//   bare: the book's classification at double without its input checks (book::unchecked),
+//   the loop a tight engine runs over bodies it checked once: the baseline; book at float, double (all outputs, and the classification alone: book::hit or
 //   book::intersect), long double, MPFR-128 and MPFR-256; robust at float, double and long
 //   double; the oracle (the classification alone, and every output correctly rounded); the
 //   book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its first output
@@ -15,10 +17,11 @@
 //   at an exact type), timed through the campaign's interface (the columns' conversion
 //   included in their time).
 // Columns: nanoseconds per query (median of interleaved repetitions over the same inputs, one
-// thread), ratio to the book at double, and for the rows the campaign engine runs: the share
+// thread), ratio to bare and to the book at double (all outputs), and for the rows the campaign engine runs: the share
 // misclassified on the uniform family and on the query's hard families (every other family),
-// and the p99 and max error in ulps of the row's type of the first output (lambda_enter or
-// distance) over all families. Exact rows and the oracle have no error by construction (the
+// and the p99 and max error in ulps of the row's type of every output group (lambda_enter,
+// lambda_exit, point, normal; distance, depth, witnesses; ...) over all families, graded where
+// the row and the truth classify alike. Exact rows and the oracle have no error by construction (the
 // oracle's equality with the exact path is tested); MPFR's error is not measured here.
 // Output: the table, and on request CSV, JSON and an SVG of cost against error (log-log, one
 // point per row, one panel per query; gnuplot).
@@ -49,13 +52,17 @@ struct Row : TimedRow {
   // errors, from the campaign
   bool measured = false;
   double miss_uniform = 0, miss_hard = 0;
-  std::uint64_t p99 = 0, max = 0;
+  std::uint64_t p99 = 0, max = 0;  // the first output group
+  // every output group measured in ulps (labels, such as a separating axis's index, left out):
+  // p99 and max over all families, in ulps of the row's type
+  std::vector<std::uint64_t> p99s, maxs;
 };
 
 struct QueryReport {
   Query q;
   std::vector<Row> rows;
   double base = 0;  // book at double, all outputs
+  double bare = 0;  // the book's classification at double without input checks
   std::size_t sink = 0;  // results of the near-boundary rows, kept so no row is optimized away
 };
 
@@ -68,6 +75,12 @@ std::string gnum(double x) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", x);
   return b;
+}
+
+const Row* find_row(const QueryReport& r, const std::string& name) {
+  for (const Row& row : r.rows)
+    if (row.name == name) return &row;
+  return nullptr;
 }
 
 QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int threads) {
@@ -100,7 +113,9 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     rows.emplace_back();
     rows.back().name = v.name + " (campaign interface)";
     rows.back().campaign_impl = v.name;
-    rows.back().run = [run = v.run, q, &cases](std::size_t k) { return run(q, cases[k]).cls; };
+    rows.back().run = [run = v.run, q, &cases](std::size_t n, char* out) {
+      for (std::size_t k = 0; k < n; ++k) out[k] = run(q, cases[k]).cls;
+    };
   }
 
   // timing: every row over the same inputs, `reps` times, interleaved; the median per row.
@@ -109,17 +124,19 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   std::vector<char> want(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) want[k] = oracle_classify(q, cases[k]).cls;
   std::vector<std::vector<double>> times(rows.size());
+  std::vector<char> got(std::max(cases.size(), hard_cases.size()));
   std::size_t sink = 0;
   for (int r = 0; r < reps; ++r)
     for (std::size_t j = 0; j < rows.size(); ++j) {
       std::size_t disagree = 0;
       const std::size_t count = rows[j].hard ? hard_cases.size() : cases.size();
       const auto t0 = std::chrono::steady_clock::now();
-      if (rows[j].hard)
-        for (std::size_t k = 0; k < count; ++k) disagree += rows[j].run(k);  // (a count, not checked)
-      else
-        for (std::size_t k = 0; k < count; ++k) disagree += rows[j].run(k) != bool(want[k]);
+      rows[j].run(count, got.data());
       const auto t1 = std::chrono::steady_clock::now();
+      if (rows[j].hard)
+        for (std::size_t k = 0; k < count; ++k) disagree += got[k];  // (a count, not checked)
+      else
+        for (std::size_t k = 0; k < count; ++k) disagree += bool(got[k]) != bool(want[k]);
       if (disagree && !rows[j].hard && rows[j].campaign_impl.empty() && rows[j].error_note == "exact")
         throw std::logic_error(rows[j].name + " disagrees with the oracle on " + std::to_string(disagree) + " of " +
                                std::to_string(cases.size()) + " " + info(q).name + " cases");
@@ -130,29 +147,37 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     std::sort(times[j].begin(), times[j].end());
     rows[j].ns = times[j][times[j].size() / 2];
   }
-  rep.base = rows.at(1).ns;  // the second row is the book at double
+  rep.bare = find_row(rep, "bare (book at double, unchecked)")->ns;
+  rep.base = find_row(rep, "book double")->ns;
   rep.sink = sink;
 
   // accuracy: a campaign over every family of the query
   Spec spec;
   spec.queries = {q};
   spec.impls = {"book-float", "book-double", "book-long-double", "robust-float", "robust-double", "robust-long-double"};
+  if (info(q).stable) spec.impls.insert(spec.impls.begin() + 3, {"stable-float", "stable-double"});
   for (const Implementation& v : info(q).variants) spec.impls.push_back(v.name);
   spec.n = err_n;
   spec.threads = threads;
   const Results res = run(spec);
+  const std::size_t groups = info(q).outputs.size();
   struct Acc {
-    std::uint64_t nu = 0, wu = 0, nh = 0, wh = 0, max = 0;
-    Histogram h;
+    std::uint64_t nu = 0, wu = 0, nh = 0, wh = 0;
+    std::vector<std::uint64_t> max;
+    std::vector<Histogram> h;
   };
   std::map<std::string, Acc> acc;
   for (const auto& [key, st] : res.cells) {
     Acc& a = acc[key.impl];
+    a.max.resize(groups);
+    a.h.resize(groups);
     const std::uint64_t m = st.n - st.refused, w = st.cls_fp + st.cls_fn;
     if (key.family == "uniform") a.nu += m, a.wu += w;
     else a.nh += m, a.wh += w;
-    for (int b = 0; b < Histogram::bins; ++b) a.h.count[b] += st.out[0].hist.count[b];
-    if (st.out[0].worst.set) a.max = std::max(a.max, st.out[0].worst.metric);
+    for (std::size_t g = 0; g < groups; ++g) {
+      for (int b = 0; b < Histogram::bins; ++b) a.h[g].count[b] += st.out[g].hist.count[b];
+      if (st.out[g].worst.set) a.max[g] = std::max(a.max[g], st.out[g].worst.metric);
+    }
   }
   for (Row& r : rows) {
     if (r.campaign_impl.empty()) continue;
@@ -160,39 +185,62 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     r.measured = true;
     r.miss_uniform = double(a.wu) / double(std::max<std::uint64_t>(1, a.nu));
     r.miss_hard = double(a.wh) / double(std::max<std::uint64_t>(1, a.nh));
-    r.p99 = a.h.quantile(0.99);
-    r.max = a.max;
+    for (std::size_t g = 0; g < groups; ++g) {
+      if (info(q).outputs[g].label) continue;
+      r.p99s.push_back(a.h[g].quantile(0.99));
+      r.maxs.push_back(a.max[g]);
+    }
+    if (!r.p99s.empty()) r.p99 = r.p99s.front(), r.max = r.maxs.front();
   }
   return rep;
-}
-
-const Row* find_row(const QueryReport& r, const std::string& name) {
-  for (const Row& row : r.rows)
-    if (row.name == name) return &row;
-  return nullptr;
 }
 
 // The first output is a value measured in ulps (not a label such as a separating axis's index).
 bool first_output_in_ulps(Query q) { return !info(q).outputs.empty() && !info(q).outputs[0].label; }
 
+// The names of the output groups measured in ulps.
+std::vector<std::string> value_outputs(Query q) {
+  std::vector<std::string> names;
+  for (const Output& out : info(q).outputs)
+    if (!out.label) names.push_back(out.name);
+  return names;
+}
+
 void print(std::ostream& o, const QueryReport& r) {
   const bool ulps = first_output_in_ulps(r.q);
+  const std::vector<std::string> outs = value_outputs(r.q);
   o << info(r.q).name << " (" << info(r.q).describe << ")\n";
   char line[320];
-  std::snprintf(line, sizeof line, "  %-30s %10s %9s %14s %14s %12s %12s\n", "implementation", "ns/query", "x double",
-                "miss uniform", "miss hard", ulps ? "p99 ulps" : "", ulps ? "max ulps" : "");
+  std::snprintf(line, sizeof line, "  %-34s %9s %8s %9s %13s %13s", "implementation", "ns/query", "x bare", "x double",
+                "miss uniform", "miss hard");
   o << line;
+  for (const std::string& name : outs) {
+    std::snprintf(line, sizeof line, " %15s", name.c_str());
+    o << line;
+  }
+  o << "\n";
+  if (!outs.empty()) {
+    std::snprintf(line, sizeof line, "  %-34s %9s %8s %9s %13s %13s", "", "", "", "", "", "");
+    o << line;
+    for (std::size_t g = 0; g < outs.size(); ++g) o << "   ulps p99/max";
+    o << "\n";
+  }
   for (const Row& row : r.rows) {
-    std::string mu = row.error_note, mh = row.error_note, p99 = ulps ? row.error_note : "",
-                mx = ulps ? row.error_note : "";
+    std::string mu = row.error_note, mh = row.error_note;
     if (row.measured) {
       mu = pct(row.miss_uniform);
       mh = pct(row.miss_hard);
-      if (ulps) p99 = gnum(double(row.p99)), mx = gnum(double(row.max));
     }
-    std::snprintf(line, sizeof line, "  %-30s %10.1f %9.2f %14s %14s %12s %12s\n", row.name.c_str(), row.ns,
-                  row.ns / r.base, mu.c_str(), mh.c_str(), p99.c_str(), mx.c_str());
+    std::snprintf(line, sizeof line, "  %-34s %9.1f %8.2f %9.2f %13s %13s", row.name.c_str(), row.ns, row.ns / r.bare,
+                  row.ns / r.base, mu.c_str(), mh.c_str());
     o << line;
+    for (std::size_t g = 0; g < outs.size(); ++g) {
+      const std::string cell =
+          row.measured && g < row.p99s.size() ? gnum(double(row.p99s[g])) + "/" + gnum(double(row.maxs[g])) : row.error_note;
+      std::snprintf(line, sizeof line, " %15s", cell.c_str());
+      o << line;
+    }
+    o << "\n";
   }
   // the two targets the report exists to watch
   const Row* oc = find_row(r, "oracle, classification");
@@ -200,8 +248,8 @@ void print(std::ostream& o, const QueryReport& r) {
   const Row* bc = find_row(r, ulps ? "book double, classification" : "book double");
   const Row* oa = find_row(r, "oracle, every output rounded");
   const Row* rd = find_row(r, "robust double");
-  std::snprintf(line, sizeof line, "  oracle classification / book double%s = %.2f", ulps ? " classification" : "",
-                oc->ns / bc->ns);
+  std::snprintf(line, sizeof line, "  oracle classification / bare = %.2f, / book double%s = %.2f", oc->ns / r.bare,
+                ulps ? " classification" : "", oc->ns / bc->ns);
   o << line;
   if (oa) {
     std::snprintf(line, sizeof line, "; oracle every output rounded / robust double = %.2f", oa->ns / rd->ns);
@@ -228,11 +276,17 @@ void write_json(std::ostream& o, const std::vector<QueryReport>& reps, std::uint
     for (std::size_t j = 0; j < r.rows.size(); ++j) {
       const Row& row = r.rows[j];
       o << (j ? ", " : "") << "{\"implementation\": \"" << json_escape(row.name) << "\", \"ns_per_query\": " << row.ns
-        << ", \"ratio_to_book_double\": " << row.ns / r.base;
+        << ", \"ratio_to_bare\": " << row.ns / r.bare << ", \"ratio_to_book_double\": " << row.ns / r.base;
       if (row.measured)
       {
         o << ", \"misclassified_uniform\": " << row.miss_uniform << ", \"misclassified_hard\": " << row.miss_hard;
         if (first_output_in_ulps(r.q)) o << ", \"p99_ulps\": " << row.p99 << ", \"max_ulps\": " << row.max;
+        const std::vector<std::string> outs = value_outputs(r.q);
+        o << ", \"outputs\": [";
+        for (std::size_t g = 0; g < outs.size() && g < row.p99s.size(); ++g)
+          o << (g ? ", " : "") << "{\"output\": \"" << outs[g] << "\", \"p99_ulps\": " << row.p99s[g]
+            << ", \"max_ulps\": " << row.maxs[g] << "}";
+        o << "]";
       }
       else
         o << ", \"error\": \"" << json_escape(row.error_note) << "\"";
@@ -244,16 +298,22 @@ void write_json(std::ostream& o, const std::vector<QueryReport>& reps, std::uint
 }
 
 void write_csv(std::ostream& o, const std::vector<QueryReport>& reps) {
-  o << "query,implementation,ns_per_query,ratio_to_book_double,misclassified_uniform,misclassified_hard,p99_ulps,max_"
-       "ulps\n";
+  o << "query,implementation,ns_per_query,ratio_to_bare,ratio_to_book_double,misclassified_uniform,misclassified_hard,p99_ulps,max_"
+       "ulps,outputs_p99_max_ulps\n";
   for (const QueryReport& r : reps)
     for (const Row& row : r.rows) {
-      o << info(r.q).name << "," << row.name << "," << row.ns << "," << row.ns / r.base << ",";
-      if (row.measured)
+      o << info(r.q).name << "," << row.name << "," << row.ns << "," << row.ns / r.bare << "," << row.ns / r.base << ",";
+      if (row.measured) {
         o << row.miss_uniform << "," << row.miss_hard << ","
-          << (first_output_in_ulps(r.q) ? std::to_string(row.p99) + "," + std::to_string(row.max) : ",") << "\n";
-      else
-        o << row.error_note << "," << row.error_note << "," << row.error_note << "," << row.error_note << "\n";
+          << (first_output_in_ulps(r.q) ? std::to_string(row.p99) + "," + std::to_string(row.max) : ",") << ",";
+        const std::vector<std::string> outs = value_outputs(r.q);
+        for (std::size_t g = 0; g < outs.size() && g < row.p99s.size(); ++g)
+          o << (g ? " " : "") << outs[g] << "=" << row.p99s[g] << "/" << row.maxs[g];
+        o << "\n";
+      } else {
+        o << row.error_note << "," << row.error_note << "," << row.error_note << "," << row.error_note << ","
+          << row.error_note << "\n";
+      }
     }
 }
 
@@ -330,7 +390,7 @@ int report_command(std::vector<std::string> args) {
   if (queries.empty()) queries = all_queries();
   std::cout << "cdref report: " << n << " uniform cases timed per query, median of " << reps
             << " interleaved repetitions, one thread; errors from " << err_n
-            << " cases per cell of every family (first output, ulps of the row's type).\n\n";
+            << " cases per cell of every family (every output, ulps of the row's type).\n\n";
   std::vector<QueryReport> out;
   for (Query q : queries) {
     out.push_back(measure(q, n, reps, err_n, threads));

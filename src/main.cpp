@@ -40,7 +40,8 @@ const char* usage = R"(usage:
       --query Q        a query (repeatable; default: all; see `cdref describe`)
       --family F       a family (repeatable; default: all of each query)
       --scale K        a scale of the family (repeatable; default: all)
-      --impl I         book-float, book-double, book-long-double; robust-float, robust-double,
+      --impl I         book-float, book-double, book-long-double; stable-float, stable-double
+                       (queries with a stable tier); robust-float, robust-double,
                        robust-long-double; a query's own variants (book-exact, book-double-eps, ...:
                        see `cdref describe`) (repeatable; default: all)
       --n N            cases per (query, family, scale) cell (default 1000)
@@ -52,6 +53,8 @@ const char* usage = R"(usage:
       --out F          write the results (mergeable text form) to F
       --json F         write the results as JSON to F ("-" for standard output)
       --csv F          write the results as CSV to F ("-" for standard output)
+      --outputs O      all (default): grade every output against the correctly rounded truth;
+                       cls: grade the classification alone (the classification oracle: fast)
       --quiet          no table
   cdref merge [--out F] [--json F] [--csv F] FILE...
                                  merge complete shard files of one campaign
@@ -66,9 +69,10 @@ const char* usage = R"(usage:
   cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
                                  write case inputs as CSV (hex-float; --decimal: 17 digits)
   cdref cases --describe Q       the case and answer columns of query Q
-  cdref oracle --query Q [--cases F] [--precision 24|53|64] [--decimal] [--out F]
+  cdref oracle --query Q [--cases F] [--precision 24|53|64] [--outputs all|cls] [--decimal] [--out F]
                                  the exact answers to a case file, correctly rounded
-                                 (24: for the inputs rounded to float, as float; 64: as long double)
+                                 (24: for the inputs rounded to float, as float; 64: as long double;
+                                 --outputs cls: the classification columns alone)
   cdref score --query Q --cases F --answers A [--precision 24|53|64]
                                  grade an answer file (any subset of the answer columns)
   cdref plot --query Q --family F [--output O] [--n N] [--seed S] [--out F.svg]
@@ -208,6 +212,13 @@ int campaign(Args& a, bool defaults) {
       csv = a.next(opt);
     else if (opt == "--quiet")
       quiet = true;
+    else if (opt == "--outputs") {
+      const std::string v = a.next(opt);
+      if (v != "all" && v != "cls")
+        throw std::invalid_argument("--outputs is all (every output graded) or cls (the classification alone), not '" +
+                                    v + "'");
+      spec.classification_only = v == "cls";
+    }
     else
       throw std::invalid_argument("unknown option '" + opt + "' (see `cdref help`)");
   }

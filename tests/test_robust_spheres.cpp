@@ -13,6 +13,7 @@
 #include <cdref/robust/segment_sphere.hpp>
 #include <cdref/robust/sphere_box.hpp>
 #include <cdref/robust/sphere_sphere.hpp>
+#include <cdref/stable/ray_sphere.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -777,5 +778,90 @@ TEMPLATE_TEST_CASE("robust ray-sphere decide: certain answers equal the book at 
         REQUIRE(double(sh.certain) >= 0.99 * double(sh.n));
       }
     }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The stable tier of the sphere casts (float/cdref/stable/ray_sphere.hpp): plain F arithmetic
+// from the perpendicular foot, no certificate. Its header says where it can misclassify: near
+// tangency (|D| within its derived error, D = rho^2 - |l|^2), with the source or the target on
+// the sphere (c or c_t within theirs), or with the range tests' dot products b = f.r or b + a
+// near zero. On generated cases of every family, every misclassified case lies in one of those
+// bands, measured with the exact quantities (Gmpq); the cast's classification equals hit().
+TEMPLATE_TEST_CASE("stable sphere casts: every misclassification lies in the header's bands", "[stable]", float,
+                   double) {
+  using F = TestType;
+  const long double u = unit<F>();
+  auto mag = [](const Q& x) { return std::fabs(static_cast<long double>(CGAL::to_double(x))); };
+  for (fuzz::Query q : {fuzz::query_by_name("segment-sphere-cast"), fuzz::query_by_name("ray-sphere-cast")}) {
+    const bool segment = q == fuzz::query_by_name("segment-sphere-cast");
+    long cases = 0, wrong = 0, book_wrong = 0;
+    for (const auto& fam : fuzz::families(q)) {
+      const int per = std::max<int>(20, 600 / int(fam.scales.size()));
+      for (int sc : fam.scales)
+        for (int i = 0; i < per; ++i) {
+          const fuzz::Inputs in = fuzz::make_case(13, q, fam, sc, std::uint64_t(i));
+          if (!fin<F>(in, 10)) continue;
+          const Sphere<F> sp{at<F>(in, 6), F(in[9])};
+          bool got = false, cast_hit = false, truth = false, book_got = false;
+          Vec3<Q> src, r;
+          try {
+            if (segment) {
+              const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
+              got = stable::hit(s, sp);
+              cast_hit = stable::cast(s, sp, unsigned(want_all)).hit;
+              book_got = book::hit(s, sp);
+              const Segment<Q> e = convert_prim_exact(s);
+              truth = book::hit(e, convert_prim_exact(sp));
+              src = e.source;
+              r = e.target - e.source;
+            } else {
+              const Ray<F> s{at<F>(in, 0), at<F>(in, 3)};
+              got = stable::hit(s, sp);
+              cast_hit = stable::cast(s, sp, unsigned(want_all)).hit;
+              book_got = book::hit(s, sp);
+              const Ray<Q> e = convert_prim_exact(s);
+              truth = book::hit(e, convert_prim_exact(sp));
+              src = e.source;
+              r = e.direction;
+            }
+          } catch (const invalid_input&) {
+            continue;
+          }
+          INFO(fuzz::info(q).name << " family " << fam.name << " scale " << sc << " case " << i);
+          REQUIRE(cast_hit == got);
+          ++cases;
+          book_wrong += book_got != truth;
+          if (got == truth) continue;
+          ++wrong;
+          // the exact quantities
+          const Q rho = exact_q(sp.radius);
+          const Vec3<Q> f = src - convert_prim_exact(sp).center;
+          const Vec3<Q> t = f + r;
+          const Q a = r.dot(r), b = f.dot(r), rho2 = rho * rho;
+          const Vec3<Q> cr = f.cross(r);
+          const Q D = a == Q(0) ? Q(0) : Q((rho2 * a - cr.dot(cr)) / a);
+          const Q c = f.dot(f) - rho2, ct = t.dot(t) - rho2, ba = b + a;
+          const long double F_ = std::sqrt(mag(f.dot(f))), R = std::sqrt(mag(a)), T = std::sqrt(mag(t.dot(t))),
+                            rh = mag(rho), L = std::sqrt(std::max(0.0L, rh * rh - static_cast<long double>(CGAL::to_double(D))));
+          // the header's bounds (first order; the inputs' own roundings added: f = source -
+          // centre, and for a segment r = target - source), with 5% for second-order terms
+          const long double el = (segment ? 13 : 10) * u * F_ + u * L;
+          const long double BD = 1.05L * (el * (2 * L + el) + 4 * u * (rh * rh + (L + el) * (L + el)));
+          const long double Bc = 1.05L * 6 * u * (F_ * F_ + rh * rh);
+          const long double Bb = 1.05L * 6 * u * F_ * R;
+          const long double Bct = 1.05L * (2 * u * T * (F_ + R + T) + 4 * u * (T * T + rh * rh));
+          const long double Bba = 1.05L * (6 * u * F_ * R + 6 * u * R * R + u * mag(ba));
+          const bool in_band = mag(D) <= BD || mag(c) <= Bc || mag(b) <= Bb ||
+                               (segment && (mag(ct) <= Bct || mag(ba) <= Bba));
+          INFO("D " << double(CGAL::to_double(D)) << " (band " << double(BD) << "), c " << double(CGAL::to_double(c))
+                    << " (" << double(Bc) << "), b " << double(CGAL::to_double(b)) << " (" << double(Bb) << ")");
+          REQUIRE(in_band);
+        }
+    }
+    REQUIRE(cases > 2000);
+    if (std::getenv("CDREF_TEST_REPORT"))
+      std::cout << "stable " << typeid(F).name() << " " << fuzz::info(q).name << ": " << cases << " cases, "
+                << wrong << " misclassified (the book " << book_wrong << ")\n";
   }
 }

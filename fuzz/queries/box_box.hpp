@@ -31,6 +31,9 @@ struct BoxBox {
   }
   template <class T>
   static bool book(const Box<T>& a, const Box<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Box<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Box<T>& a, const Box<T>& b) { return cdref::book::intersect(to_min_max(a), to_min_max(b)); }
   template <class F>

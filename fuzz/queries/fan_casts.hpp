@@ -56,6 +56,9 @@ struct FanCastQuery {
   static auto book(const Shot<T>& a, const spec::Fan<T>& f, unsigned w) {
     return spec::first_hit(f, [&](const Triangle<T>& t) { return cdref::book::cast(a, t, w | want_lambda_enter); });
   }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shot<T>& a, const spec::Fan<T>& b) { return b.any([&](const Triangle<T>& t) { return cdref::book::unchecked::hit(a, t); }); }
   template <class T>
   static bool book_pred(const Shot<T>& a, const spec::Fan<T>& f) {
     return f.any([&](const Triangle<T>& t) { return cdref::book::hit(a, t); });

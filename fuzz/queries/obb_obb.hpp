@@ -30,6 +30,9 @@ struct ObbObb {
   }
   template <class T>
   static auto book(const OrientedBox<T>& a, const OrientedBox<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const OrientedBox<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
   template <class T>
   static bool book_pred(const OrientedBox<T>& a, const OrientedBox<T>& b) { return solid::separate(a, b).intersect; }
   template <class T>

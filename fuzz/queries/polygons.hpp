@@ -79,6 +79,9 @@ struct PolygonCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Polygon<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shot<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::hit(a, b); }
   template <class T>
   static bool book_pred(const Shot<T>& a, const Polygon<T>& b) { return cdref::book::hit(a, b); }
   template <class F>
@@ -117,6 +120,9 @@ struct PolygonPolygon {
   }
   template <class T>
   static bool book(const Polygon<T>& a, const Polygon<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Polygon<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Polygon<T>& a, const Polygon<T>& b) { return cdref::book::intersect(a, b); }
   template <class F>
@@ -168,6 +174,9 @@ struct PolygonBox {
   }
   template <class T>
   static bool book(const Polygon<T>& a, const Box<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Polygon<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Polygon<T>& a, const Box<T>& b) { return cdref::book::intersect(a, b); }
   template <class F>
@@ -232,6 +241,9 @@ struct PolygonSphere {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const Polygon<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::intersect(a, b); }
   template <class F>

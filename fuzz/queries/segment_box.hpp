@@ -37,6 +37,9 @@ struct SegmentBox {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Box<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shot<T>& a, const Box<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
   template <class T>
   static bool book_pred(const Shot<T>& a, const Box<T>& b) { return cdref::book::hit(a, b); }
   template <class F>

@@ -5,6 +5,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/stable/segment_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
 
 namespace cdref::fuzz::queries {
@@ -30,6 +31,14 @@ struct SegmentSphere {
   }
   template <class T>
   static auto book(const Segment<T>& a, const Sphere<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the stable tier (float/cdref/stable/segment_sphere.hpp)
+  template <class F>
+  static auto stable(const Segment<F>& a, const Sphere<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Segment<F>& a, const Sphere<F>& b) { return cdref::stable::intersect(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Segment<T>& a, const Sphere<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Segment<T>& a, const Sphere<T>& b) { return cdref::book::intersect(a, b); }
   template <class F>

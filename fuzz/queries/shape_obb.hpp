@@ -49,6 +49,9 @@ struct ShapeObb {
   }
   template <class T>
   static auto book(const Shape<T>& a, const OrientedBox<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shape<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
   template <class T>
   static bool book_pred(const Shape<T>& a, const OrientedBox<T>& b) { return solid::separate(a, b).intersect; }
   template <class T>

@@ -4,6 +4,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/stable/sphere_box.hpp>
 #include <cdref/robust/sphere_box.hpp>
 
 namespace cdref::fuzz::queries {
@@ -29,6 +30,14 @@ struct SphereBox {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const Box<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the stable tier (float/cdref/stable/sphere_box.hpp)
+  template <class F>
+  static auto stable(const Sphere<F>& a, const Box<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Sphere<F>& a, const Box<F>& b) { return cdref::stable::intersect(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Sphere<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Sphere<T>& a, const Box<T>& b) { return cdref::book::intersect(a, b); }
   template <class F>

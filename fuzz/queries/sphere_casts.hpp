@@ -5,6 +5,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/stable/ray_sphere.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 
 namespace cdref::fuzz::queries {
@@ -35,6 +36,14 @@ struct SphereCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Sphere<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the stable tier (float/cdref/stable/ray_sphere.hpp)
+  template <class F>
+  static auto stable(const Shot<F>& a, const Sphere<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const Sphere<F>& b) { return cdref::stable::hit(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shot<T>& a, const Sphere<T>& b) { return cdref::book::unchecked::hit(a, b); }
   template <class T>
   static bool book_pred(const Shot<T>& a, const Sphere<T>& b) { return cdref::book::hit(a, b); }
   template <class F>

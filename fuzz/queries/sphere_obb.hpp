@@ -32,6 +32,9 @@ struct SphereObb {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const OrientedBox<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Sphere<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   template <class T>
   static bool book_pred(const Sphere<T>& a, const OrientedBox<T>& b) { return cdref::book::intersect(a, b); }
   template <class T>

@@ -33,6 +33,9 @@ struct TriangleBox {
   }
   template <class T>
   static auto book(const Triangle<T>& a, const Box<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Triangle<T>& a, const Box<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
   template <class T>
   static bool book_pred(const Triangle<T>& a, const Box<T>& b) {
     return cdref::book::separate_polytopes(a, b, "triangle", "box").intersect;

@@ -41,6 +41,9 @@ struct TriangleCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Triangle<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the book's classification without its input checks (the `bare` row: see book/common.hpp)
+  template <class T>
+  static bool bare(const Shot<T>& a, const Triangle<T>& b) { return cdref::book::unchecked::hit(a, b); }
   template <class T>
   static bool book_pred(const Shot<T>& a, const Triangle<T>& b) { return cdref::book::hit(a, b); }
   template <class F>

@@ -32,6 +32,7 @@
 
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 #include <array>
 
@@ -129,19 +130,41 @@ std::string show(const T& x) {
 
 inline const char* axis_name(int i) { return i == 0 ? "x" : (i == 1 ? "y" : "z"); }
 
-// The message is built only when a check fails: a valid input costs a few comparisons.
+// The message is built only when a check fails, out of line: a valid input costs a few
+// subtractions and one branch. For IEEE types x - x is 0 exactly when x is finite (NaN for an
+// infinity or a NaN), so the sum of the three differences is 0 exactly when a vector is finite.
+template <class T>
+[[noreturn, gnu::cold, gnu::noinline]] void not_finite(const T& x, const char* name, const char* field) {
+  throw invalid_input(std::string(name) + " " + field + " is not finite (" + show(x) + ")");
+}
+template <class T>
+[[noreturn, gnu::cold, gnu::noinline]] void not_finite(const Vec3<T>& v, const char* name, const char* field) {
+  int i = 0;
+  while (i < 2 && number_traits<T>::is_finite(v[i])) ++i;
+  throw invalid_input(std::string(name) + " " + field + " has a non-finite " + axis_name(i) + " coordinate (" +
+                      show(v[i]) + ")");
+}
+template <class T>
+[[noreturn, gnu::cold, gnu::noinline]] void negative(const T& x, const char* name, const char* what) {
+  throw invalid_input(std::string(name) + " " + what + " (" + show(x) + ")");
+}
+
 template <class T>
 void check_finite(const T& x, const char* name, const char* field) {
-  if (!number_traits<T>::is_finite(x))
-    throw invalid_input(std::string(name) + " " + field + " is not finite (" + show(x) + ")");
+  if (!number_traits<T>::is_finite(x)) [[unlikely]]
+    not_finite(x, name, field);
 }
 
 template <class T>
 void check_finite(const Vec3<T>& v, const char* name, const char* field) {
-  for (int i = 0; i < 3; ++i)
-    if (!number_traits<T>::is_finite(v[i]))
-      throw invalid_input(std::string(name) + " " + field + " has a non-finite " + axis_name(i) + " coordinate (" +
-                          show(v[i]) + ")");
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!(T(T(v[0] - v[0]) + T(v[1] - v[1])) + T(v[2] - v[2]) == T(0))) [[unlikely]]
+      not_finite(v, name, field);
+  } else {
+    for (int i = 0; i < 3; ++i)
+      if (!number_traits<T>::is_finite(v[i])) [[unlikely]]
+        not_finite(v, name, field);
+  }
 }
 
 }  // namespace detail
@@ -150,7 +173,8 @@ template <class T>
 void check(const Sphere<T>& s, const char* name = "sphere") {
   detail::check_finite(s.center, name, "centre");
   detail::check_finite(s.radius, name, "radius");
-  if (s.radius < T(0)) throw invalid_input(std::string(name) + " radius is negative (" + detail::show(s.radius) + ")");
+  if (s.radius < T(0)) [[unlikely]]
+    detail::negative(s.radius, name, "radius is negative");
 }
 
 template <class T>

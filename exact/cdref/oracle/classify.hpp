@@ -381,24 +381,47 @@ struct SphereFilter {
   }
   int ss_rho2() const { return sq_minus_rho2(ss, rho2); }
   int tt_rho2() const { return sq_minus_rho2(tt, rho2); }
-  // a.b: K = 2 + 1 + 2 = 5, P+ = sum |a_i b_i| <= (|a|^2 + |b|^2) / 2 (AM-GM), so with the
-  // computed squares, gamma_5 (1 + 10u) / 2 < 3u: bound 3u fl(aa + bb).
+  // a.b: K = 2 + 1 + 2 = 5, P+ = sum |a_i b_i|, bounded by the computed products' absolute
+  // values (1 + 4u): bound 6u fl(sum |fl(a_i b_i)|), component by component, so that a long
+  // vector against a short one is judged by their products and not by |a|^2 + |b|^2. The range
+  // check on aa + bb keeps the products below 2^1000; the absolute 2^-1060 covers three
+  // underflowing products (2^-1075 each).
   static int dot(const double* a, const double* b, double aa, double bb) {
-    const double m = aa + bb;
-    if (!in_range(m)) return unknown;
-    return fsign(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], (3 * u) * m);
+    if (!in_range(aa + bb)) return unknown;
+    const double p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+    return fsign(p0 + p1 + p2, (6 * u) * (std::fabs(p0) + std::fabs(p1) + std::fabs(p2)) + 0x1p-1060);
   }
   int sr() const { return dot(s, r, ss, rr); }
   int tr() const { return dot(t, r, tt, rr); }
-  // sigma = rr rho^2 - |s x r|^2. K: (s_y r_z)^2 has 4 (leaves) + 2 (products) + 2 (the
-  // differences in c) + 1 (square) + 2 (sums) + 1 (final) = 12; rr rho^2 has 8. P+ =
-  // |r|^2 rho^2 + sum (|s_y r_z| + |s_z r_y|)^2 <= |r|^2 (rho^2 + 2 |s|^2); bound
-  // 13u fl(rr fl(rho2 + 2 ss)), with ss, rr in [2^-480, 2^480] and rho2 <= 2^480.
+  // sigma = rr rho^2 - |c|^2, c = s x r, with the error of c bounded component by component
+  // (the bound of a monomial expansion, 13u rr (rho^2 + 2 ss), grows like |s|^2 and decides
+  // nothing at range or near tangency). Each c_k = p - q, p = s_i r_j, q = s_j r_i, carries 4
+  // factors (two leaves, the product, the difference): |c~_k - c_k| <= e_k = gamma_4 m_k,
+  // m_k = |p| + |q| (exact; the computed ones are within 1 + 2u of it). Then
+  //   |sum c~_k^2 - sum c_k^2| <= sum e_k (2 |c~_k| + e_k),
+  // the computed cc adds gamma_3 cc (a square and two sums), rr rho^2 carries 7 factors (a
+  // leaf twice in each square, the square, two sums, rho^2, the product) and the final
+  // difference one more on each side:
+  //   |P~ - P| <= 9u rr rho2 + 5u (sum m_k (2 |c~_k| + 5u m_k) + cc)
+  // (9u > gamma_8, 5u > gamma_4 (1 + 2u) and gamma_3 + u; the bound's own evaluation loses a
+  // few u of itself, inside those margins). Near tangency (|c| ~ rho |r|) it is about
+  // u |r|^2 rho (9 rho + 17 |s|): the line is decided unless it passes within about
+  // u (5 rho + 9 |s|) of tangency, linear in |s| rather than quadratic. Ranges: ss, rr in
+  // [2^-480, 2^480] and rho2 <= 2^480 exclude overflow; an underflowing product (2^-1075)
+  // perturbs c_k absolutely and is multiplied by |c_k| <= 2^481: the absolute 2^-590 covers it.
   int sigma() const {
     if (!(ss >= 0x1p-480 && ss <= 0x1p480 && rr >= 0x1p-480 && rr <= 0x1p480 && rho2 <= 0x1p480)) return unknown;
-    const double cx = s[1] * r[2] - s[2] * r[1], cy = s[2] * r[0] - s[0] * r[2], cz = s[0] * r[1] - s[1] * r[0];
-    const double cc = cx * cx + cy * cy + cz * cz;
-    return fsign(rr * rho2 - cc, (13 * u) * (rr * (rho2 + 2 * ss)));
+    double c[3], dev = 0, cc = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double p = s[i] * r[j], q = s[j] * r[i];
+      c[k] = p - q;
+      const double m = std::fabs(p) + std::fabs(q);
+      dev += m * (2 * std::fabs(c[k]) + (5 * u) * m);
+      cc += c[k] * c[k];
+    }
+    const double rrr = rr * rho2;
+    return fsign(rrr - cc, (9 * u) * rrr + (5 * u) * (dev + cc) + 0x1p-590);
   }
 };
 

@@ -27,7 +27,14 @@
 //     Newton step), q = -(b + sign(b) X), a sum of two terms of one sign; the roots q / a
 //     and c / q by div_pair, each with one final rounding. Neither subtracts nearly equal
 //     numbers.
-//  5. The entry point s + lambda r, scaled and local, then the centre added back.
+//  5. The entry point from the foot: x = l - h r, h = sqrt(D / a) (lambda_1 = -f - h), each
+//     x_i a double-word (l's pairs, the exact product h.hi r_i, the rest in F); the point is
+//     centre + x and the normal x / rho, each rounded once. s + lambda r with the rounded
+//     lambda would carry lambda's half ulp times |lambda r| (of the size of |s|): at range
+//     every digit of a point near the sphere. x's error is l's (33 u^2 |s|) plus h's
+//     (relative 10 u^2 + err_D / (2D)): the point and normal are within an ulp of the
+//     truth except near tangency, where an ulp of input moves the point by rho / sqrt(D)
+//     times as much.
 // The decision (hit or miss) is D >= 0 with the same range conditions as the book.
 //
 // Accuracy of lambda_enter (the header's bound; tests/test_robust_spheres.cpp evaluates
@@ -206,6 +213,7 @@ Pair<F> c_dw(const LocalDW<F>& L) {
 template <class F>
 struct Quantities {
   Pair<F> a, b, f, D;
+  Pair<F> l[3];
   F lh[3];
 };
 
@@ -229,7 +237,7 @@ Quantities<F> quantities(const LocalDW<F>& L) {
   Q.b = two_sum(bh2.hi, F(F(F(b0.lo + b1.lo) + F(b2.lo + bh1.lo)) + F(bh2.lo + bx)));
   // the foot of the perpendicular, l = s - f r, f = b / a, each l_i a double-word
   Q.f = div_pair(Q.b, Q.a);
-  Pair<F> l[3];
+  Pair<F>(&l)[3] = Q.l;
   for (int i = 0; i < 3; ++i) {
     const Pair<F> P = two_prod_split(Q.f.hi, r[i].hi);
     const Pair<F> T = two_sum(s[i].hi, F(-P.hi));
@@ -323,22 +331,36 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
       for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
     return res;
   }
-  const Roots<F> R = roots(quantities(L), c);
+  const Quantities<F> Q = quantities(L);
+  const Roots<F> R = roots(Q, c);
   res.hit = in_range(R, bounded);
   if (!res.hit) return res;
   res.enters = R.lambda1 >= F(0);
   res.lambda_enter = res.enters ? R.lambda1 : F(0);
   if (w & want_lambda_exit) res.lambda_exit = bounded ? std::min(R.lambda2, F(1)) : R.lambda2;
-  if (w & (want_point | want_normal)) {
-    F x[3];
-    const F lam = res.lambda_enter;
-    for (int i = 0; i < 3; ++i)  // scaled, local: s + lambda r
-      x[i] = std::fma(lam, L.r[i].hi, L.s[i].hi) + F(L.s[i].lo + lam * L.r[i].lo);
+  if (!(w & (want_point | want_normal))) return res;
+  if (!res.enters) {  // the source is inside: the entry point is the source itself
     if (w & want_point)
-      for (int i = 0; i < 3; ++i) res.point[i] = std::ldexp(x[i], L.scale) + sp.center[i];
-    if ((w & want_normal) && res.enters && L.rho != F(0))
-      for (int i = 0; i < 3; ++i) res.normal[i] = x[i] / L.rho;
+      for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
+    return res;
   }
+  // step 5: the entry point relative to the centre, x = l - h r with h = sqrt(D / a) (the
+  // foot minus the half chord), each x_i a double-word, then one rounding for the point
+  // (centre added) and for the normal (x / rho)
+  const Pair<F> h = sqrt_pair(div_pair(Q.D, Q.a));
+  Pair<F> x[3];
+  for (int i = 0; i < 3; ++i) {
+    const Pair<F> P = two_prod_split(h.hi, L.r[i].hi);
+    const Pair<F> T = two_sum(Q.l[i].hi, F(-P.hi));
+    x[i] = two_sum(T.hi, F(F(T.lo + Q.l[i].lo) - P.lo) - F(h.hi * L.r[i].lo + h.lo * L.r[i].hi));
+  }
+  if (w & want_point)
+    for (int i = 0; i < 3; ++i) {
+      const Pair<F> P = two_sum(std::ldexp(x[i].hi, L.scale), sp.center[i]);
+      res.point[i] = P.hi + F(P.lo + std::ldexp(x[i].lo, L.scale));
+    }
+  if ((w & want_normal) && L.rho != F(0))
+    for (int i = 0; i < 3; ++i) res.normal[i] = F(x[i].hi + x[i].lo) / L.rho;
   return res;
 }
 

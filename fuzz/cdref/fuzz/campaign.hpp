@@ -85,7 +85,9 @@ struct TimedRow {
   std::string name;           // "book double", ...
   std::string campaign_impl;  // the campaign implementation measuring its error ("" none)
   std::string error_note;     // shown when there is no campaign row ("exact", "not measured", ...)
-  std::function<bool(std::size_t)> run;  // evaluates prepared case k; returns the classification
+  // answers the first n prepared cases: out[k] is case k's classification
+  using Batch = std::function<void(std::size_t n, char* out)>;
+  Batch run;
   bool hard = false;          // timed on the near-boundary cases instead of the uniform ones
 };
 
@@ -119,6 +121,9 @@ struct QueryInfo {
   // double, 64: long double; values reported in that type).
   std::function<Answer(int precision, const Inputs&)> book;
   std::function<Answer(int precision, const Inputs&)> robust;  // with robust::decide's certificate
+  // The stable tier (float/cdref/stable: the formulation careful float code ships) at 24 or
+  // 53; empty for a query without one.
+  std::function<Answer(int precision, const Inputs&)> stable;
   std::function<Answer(Exact, const Inputs&)> book_exact;  // the book at an exact type, values rounded to double
   // The exact answer, each value rounded correctly to the precision.
   std::function<Answer(const Inputs&, int precision)> truth;
@@ -248,6 +253,9 @@ struct Spec {
   int threads = 1;
   int shard = 0, shards = 1;  // this process runs the cases with i % shards == shard
   bool exact_truth = false;   // compute every truth exactly instead of through the oracle
+  // grade the classification alone (the truth from the classification oracle, no rounded
+  // outputs: the fast mode for hunting misclassifications)
+  bool classification_only = false;
   std::string checkpoint;     // file to write as it goes ("" for none)
   bool resume = false;        // continue from `checkpoint`
   std::function<void(double cases_done, double cases_total)> progress;  // optional, per cell-case

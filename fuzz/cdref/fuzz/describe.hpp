@@ -52,27 +52,35 @@ auto prepare(const std::vector<Inputs>& cases) {
   return p;
 }
 
-template <class Spec, class T>
-std::function<bool(std::size_t)> book_row(const std::vector<Inputs>& cases, Mode m) {
-  auto p = prepare<Spec, T>(cases);
-  return [p, m](std::size_t k) {
-    const auto& [a, b] = (*p)[k];
-    if (m == Mode::classify) return Spec::book_pred(a, b);
-    return finish(Spec::book(a, b, unsigned(want_all)), m);
+// A row over prepared inputs: one call answers the first n of them into out[k] (the
+// classification) in a loop the compiler sees whole, so a row's time is its query's alone:
+// no call through a function object per case.
+template <class P, class F>
+TimedRow::Batch batch_over(std::shared_ptr<std::vector<P>> p, F f) {
+  return [p, f](std::size_t n, char* out) {
+    const P* d = p->data();
+    for (std::size_t k = 0; k < n; ++k) out[k] = char(f(d[k]));
   };
+}
+
+template <class Spec, class T>
+TimedRow::Batch book_row(const std::vector<Inputs>& cases, Mode m) {
+  auto p = prepare<Spec, T>(cases);
+  if (m == Mode::classify)
+    return batch_over(p, [](const auto& ab) { return Spec::book_pred(ab.first, ab.second); });
+  return batch_over(p, [m](const auto& ab) { return finish(Spec::book(ab.first, ab.second, unsigned(want_all)), m); });
 }
 // The truth's formulation at an exact type T (the book, unless the spec says otherwise).
 template <class Spec, class T>
-std::function<bool(std::size_t)> exact_row(const std::vector<Inputs>& cases, Mode m) {
+TimedRow::Batch exact_row(const std::vector<Inputs>& cases, Mode m) {
   if constexpr (Spec::book_is_truth) {
     return book_row<Spec, T>(cases, m);
   } else {
     auto p = prepare<Spec, T>(cases);
-    return [p, m](std::size_t k) {
-      const auto& [a, b] = (*p)[k];
-      if (m == Mode::classify) return Spec::truth_pred(a, b);
-      return finish(Spec::truth(a, b, unsigned(want_all)), m);
-    };
+    if (m == Mode::classify)
+      return batch_over(p, [](const auto& ab) { return Spec::truth_pred(ab.first, ab.second); });
+    return batch_over(p,
+                      [m](const auto& ab) { return finish(Spec::truth(ab.first, ab.second, unsigned(want_all)), m); });
   }
 }
 template <class Spec, class K>
@@ -82,18 +90,24 @@ auto prepare_cgal(const std::vector<Inputs>& cases) {
   for (const Inputs& in : cases) p->push_back(Spec::template cgal_make<K>(in));
   return p;
 }
+template <class Spec, class F>
+TimedRow::Batch stable_row(const std::vector<Inputs>& cases, Mode m) {
+  auto p = prepare<Spec, F>(cases);
+  if (m == Mode::classify)
+    return batch_over(p, [](const auto& ab) { return Spec::stable_pred(ab.first, ab.second); });
+  return batch_over(p, [m](const auto& ab) { return finish(Spec::stable(ab.first, ab.second, unsigned(want_all)), m); });
+}
 template <class Spec, class T>
-std::function<bool(std::size_t)> robust_row(const std::vector<Inputs>& cases) {
+TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
   auto p = prepare<Spec, T>(cases);
-  return [p](std::size_t k) {
-    const auto& [a, b] = (*p)[k];
-    return finish(Spec::robust(a, b), Mode::full);
-  };
+  return batch_over(p, [](const auto& ab) { return finish(Spec::robust(ab.first, ab.second), Mode::full); });
 }
 
 // Rows (each answers the same prepared inputs; a row that computes a query's outputs asks
-// for all of them): the book at float, double (all outputs, and the classification alone),
-// long double, MPFR-128 and MPFR-256; robust at float, double and long double; the oracle
+// for all of them): `bare`, the book's classification at double without its input checks
+// (book::unchecked, the loop a tight engine runs: the honest baseline); the book at float, double (all outputs, and the classification alone),
+// long double, MPFR-128 and MPFR-256; the stable tier at float and double (all outputs, and
+// the classification alone) where the query has one; robust at float, double and long double; the oracle
 // (the classification alone, and every output correctly rounded), on the uniform cases and on
 // the hard ones; the book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its
 // first output rounded correctly to double); CGAL's own do_intersect in its filtered (Epick)
@@ -104,6 +118,9 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   const bool values = !Spec::outputs().empty();  // outputs beyond the classification
   const Mode full = values ? Mode::full : Mode::classify;
   std::vector<TimedRow> rows;
+  rows.push_back({"bare (book at double, unchecked)", "", "as book",
+                  batch_over(prepare<Spec, double>(cases),
+                             [](const auto& ab) { return Spec::bare(ab.first, ab.second); })});
   rows.push_back({"book float", "book-float", "", book_row<Spec, float>(cases, full)});
   rows.push_back({"book double", "book-double", "", book_row<Spec, double>(cases, full)});
   if (values) {
@@ -118,55 +135,38 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   for (int bits : {128, 256}) {
     const mpfr_precision at{bits};  // inputs made at this precision
     auto row = book_row<Spec, mpfr::mpreal>(cases, full);
-    rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured", [row, bits](std::size_t k) {
+    rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured", [row, bits](std::size_t n, char* out) {
                       const mpfr_precision again{bits};  // and the constants it makes
-                      return row(k);
+                      row(n, out);
                     }});
+  }
+  if constexpr (has_stable<Spec>) {
+    rows.push_back({"stable float", "stable-float", "", stable_row<Spec, float>(cases, full)});
+    rows.push_back({"stable double", "stable-double", "", stable_row<Spec, double>(cases, full)});
+    if (values)
+      rows.push_back({"stable double, classification", "", "as above", stable_row<Spec, double>(cases, Mode::classify)});
   }
   rows.push_back({"robust float", "robust-float", "", robust_row<Spec, float>(cases)});
   rows.push_back({"robust double", "robust-double", "", robust_row<Spec, double>(cases)});
   rows.push_back({"robust long double", "robust-long-double", "", robust_row<Spec, long double>(cases)});
   auto uni = std::make_shared<std::vector<Inputs>>(cases);
   auto hc = std::make_shared<std::vector<Inputs>>(hard);
-  {
-    auto pd = prepare<Spec, double>(cases);  // prepared like the book's rows
-    rows.push_back({"oracle, classification", "", "exact", [pd](std::size_t k) {
-                      const auto& [a, b] = (*pd)[k];
-                      return Spec::oracle(a, b, nullptr);
-                    }});
-  }
-  if (values)
-    rows.push_back({"oracle, every output rounded", "", "exact", [uni](std::size_t k) {
-                      return oracle_truth_of<Spec>((*uni)[k], 53, nullptr).cls;
-                    }});
-  {
-    auto ph = prepare<Spec, double>(hard);
-    rows.push_back({"oracle, classification" + hard_name, "", "exact",
-                    [ph](std::size_t k) {
-                      const auto& [a, b] = (*ph)[k];
-                      return Spec::oracle(a, b, nullptr);
-                    },
-                    true});
-  }
-  if (values)
-    rows.push_back({"oracle, every output" + hard_name, "", "exact",
-                    [hc](std::size_t k) { return oracle_truth_of<Spec>((*hc)[k], 53, nullptr).cls; }, true});
+  const auto oracle = [](const auto& ab) { return Spec::oracle(ab.first, ab.second, nullptr); };
+  const auto rounded = [](const Inputs& in) { return oracle_truth_of<Spec>(in, 53, nullptr).cls; };
+  rows.push_back({"oracle, classification", "", "exact", batch_over(prepare<Spec, double>(cases), oracle)});
+  if (values) rows.push_back({"oracle, every output rounded", "", "exact", batch_over(uni, rounded)});
+  rows.push_back(
+      {"oracle, classification" + hard_name, "", "exact", batch_over(prepare<Spec, double>(hard), oracle), true});
+  if (values) rows.push_back({"oracle, every output" + hard_name, "", "exact", batch_over(hc, rounded), true});
   const Mode exact_mode = values ? Mode::first_rounded : Mode::classify;
   const std::string at = Spec::book_is_truth ? "book at " : "exact formulation at ";
   rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq>(cases, exact_mode)});
   rows.push_back({at + "Epeck::FT", "", "exact", exact_row<Spec, CGAL::Epeck::FT>(cases, exact_mode)});
   rows.push_back({at + "CORE::Expr", "", "exact", exact_row<Spec, CORE::Expr>(cases, exact_mode)});
   if constexpr (requires(const Inputs& in) { Spec::template cgal_make<CGAL::Epick>(in); }) {
-    auto ck = prepare_cgal<Spec, CGAL::Epick>(cases);
-    auto ce = prepare_cgal<Spec, CGAL::Epeck>(cases);
-    rows.push_back({"CGAL do_intersect, Epick", "", "exact", [ck](std::size_t k) {
-                      const auto& [a, b] = (*ck)[k];
-                      return Spec::cgal(a, b);
-                    }});
-    rows.push_back({"CGAL do_intersect, Epeck", "", "exact", [ce](std::size_t k) {
-                      const auto& [a, b] = (*ce)[k];
-                      return Spec::cgal(a, b);
-                    }});
+    const auto cgal = [](const auto& ab) { return Spec::cgal(ab.first, ab.second); };
+    rows.push_back({"CGAL do_intersect, Epick", "", "exact", batch_over(prepare_cgal<Spec, CGAL::Epick>(cases), cgal)});
+    rows.push_back({"CGAL do_intersect, Epeck", "", "exact", batch_over(prepare_cgal<Spec, CGAL::Epeck>(cases), cgal)});
   }
   return rows;
 }
@@ -197,6 +197,10 @@ QueryInfo describe() {
     if (precision == 64) return robust_at<Spec, long double>(in);
     return robust_at<Spec, double>(in);
   };
+  if constexpr (has_stable<Spec>)
+    qi.stable = [](int precision, const Inputs& in) {
+      return precision == 24 ? stable_at<Spec, float>(in) : stable_at<Spec, double>(in);
+    };
   qi.book_exact = [](Exact t, const Inputs& in) {
     return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)
                             : book_at<Spec, CGAL::Epeck::FT, double>(in, true);

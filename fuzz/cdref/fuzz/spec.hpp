@@ -10,8 +10,11 @@
 //   book_is_truth                             false when the book at an exact type is not the
 //                                             truth; then truth(a, b, w), truth_pred(a, b) are
 //   robust(a, b), robust_pred(a, b), robust_decide(a, b)    the robust versions
+//   bare(a, b)                                the book's classification without its input
+//                                             checks (book::unchecked): the cost report's baseline
 //   oracle(a, b, Stage*)                      the exact classification (oracle::classify)
 // and, where they exist:
+//   stable(a, b, w), stable_pred(a, b)        the stable tier (float/cdref/stable), F = float, double
 //   stage(Stage, a, b)                        one stage of the classification oracle alone
 //   cgal_make<K>(in), cgal(a, b)              CGAL's do_intersect on the same solids
 //   fuzz_extra(in)                            further checks of the fuzz target
@@ -354,6 +357,21 @@ Answer robust_at(const Inputs& in) {
   r.certain = d.certain;
   return r;
 }
+
+// The stable tier (float/cdref/stable): the full query and its classification alone.
+template <class Spec, class F>
+Answer stable_at(const Inputs& in) {
+  const auto [a, b] = Spec::template make<F>(in);
+  Answer r;
+  put<F>(r, Spec::stable(a, b, unsigned(want_all)), true);
+  r.pred = Spec::stable_pred(a, b);
+  return r;
+}
+template <class Spec>
+constexpr bool has_stable = requires(const Inputs& in) {
+  Spec::stable(Spec::template make<double>(in).first, Spec::template make<double>(in).second, 0u);
+  Spec::stable_pred(Spec::template make<double>(in).first, Spec::template make<double>(in).second);
+};
 
 template <class Spec>
 Answer truth_of(const Inputs& in, int precision) {

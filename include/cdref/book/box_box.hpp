@@ -17,16 +17,24 @@ bool intersect(const MinMaxBox<T>& a, const MinMaxBox<T>& b) {
   return true;
 }
 
+namespace unchecked {
+// The centre-extent test on input already checked (see common.hpp).
 template <class T>
 bool intersect(const Box<T>& a, const Box<T>& b) {
-  check(a, "box A");
-  check(b, "box B");
   for (int i = 0; i < 3; ++i) {
     const T d = a.center[i] - b.center[i];
     const T ad = d < T(0) ? T(-d) : d;
     if (!(ad <= a.extent[i] + b.extent[i])) return false;
   }
   return true;
+}
+}  // namespace unchecked
+
+template <class T>
+bool intersect(const Box<T>& a, const Box<T>& b) {
+  check(a, "box A");
+  check(b, "box B");
+  return unchecked::intersect(a, b);
 }
 
 }  // namespace cdref::book

@@ -1,4 +1,11 @@
 // cdref/book/common.hpp - small helpers shared by the chapter's algorithms.
+//
+// Input checks: every query in cdref::book checks its arguments (finite, radius and extents
+// not negative, ...) and throws cdref::invalid_input naming what is wrong. Its classification
+// is also in cdref::book::unchecked under the same name, without the checks, for a loop that
+// checks its bodies once (an engine does when it creates them) and then queries them many
+// times: the `bare` row of `cdref report` and `cdref_bench` times those. On input the checks
+// would refuse, the unchecked versions' answers mean nothing.
 #pragma once
 
 #include "../number_traits.hpp"

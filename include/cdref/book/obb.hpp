@@ -93,10 +93,9 @@ Cast<T> cast_in_frame(const Vec3<T>& s_world, const Vec3<T>& r_world, const Orie
 
 }  // namespace detail
 
+namespace unchecked {
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
-  check(seg, "segment");
-  check(b, "oriented box");
   const Segment<T> local{detail::frame_point(b, seg.source), detail::frame_point(b, seg.target)};
   const Vec3<T> r = seg.target - seg.source;
   return detail::world_separation(detail::segment_box(local, detail::frame_box(b)), b, 0, r, [&](int) { return r; });
@@ -104,8 +103,6 @@ Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
 
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
-  check(ray, "ray");
-  check(b, "oriented box");
   const Ray<T> local{detail::frame_point(b, ray.source), detail::frame_vector(b, ray.direction)};
   return detail::world_separation(detail::ray_box(local, detail::frame_box(b)), b, 0, ray.direction,
                                   [&](int) { return ray.direction; });
@@ -113,13 +110,48 @@ Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
 
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
-  check(tri, "triangle");
-  check(b, "oriented box");
   const Triangle<T> local{{detail::frame_point(b, tri.vertex[0]), detail::frame_point(b, tri.vertex[1]),
                            detail::frame_point(b, tri.vertex[2])}};
   const Vec3<T> n = Vec3<T>(tri.vertex[1] - tri.vertex[0]).cross(Vec3<T>(tri.vertex[2] - tri.vertex[0]));
   return detail::world_separation(detail::triangle_box(local, detail::frame_box(b)), b, 1, n,
                                   [&](int k) { return Vec3<T>(tri.vertex[(k + 1) % 3] - tri.vertex[k]); });
+}
+template <class T>
+bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
+  const Vec3<T> s = detail::frame_point(b, seg.source), t = detail::frame_point(b, seg.target);
+  return detail::hit_box_local(s, Vec3<T>(t - s), b.extent, detail::outcode(s, b.extent), detail::outcode(t, b.extent),
+                               true);
+}
+
+template <class T>
+bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
+  const Vec3<T> s = detail::frame_point(b, ray.source), d = detail::frame_vector(b, ray.direction);
+  return detail::hit_box_local(s, d, b.extent, detail::outcode(s, b.extent), detail::outcode_at_infinity(s, d, b.extent),
+                               false);
+}
+template <class T>
+bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
+  return detail::sphere_box_intersect(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b));
+}
+}  // namespace unchecked
+
+template <class T>
+Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
+  check(seg, "segment");
+  check(b, "oriented box");
+  return unchecked::separate(seg, b);
+}
+template <class T>
+Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
+  check(ray, "ray");
+  check(b, "oriented box");
+  return unchecked::separate(ray, b);
+}
+template <class T>
+Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
+  check(tri, "triangle");
+  check(b, "oriented box");
+  return unchecked::separate(tri, b);
 }
 
 template <class T>
@@ -149,25 +181,19 @@ template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
-  const Vec3<T> s = detail::frame_point(b, seg.source), t = detail::frame_point(b, seg.target);
-  return detail::hit_box_local(s, Vec3<T>(t - s), b.extent, detail::outcode(s, b.extent), detail::outcode(t, b.extent),
-                               true);
+  return unchecked::hit(seg, b);
 }
-
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
-  const Vec3<T> s = detail::frame_point(b, ray.source), d = detail::frame_vector(b, ray.direction);
-  return detail::hit_box_local(s, d, b.extent, detail::outcode(s, b.extent), detail::outcode_at_infinity(s, d, b.extent),
-                               false);
+  return unchecked::hit(ray, b);
 }
-
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   check(sp, "sphere");
   check(b, "oriented box");
-  return detail::sphere_box_intersect(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b));
+  return unchecked::intersect(sp, b);
 }
 
 template <class T>

@@ -38,8 +38,6 @@ namespace detail {
 template <class T>
 Separation<T> obb_obb(const OrientedBox<T>& A, const OrientedBox<T>& B, const T& eps, const T& cutoff,
                       bool skip_parallel) {
-  check(A, "oriented box A");
-  check(B, "oriented box B");
   T R[3][3], AbsR[3][3], t[3];
   const Vec3<T> D = B.center - A.center;
   bool parallel = false;
@@ -84,9 +82,18 @@ Separation<T> obb_obb(const OrientedBox<T>& A, const OrientedBox<T>& B, const T&
 
 }  // namespace detail
 
+namespace unchecked {
 template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return detail::obb_obb(a, b, T(0), T(0), false);
+}
+}  // namespace unchecked
+
+template <class T>
+Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
+  check(a, "oriented box A");
+  check(b, "oriented box B");
+  return unchecked::separate(a, b);
 }
 
 template <class T>
@@ -97,12 +104,16 @@ bool intersect(const OrientedBox<T>& a, const OrientedBox<T>& b) {
 // RAPID's patch: eps added to every |R_ij| (1e-6 in RAPID, PQP and FCL).
 template <class T>
 Separation<T> separate_rapid(const OrientedBox<T>& a, const OrientedBox<T>& b, const T& eps = T(1e-6)) {
+  check(a, "oriented box A");
+  check(b, "oriented box B");
   return detail::obb_obb(a, b, eps, T(0), false);
 }
 
 // Wild Magic's patch: no edge axis when some pair of axes is within the cutoff of parallel.
 template <class T>
 Separation<T> separate_parallel(const OrientedBox<T>& a, const OrientedBox<T>& b, const T& cutoff = T(1) - T(1e-8)) {
+  check(a, "oriented box A");
+  check(b, "oriented box B");
   return detail::obb_obb(a, b, T(0), cutoff, true);
 }
 

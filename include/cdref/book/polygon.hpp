@@ -82,19 +82,45 @@ Cast<sqrt_t<T>> cast(const Ray<T>& r, const Polygon<T>& p, unsigned w = want_all
   check(p);
   return detail::polygon_cast(p, [&](const Triangle<T>& t) { return cast(r, t, w | want_lambda_enter | want_lambda_exit); });
 }
-template <class T>
-bool hit(const Segment<T>& s, const Polygon<T>& p) {
-  check(p);
+namespace unchecked {
+template <class Shot, class T>
+bool hit(const Shot& s, const Polygon<T>& p) {
   for (int k = 0; k < p.triangles(); ++k)
-    if (hit(s, p.triangle(k))) return true;
+    if (unchecked::hit(s, p.triangle(k))) return true;
   return false;
 }
 template <class T>
-bool hit(const Ray<T>& r, const Polygon<T>& p) {
-  check(p);
+bool intersect(const Sphere<T>& s, const Polygon<T>& p) {
   for (int k = 0; k < p.triangles(); ++k)
-    if (hit(r, p.triangle(k))) return true;
+    if (unchecked::intersect(s, p.triangle(k))) return true;
   return false;
+}
+template <class T>
+bool intersect(const Polygon<T>& p, const Box<T>& b) {
+  for (int k = 0; k < p.triangles(); ++k)
+    if (unchecked::separate(p.triangle(k), b).intersect) return true;
+  return false;
+}
+template <class T>
+bool intersect(const Polygon<T>& a, const Polygon<T>& b) {
+  for (int i = 0; i < a.triangles(); ++i)
+    for (int j = 0; j < b.triangles(); ++j)
+      if (detail::intersect_triangles(a.triangle(i), b.triangle(j), T(0)).intersect) return true;
+  return false;
+}
+}  // namespace unchecked
+
+template <class T>
+bool hit(const Segment<T>& s, const Polygon<T>& p) {
+  check(s, "segment");
+  check(p);
+  return unchecked::hit(s, p);
+}
+template <class T>
+bool hit(const Ray<T>& r, const Polygon<T>& p) {
+  check(r, "ray");
+  check(p);
+  return unchecked::hit(r, p);
 }
 
 template <class T>
@@ -107,28 +133,21 @@ template <class T>
 bool intersect(const Sphere<T>& s, const Polygon<T>& p) {
   check(s, "sphere");
   check(p);
-  for (int k = 0; k < p.triangles(); ++k)
-    if (intersect(s, p.triangle(k))) return true;
-  return false;
+  return unchecked::intersect(s, p);
 }
 
 template <class T>
 bool intersect(const Polygon<T>& p, const Box<T>& b) {
   check(p);
   check(b, "box");
-  for (int k = 0; k < p.triangles(); ++k)
-    if (intersect(p.triangle(k), b)) return true;
-  return false;
+  return unchecked::intersect(p, b);
 }
 
 template <class T>
 bool intersect(const Polygon<T>& a, const Polygon<T>& b) {
   check(a, "polygon A");
   check(b, "polygon B");
-  for (int i = 0; i < a.triangles(); ++i)
-    for (int j = 0; j < b.triangles(); ++j)
-      if (detail::intersect_triangles(a.triangle(i), b.triangle(j), T(0)).intersect) return true;
-  return false;
+  return unchecked::intersect(a, b);
 }
 
 }  // namespace cdref::book

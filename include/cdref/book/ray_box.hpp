@@ -115,23 +115,33 @@ Cast<T> cast_box_local(const Vec3<T>& s, const Vec3<T>& r, const Box<T>& box, un
 
 }  // namespace detail
 
+namespace unchecked {
 template <class T>
 bool hit(const Segment<T>& seg, const Box<T>& box) {
-  check(seg, "segment");
-  check(box, "box");
   const Vec3<T> s = seg.source - box.center;
   const Vec3<T> t = seg.target - box.center;
   return detail::hit_box_local(s, Vec3<T>(t - s), box.extent, detail::outcode(s, box.extent),
                                detail::outcode(t, box.extent), true);
 }
+template <class T>
+bool hit(const Ray<T>& ray, const Box<T>& box) {
+  const Vec3<T> s = ray.source - box.center;
+  return detail::hit_box_local(s, ray.direction, box.extent, detail::outcode(s, box.extent),
+                               detail::outcode_at_infinity(s, ray.direction, box.extent), false);
+}
+}  // namespace unchecked
 
+template <class T>
+bool hit(const Segment<T>& seg, const Box<T>& box) {
+  check(seg, "segment");
+  check(box, "box");
+  return unchecked::hit(seg, box);
+}
 template <class T>
 bool hit(const Ray<T>& ray, const Box<T>& box) {
   check(ray, "ray");
   check(box, "box");
-  const Vec3<T> s = ray.source - box.center;
-  return detail::hit_box_local(s, ray.direction, box.extent, detail::outcode(s, box.extent),
-                               detail::outcode_at_infinity(s, ray.direction, box.extent), false);
+  return unchecked::hit(ray, box);
 }
 
 template <class T>

@@ -96,22 +96,32 @@ Cast<sqrt_t<T>> cast_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const Sphe
 
 }  // namespace detail
 
+namespace unchecked {
 // Algorithm 3.1 for the segment s->t: does it meet the sphere? No root, no division.
 template <class T>
 bool hit(const Segment<T>& seg, const Sphere<T>& sp) {
-  check(seg, "segment");
-  check(sp, "sphere");
   const Vec3<T> s = seg.source - sp.center;
   const Vec3<T> t = seg.target - sp.center;
   return detail::hit_sphere_local(s, Vec3<T>(t - s), sp.radius, true);
 }
-
 // Algorithm 3.1 for the infinite ray: does it meet the sphere? No root, no division.
+template <class T>
+bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
+  return detail::hit_sphere_local(Vec3<T>(ray.source - sp.center), ray.direction, sp.radius, false);
+}
+}  // namespace unchecked
+
+template <class T>
+bool hit(const Segment<T>& seg, const Sphere<T>& sp) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  return unchecked::hit(seg, sp);
+}
 template <class T>
 bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
-  return detail::hit_sphere_local(Vec3<T>(ray.source - sp.center), ray.direction, sp.radius, false);
+  return unchecked::hit(ray, sp);
 }
 
 // Algorithm 3.1 for the segment s->t, with the quantities asked for in w.

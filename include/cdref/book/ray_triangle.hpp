@@ -223,6 +223,17 @@ TriangleCast<sqrt_t<T>> cast(const Ray<T>& ray, const Triangle<T>& tri, unsigned
   check(tri, "triangle");
   return detail::cast_triangle(ray.source, ray.direction, tri, false, w);
 }
+namespace unchecked {
+template <class T>
+bool hit(const Segment<T>& seg, const Triangle<T>& tri) {
+  return detail::hit_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true);
+}
+template <class T>
+bool hit(const Ray<T>& ray, const Triangle<T>& tri) {
+  return detail::hit_triangle(ray.source, ray.direction, tri, false);
+}
+}  // namespace unchecked
+
 template <class T>
 bool hit(const Segment<T>& seg, const Triangle<T>& tri) {
   check(seg, "segment");

@@ -74,6 +74,17 @@ Separation<T> ray_box(const Ray<T>& ray, const Box<T>& box) {
 
 }  // namespace detail
 
+namespace unchecked {
+template <class T>
+Separation<T> separate(const Segment<T>& seg, const Box<T>& box) {
+  return detail::segment_box(seg, box);
+}
+template <class T>
+Separation<T> separate(const Ray<T>& ray, const Box<T>& box) {
+  return detail::ray_box(ray, box);
+}
+}  // namespace unchecked
+
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const Box<T>& box) {
   check(seg, "segment");

@@ -21,10 +21,10 @@
 
 namespace cdref::book {
 
+namespace unchecked {
+// Algorithm 3.2's test on input already checked (see common.hpp).
 template <class T>
 bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
-  check(seg, "segment");
-  check(sp, "sphere");
   const Vec3<T> s = seg.source - sp.center;
   const Vec3<T> t = seg.target - sp.center;
   const Vec3<T> r = t - s;
@@ -34,6 +34,14 @@ bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   const T rr = r.squaredNorm();
   if (delta >= rr) return t.squaredNorm() <= rho2;
   return s.squaredNorm() * rr - delta * delta <= rho2 * rr;
+}
+}  // namespace unchecked
+
+template <class T>
+bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  return unchecked::intersect(seg, sp);
 }
 
 template <class T>

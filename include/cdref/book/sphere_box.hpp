@@ -82,6 +82,13 @@ Proximity<sqrt_t<T>> sphere_box_proximity(const Sphere<T>& sp, const Box<T>& box
 
 }  // namespace detail
 
+namespace unchecked {
+template <class T>
+bool intersect(const Sphere<T>& sp, const Box<T>& box) {
+  return detail::sphere_box_intersect(sp, box);
+}
+}  // namespace unchecked
+
 template <class T>
 bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   check(sp, "sphere");

@@ -11,13 +11,21 @@
 
 namespace cdref::book {
 
+namespace unchecked {
+// The test on input already checked (see common.hpp).
+template <class T>
+bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
+  const Vec3<T> v = a.center - b.center;
+  const T sum = a.radius + b.radius;
+  return v.squaredNorm() <= sum * sum;
+}
+}  // namespace unchecked
+
 template <class T>
 bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
-  const Vec3<T> v = a.center - b.center;
-  const T sum = a.radius + b.radius;
-  return v.squaredNorm() <= sum * sum;
+  return unchecked::intersect(a, b);
 }
 
 template <class T>

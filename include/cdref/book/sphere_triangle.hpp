@@ -101,6 +101,13 @@ bool sphere_triangle_intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
 
 }  // namespace detail
 
+namespace unchecked {
+template <class T>
+bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
+  return detail::sphere_triangle_intersect(sp, tri);
+}
+}  // namespace unchecked
+
 template <class T>
 bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   check(sp, "sphere");

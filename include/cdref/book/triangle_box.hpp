@@ -86,11 +86,18 @@ Separation<T> triangle_box(const Triangle<T>& tri, const Box<T>& box) {
 }
 }  // namespace detail
 
+namespace unchecked {
+template <class T>
+Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
+  return detail::triangle_box(tri, box);
+}
+}  // namespace unchecked
+
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   check(tri, "triangle");
   check(box, "box");
-  return detail::triangle_box(tri, box);
+  return unchecked::separate(tri, box);
 }
 
 template <class T>

@@ -181,10 +181,10 @@ TriangleIntersection<T> intersect(const Triangle<T>& a, const Triangle<T>& b, co
   return detail::intersect_triangles(a, b, eps);
 }
 
+namespace unchecked {
+// separate() on input already checked (see common.hpp).
 template <class T>
 Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
-  check(a, "triangle A");
-  check(b, "triangle B");
   const Vec3<T> nA = Vec3<T>(a.vertex[1] - a.vertex[0]).cross(Vec3<T>(a.vertex[2] - a.vertex[0]));
   const Vec3<T> nB = Vec3<T>(b.vertex[1] - b.vertex[0]).cross(Vec3<T>(b.vertex[2] - b.vertex[0]));
   if (detail::is_zero(nA) || detail::is_zero(nB)) {
@@ -193,6 +193,14 @@ Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
     return s;
   }
   return detail::separate_triangles(a, b);
+}
+}  // namespace unchecked
+
+template <class T>
+Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
+  check(a, "triangle A");
+  check(b, "triangle B");
+  return unchecked::separate(a, b);
 }
 
 }  // namespace cdref::book

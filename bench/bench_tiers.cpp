@@ -1,0 +1,147 @@
+// bench/bench_tiers.cpp - `cdref_bench`: every query's tiers timed with Google Benchmark, one
+// benchmark per query, family and row of the cost report (the rows come from the query's
+// descriptor, fuzz/cdref/fuzz/describe.hpp, as `cdref report` takes them), on 1024 prepared
+// cases per family: the uniform family, the long-range family at its farthest scale and the
+// query's near-boundary family at its hardest scale (where they exist). Each benchmark runs the
+// row's loop over all 1024 cases per iteration and reports ns per query. After the run, one
+// table per query and family gives every row's time as a ratio to `bare` (the book's
+// classification at double without input checks) taken in the same run.
+//
+//   cdref_bench --benchmark_filter='ray-sphere-cast/'      one query
+//   cdref_bench --benchmark_filter='/uniform-0/(bare|stable|robust-double)$'
+//   cdref_bench --benchmark_repetitions=3                  medians of three
+// Each benchmark runs at least 0.05 s by default (--benchmark_min_time changes it). Debian's
+// libbenchmark is a debug build: its own overhead is per iteration (1024 queries), small here.
+#include <benchmark/benchmark.h>
+
+#include <cdref/fuzz/campaign.hpp>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace cdref::fuzz;
+
+namespace {
+
+constexpr std::size_t cases_per_family = 1024;
+
+// "book double, classification" -> "book-double-classification"
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == ' ' || c == ',' || c == '(' || c == ')') {
+      if (!out.empty() && out.back() != '-') out += '-';
+    } else {
+      out += c;
+    }
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out;
+}
+
+struct Timed {
+  std::string query, family, row;
+};
+std::map<std::string, Timed>& registered() {
+  static std::map<std::string, Timed> r;
+  return r;
+}
+
+void run_row(benchmark::State& st, std::shared_ptr<TimedRow> row) {
+  std::vector<char> out(cases_per_family);
+  for (auto _ : st) {
+    row->run(out.size(), out.data());
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  st.SetItemsProcessed(st.iterations() * std::int64_t(out.size()));
+}
+
+const Family* family_named(Query q, std::initializer_list<const char*> names) {
+  for (const char* name : names)
+    for (const Family& f : families(q))
+      if (f.name == name) return &f;
+  return nullptr;
+}
+
+void reg(Query q) {
+  const QueryInfo& qi = info(q);
+  struct Set {
+    const Family* f;
+    int scale;
+  };
+  std::vector<Set> sets{{&family_by_name(q, "uniform"), family_by_name(q, "uniform").scales.front()}};
+  if (const Family* lr = family_named(q, {"long-range"})) sets.push_back({lr, lr->scales.back()});
+  if (const Family* h = family_named(q, {"near-tangent", "near-touching", "grazing", "watertight", "near-edge"}))
+    sets.push_back({h, h->scales.back()});
+  for (const Set& set : sets) {
+    std::vector<Inputs> cases;
+    for (std::uint64_t i = 0; i < cases_per_family; ++i) cases.push_back(make_case(1, q, *set.f, set.scale, i));
+    const std::string fam = set.f->name + "-" + std::to_string(set.scale);
+    for (TimedRow& row : qi.timed_rows(cases, cases, "")) {
+      if (row.hard) continue;  // the same rows on these cases
+      const std::string row_name = slug(row.name);
+      const std::string name = std::string(qi.name) + "/" + fam + "/" + row_name;
+      registered()[name] = {qi.name, fam, row_name};
+      benchmark::RegisterBenchmark(name.c_str(), run_row, std::make_shared<TimedRow>(std::move(row)))->MinTime(0.05);
+    }
+  }
+}
+
+// The console output, and every run's ns per query kept for the ratio tables.
+class Reporter : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, double> ns;  // by benchmark name
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred || r.iterations == 0) continue;
+      const std::string base = r.run_name.str();
+      // seconds per iteration (iterations and aggregates alike), over 1024 queries
+      const double per_query =
+          1e9 * r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) / double(cases_per_family);
+      if (r.run_type == Run::RT_Aggregate) {
+        if (r.aggregate_name == "median") ns[base] = per_query;
+      } else if (!ns.count(base) || r.repetitions <= 1) {
+        ns[base] = per_query;
+      }
+    }
+  }
+};
+
+void ratio_tables(const std::map<std::string, double>& ns) {
+  std::map<std::pair<std::string, std::string>, std::vector<std::pair<std::string, double>>> tables;
+  for (const auto& [name, t] : registered()) {
+    const auto it = ns.find(name);
+    if (it != ns.end()) tables[{t.query, t.family}].push_back({t.row, it->second});
+  }
+  if (tables.empty()) return;
+  std::printf("\nns per query and ratio to bare (the book's classification at double, unchecked), this run:\n");
+  for (const auto& [key, rows] : tables) {
+    double bare = 0;
+    for (const auto& [row, t] : rows)
+      if (row.rfind("bare", 0) == 0) bare = t;
+    std::printf("%s, %s\n", key.first.c_str(), key.second.c_str());
+    for (const auto& [row, t] : rows) {
+      if (bare > 0)
+        std::printf("  %-48s %12.1f %10.2f\n", row.c_str(), t, t / bare);
+      else
+        std::printf("  %-48s %12.1f %10s\n", row.c_str(), t, "(no bare)");
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (Query q : all_queries()) reg(q);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  Reporter rep;
+  benchmark::RunSpecifiedBenchmarks(&rep);
+  ratio_tables(rep.ns);
+  benchmark::Shutdown();
+  return 0;
+}
