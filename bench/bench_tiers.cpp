@@ -8,7 +8,7 @@
 // classification at double without input checks) taken in the same run.
 //
 //   cdref_bench --benchmark_filter='ray-sphere-cast/'      one query
-//   cdref_bench --benchmark_filter='/uniform-0/(bare|stable|robust-double)$'
+//   cdref_bench --benchmark_filter='/uniform-0/(bare|stable|robust-double)'   (names end in /min_time:0.050)
 //   cdref_bench --benchmark_repetitions=3                  medians of three
 // Each benchmark runs at least 0.05 s by default (--benchmark_min_time changes it). Debian's
 // libbenchmark is a debug build: its own overhead is per iteration (1024 queries), small here.
@@ -98,7 +98,7 @@ class Reporter : public benchmark::ConsoleReporter {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
       if (r.error_occurred || r.iterations == 0) continue;
-      const std::string base = r.run_name.str();
+      const std::string base = r.run_name.function_name;  // as registered (no /min_time: suffix)
       // seconds per iteration (iterations and aggregates alike), over 1024 queries
       const double per_query =
           1e9 * r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) / double(cases_per_family);

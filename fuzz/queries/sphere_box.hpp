@@ -35,6 +35,8 @@ struct SphereBox {
   static auto stable(const Sphere<F>& a, const Box<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
   template <class F>
   static bool stable_pred(const Sphere<F>& a, const Box<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Sphere<T>& a, const Box<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }

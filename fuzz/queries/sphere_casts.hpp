@@ -41,6 +41,8 @@ struct SphereCast {
   static auto stable(const Shot<F>& a, const Sphere<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
   template <class F>
   static bool stable_pred(const Shot<F>& a, const Sphere<F>& b) { return cdref::stable::hit(a, b); }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const Sphere<T>& b) { return cdref::stable::unchecked::hit(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const Sphere<T>& b) { return cdref::book::unchecked::hit(a, b); }

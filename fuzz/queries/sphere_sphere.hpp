@@ -34,6 +34,8 @@ struct SphereSphere {
   static auto stable(const Sphere<F>& a, const Sphere<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
   template <class F>
   static bool stable_pred(const Sphere<F>& a, const Sphere<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Sphere<T>& a, const Sphere<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const Sphere<T>& b) { return cdref::book::unchecked::intersect(a, b); }

@@ -129,20 +129,32 @@ Cast<F> cast_local(const Vec3<F>& f, const Vec3<F>& r, const Sphere<F>& sp, bool
 
 }  // namespace detail
 
+// The classification without the input checks (see book/common.hpp).
+namespace unchecked {
 template <class F>
 bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
-  check(seg, "segment");
-  check(sp, "sphere");
   const Vec3<F> f = seg.source - sp.center;
   const Vec3<F> r = seg.target - seg.source;
   return detail::hit_local(detail::foot(f, r, sp.radius), f, r, sp.radius, true);
 }
 template <class F>
 bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
-  check(ray, "ray");
-  check(sp, "sphere");
   const Vec3<F> f = ray.source - sp.center;
   return detail::hit_local(detail::foot(f, ray.direction, sp.radius), f, ray.direction, sp.radius, false);
+}
+}  // namespace unchecked
+
+template <class F>
+bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  return unchecked::hit(seg, sp);
+}
+template <class F>
+bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
+  check(ray, "ray");
+  check(sp, "sphere");
+  return unchecked::hit(ray, sp);
 }
 template <class F>
 Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast) {

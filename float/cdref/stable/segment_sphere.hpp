@@ -8,7 +8,7 @@
 // for |s|^2 rr - delta^2 <= rho^2 rr, which subtracts numbers of size |s|^2 |r|^2 to decide
 // one of size rho^2 |r|^2 (Lagrange's identity |s|^2 |r|^2 - (s.r)^2 = |s x r|^2); the stable
 // tier keeps the division. So stable::proximity is book::proximity, and stable::intersect is
-// its classification alone (book::proximity with nothing else asked for).
+// its classification alone (the same closest point, then the comparison).
 //
 // Error bound of the classification (first order in u, the unit roundoff of F; s and t as
 // computed, i.e. moved by at most u |s| and u |t|): delta^ off by 3u |s||r|, rr relative 3u,
@@ -33,7 +33,17 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
 }
 template <class F>
 bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
-  return book::proximity(seg, sp, 0u).intersect;
+  check(seg, "segment");
+  check(sp, "sphere");
+  return book::detail::closest_point_intersect(seg, sp);
 }
+
+// The classification without the input checks (see book/common.hpp).
+namespace unchecked {
+template <class F>
+bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
+  return book::detail::closest_point_intersect(seg, sp);
+}
+}  // namespace unchecked
 
 }  // namespace cdref::stable

@@ -26,4 +26,12 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
   return book::proximity(sp, box, w);
 }
 
+// The classification without the input checks (see book/common.hpp).
+namespace unchecked {
+template <class F>
+bool intersect(const Sphere<F>& sp, const Box<F>& box) {
+  return book::unchecked::intersect(sp, box);
+}
+}  // namespace unchecked
+
 }  // namespace cdref::stable

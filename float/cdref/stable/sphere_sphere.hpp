@@ -25,4 +25,12 @@ Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want
   return book::proximity(a, b, w);
 }
 
+// The classification without the input checks (see book/common.hpp).
+namespace unchecked {
+template <class F>
+bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
+  return book::unchecked::intersect(a, b);
+}
+}  // namespace unchecked
+
 }  // namespace cdref::stable

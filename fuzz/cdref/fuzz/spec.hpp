@@ -14,7 +14,8 @@
 //                                             checks (book::unchecked): the cost report's baseline
 //   oracle(a, b, Stage*)                      the exact classification (oracle::classify)
 // and, where they exist:
-//   stable(a, b, w), stable_pred(a, b)        the stable tier (float/cdref/stable), F = float, double
+//   stable(a, b, w), stable_pred(a, b)        the stable tier (float/cdref/stable), F = float, double;
+//   stable_bare(a, b)                         its classification without input checks
 //   stage(Stage, a, b)                        one stage of the classification oracle alone
 //   cgal_make<K>(in), cgal(a, b)              CGAL's do_intersect on the same solids
 //   fuzz_extra(in)                            further checks of the fuzz target
@@ -371,6 +372,7 @@ template <class Spec>
 constexpr bool has_stable = requires(const Inputs& in) {
   Spec::stable(Spec::template make<double>(in).first, Spec::template make<double>(in).second, 0u);
   Spec::stable_pred(Spec::template make<double>(in).first, Spec::template make<double>(in).second);
+  Spec::stable_bare(Spec::template make<double>(in).first, Spec::template make<double>(in).second);
 };
 
 template <class Spec>

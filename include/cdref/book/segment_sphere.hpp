@@ -21,6 +21,26 @@
 
 namespace cdref::book {
 
+namespace detail {
+// The listing's x: the point of the segment s->t (r = t - s) closest to the origin.
+template <class T>
+Vec3<T> closest_to_origin(const Vec3<T>& s, const Vec3<T>& t, const Vec3<T>& r) {
+  const T delta = -s.dot(r);
+  if (delta <= T(0)) return s;
+  const T rr = r.squaredNorm();
+  if (delta >= rr) return t;
+  const T lambda = delta / rr;
+  return s + lambda * r;
+}
+// proximity()'s classification alone (|x|^2 <= rho^2, with the division), on checked input.
+template <class T>
+bool closest_point_intersect(const Segment<T>& seg, const Sphere<T>& sp) {
+  const Vec3<T> s = seg.source - sp.center;
+  const Vec3<T> t = seg.target - sp.center;
+  return closest_to_origin(s, t, Vec3<T>(t - s)).squaredNorm() <= sp.radius * sp.radius;
+}
+}  // namespace detail
+
 namespace unchecked {
 // Algorithm 3.2's test on input already checked (see common.hpp).
 template <class T>
@@ -53,19 +73,7 @@ Proximity<sqrt_t<T>> proximity(const Segment<T>& seg, const Sphere<T>& sp, unsig
   const Vec3<T> s = seg.source - sp.center;
   const Vec3<T> t = seg.target - sp.center;
   const Vec3<T> r = t - s;
-  const T delta = -s.dot(r);
-  Vec3<T> x;
-  if (delta <= T(0)) {
-    x = s;
-  } else {
-    const T rr = r.squaredNorm();
-    if (delta >= rr) {
-      x = t;
-    } else {
-      const T lambda = delta / rr;
-      x = s + lambda * r;
-    }
-  }
+  const Vec3<T> x = detail::closest_to_origin(s, t, r);
   const T xx = x.squaredNorm();
   const T& rho = sp.radius;
   res.intersect = xx <= rho * rho;
