@@ -1,9 +1,9 @@
 // bench/bench_campaign.cpp - throughput of a ray-sphere campaign (the book at double against
-// the truth from the oracle), in cases per second on one core, and what it is made of: case
-// generation, the book at double, the exact truth, the oracle (all outputs, and the
-// classification alone). Ratios from one run are the figures to
-// quote; Debian's libbenchmark is a debug build (its own overhead is per iteration, small
-// next to these bodies).
+// the truth from the oracle), in cases per second on one core, with every output graded and
+// with the classification alone (--outputs cls), and what it is made of: case generation, the
+// book at double, the exact truth, the oracle (all outputs, and the classification alone).
+// Ratios from one run are the figures to quote; Debian's libbenchmark is a debug build (its
+// own overhead is per iteration, small next to these bodies).
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
@@ -15,9 +15,10 @@ namespace {
 const Query cast = query_by_name("segment-sphere-cast");
 const Family& fam(const char* name) { return family_by_name(cast, name); }
 
-void campaign(benchmark::State& st, const char* family) {
+void campaign(benchmark::State& st, const char* family, bool classification_only) {
   const std::uint64_t n = 4096;
   Spec s;
+  s.classification_only = classification_only;
   s.queries = {cast};
   s.impls = {"book-double"};
   s.families = {family};
@@ -87,8 +88,10 @@ BENCHMARK(book_double_classification);
 BENCHMARK_CAPTURE(oracle_all, uniform, "uniform");
 BENCHMARK_CAPTURE(oracle_classification, uniform, "uniform");
 BENCHMARK_CAPTURE(oracle_classification, near_tangent_2m52, "near-tangent");
-BENCHMARK_CAPTURE(campaign, uniform, "uniform")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(campaign, long_range, "long-range")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign, uniform, "uniform", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign, long_range, "long-range", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign, uniform_classification_only, "uniform", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign, long_range_classification_only, "long-range", true)->Unit(benchmark::kMillisecond);
 BENCHMARK(generate);
 BENCHMARK(book_double);
 BENCHMARK(exact_truth);
