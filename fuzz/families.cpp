@@ -50,11 +50,11 @@ std::vector<Family> sphere_shot_families(bool ray) {
                  const double rho = uni(next, 0.25, 2);
                  return S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho);
                }});
-  f.push_back({"long-range", "source 10^k radii away, passing 0 to 1.25 radii from the centre", decades,
+  f.push_back({"long-range", "source 10^k radii away, passing 0 to 1.25 radii from the centre", decades(),
                [S](Next& next, int k) { return S.aimed(next, std::pow(10.0, k), uni(next, 0, 1.25)); }});
-  f.push_back({"near-tangent", "from 4 radii, passing at rho (1 +- 2^-k) from the centre", tangency_scales,
+  f.push_back({"near-tangent", "from 4 radii, passing at rho (1 +- 2^-k) from the centre", tangency_scales(),
                [S](Next& next, int k) { return S.aimed(next, 4, 1 + sign(next) * std::ldexp(1.0, -k)); }});
-  f.push_back({"tangent-at-range", "from 10^k radii, passing within 1e-9 radii of tangency", decades,
+  f.push_back({"tangent-at-range", "from 10^k radii, passing within 1e-9 radii of tangency", decades(),
                [S](Next& next, int k) { return S.aimed(next, std::pow(10.0, k), 1 + uni(next, -1e-9, 1e-9)); }});
   f.push_back({"degenerate",
                "through the centre, zero length, source inside, source on the sphere, radius 0",
@@ -86,7 +86,7 @@ std::vector<Family> sphere_shot_families(bool ray) {
                    }
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [S](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [S](Next& next, int k) {
                  const V c = uvec(next, -1, 1);
                  const double rho = uni(next, 0.25, 2);
                  return scaled(S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho), 10, k);
@@ -113,10 +113,10 @@ std::vector<Family> sphere_sphere_families() {
   f.push_back({"uniform", "centres in [-2,2]^3, radii in [0.1,2]", {0}, [](Next& next, int) {
                  return two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2));
                }});
-  f.push_back({"near-touching", "centres (rhoA + rhoB)(1 +- 2^-k) apart", tangency_scales, [](Next& next, int k) {
+  f.push_back({"near-touching", "centres (rhoA + rhoB)(1 +- 2^-k) apart", tangency_scales(), [](Next& next, int k) {
                  return touching_spheres(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
-  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades,
+  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades(),
                [](Next& next, int k) {
                  return touching_spheres(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
@@ -129,7 +129,7 @@ std::vector<Family> sphere_sphere_families() {
                    default: return two_spheres(a, 0.0, uvec(next, -2, 2), pick(next, 2) ? 0.0 : rb);
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  return scaled(two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2)),
                                8, k);
                }});
@@ -171,11 +171,11 @@ std::vector<Family> sphere_box_families() {
                [](Next& next, int) {
                  return sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2));
                }});
-  f.push_back({"near-touching", "touching a face, edge or corner to within 2^-k radii", tangency_scales,
+  f.push_back({"near-touching", "touching a face, edge or corner to within 2^-k radii", tangency_scales(),
                [](Next& next, int k) {
                  return touching_sphere_box(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
-  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades, [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
                  return touching_sphere_box(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
   f.push_back({"degenerate", "centre inside, on a face, at the box centre; zero extent; radius 0", {0},
@@ -194,7 +194,7 @@ std::vector<Family> sphere_box_families() {
                    default: return sphere_box(uvec(next, -4, 4), 0.0, bc, bh);
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  return scaled(sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2)),
                                10, k);
                }});
@@ -225,9 +225,9 @@ std::vector<Family> box_box_families() {
   f.push_back({"uniform", "centres in [-2,2]^3, extents in [0.1,2]^3", {0}, [](Next& next, int) {
                  return two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2));
                }});
-  f.push_back({"near-touching", "faces, edges or corners 2^-k (relative) apart or overlapping", tangency_scales,
+  f.push_back({"near-touching", "faces, edges or corners 2^-k (relative) apart or overlapping", tangency_scales(),
                [](Next& next, int k) { return touching_boxes(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}); }});
-  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades, [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades(), [](Next& next, int k) {
                  return touching_boxes(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
   f.push_back({"degenerate", "zero extents, identical boxes, exactly touching", {0}, [](Next& next, int) {
@@ -238,7 +238,7 @@ std::vector<Family> box_box_families() {
                    default: return touching_boxes(next, 0, V{0, 0, 0});
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  return scaled(two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2)),
                                12, k);
                }});
@@ -272,13 +272,13 @@ std::vector<Family> box_shot_families(bool ray) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
                  return B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h);
                }});
-  f.push_back({"long-range", "from 10^k box sizes away, aimed within 1.2 extents of the centre", decades,
+  f.push_back({"long-range", "from 10^k box sizes away, aimed within 1.2 extents of the centre", decades(),
                [B](Next& next, int k) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
                  const V a = uvec(next, -1.2, 1.2);
                  return B.aimed(next, c, h, c + V{a.x * h.x, a.y * h.y, a.z * h.z}, std::pow(10.0, k));
                }});
-  f.push_back({"grazing", "aimed at an edge or corner, off by 2^-k of the extent", tangency_scales,
+  f.push_back({"grazing", "aimed at an edge or corner, off by 2^-k of the extent", tangency_scales(),
                [B](Next& next, int k) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
                  const int dims = 2 + pick(next, 2);
@@ -339,7 +339,7 @@ std::vector<Family> box_shot_families(bool ray) {
                    }
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [B](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [B](Next& next, int k) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
                  return scaled(B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h), 12, k);
                }});

@@ -181,10 +181,10 @@ std::vector<Family> polygon_shot_family_list(bool ray) {
   f.push_back({"near-edge",
                "aimed at a point of an edge or of a fan diagonal v0 - v_i, or at a vertex, moved 2^-k of the size "
                "across it",
-               tangency_scales, [ray](Next& next, int k) {
+               tangency_scales(), [ray](Next& next, int k) {
                  return shot_poly_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
                }});
-  f.push_back({"long-range", "aimed at an edge, a diagonal or a vertex to within 1e-9, 10^k from the origin", decades,
+  f.push_back({"long-range", "aimed at an edge, a diagonal or a vertex to within 1e-9, 10^k from the origin", decades(),
                [ray](Next& next, int k) {
                  return shot_poly_edge(next, ray, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
                }});
@@ -196,7 +196,7 @@ std::vector<Family> polygon_shot_family_list(bool ray) {
                  const V d = dot(x - s, x - s) == 0 ? V{0, 0, -1} : x - s;
                  return shot_poly(s, ray ? d : s + 2.0 * d, v);
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
                [ray](Next& next, int k) {
                  Inputs in = shot_poly_uniform(next, ray);
                  const double n = in[6];
@@ -212,16 +212,16 @@ std::vector<Family> polygon_polygon_family_list() {
   f.push_back({"uniform", "two convex polygons of 3 to 8 vertices, radius 0.5 to 2, centres in [-1,1]^3", {0},
                [](Next& next, int) { return poly_poly_uniform(next); }});
   f.push_back({"near-touching", "B's first vertex 2^-k of the size from a point of A (off it or through it)",
-               tangency_scales, [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k) {
                  return poly_poly_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
-  f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades,
+  f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades(),
                [](Next& next, int k) {
                  return poly_poly_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
   f.push_back({"degenerate", "degenerate vertex lists on the integer lattice, against each other", {0},
                [](Next& next, int) { return poly_poly(degenerate_polygon(next), degenerate_polygon(next)); }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  Inputs in = poly_poly_uniform(next);
                  const double na = in[0], nb = in[25];
                  in = scaled(in, 50, k);
@@ -236,10 +236,10 @@ std::vector<Family> polygon_box_family_list() {
   f.push_back({"uniform", "a convex polygon (radius 0.5 to 2, centre in [-2,2]^3), a box in [-1,1]^3 with extents 0.1 to 1.5",
                {0}, [](Next& next, int) { return poly_box_uniform(next); }});
   f.push_back({"near-touching", "the polygon's plane 2^-k of its size from the box's support corner (off or through)",
-               tangency_scales, [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k) {
                  return poly_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
-  f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades,
+  f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades(),
                [](Next& next, int k) {
                  return poly_box_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
@@ -249,7 +249,7 @@ std::vector<Family> polygon_box_family_list() {
                                  V{double(pick(next, 5)) - 2, double(pick(next, 5)) - 2, double(pick(next, 5)) - 2},
                                  V{double(pick(next, 3)), double(1 + pick(next, 2)), double(pick(next, 3))});
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  Inputs in = poly_box_uniform(next);
                  const double n = in[0];
                  in = scaled(in, 31, k);
@@ -263,11 +263,11 @@ std::vector<Family> polygon_sphere_family_list() {
   std::vector<Family> f;
   f.push_back({"uniform", "a convex polygon (radius 0.5 to 2, centre in [-1,1]^3), centre in [-3,3]^3, radius 0.1 to 2",
                {0}, [](Next& next, int) { return poly_sphere_uniform(next); }});
-  f.push_back({"near-touching", "touching the polygon's face or a vertex at rho (1 +- 2^-k)", tangency_scales,
+  f.push_back({"near-touching", "touching the polygon's face or a vertex at rho (1 +- 2^-k)", tangency_scales(),
                [](Next& next, int k) {
                  return poly_sphere_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
-  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades, [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
                  return poly_sphere_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
                }});
   f.push_back({"degenerate", "degenerate vertex lists on the integer lattice; the centre on a vertex, radius 0 or 1",
@@ -277,7 +277,7 @@ std::vector<Family> polygon_sphere_family_list() {
                                                 : V{double(pick(next, 7)) - 3, double(pick(next, 7)) - 3, 1};
                  return poly_sphere(v, c, double(pick(next, 2)));
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes, [](Next& next, int k) {
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  Inputs in = poly_sphere_uniform(next);
                  const double n = in[0];
                  in = scaled(in, 29, k);

@@ -195,14 +195,14 @@ std::vector<Family> triangle_box_family_list() {
   f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3; vertices in [-3,3]^3", {0},
                [](Next& next, int) { return tri_box_uniform(next); }});
   f.push_back({"near-touching", "a vertex near a face or the plane near a corner, 2^-k box sizes apart or in",
-               tangency_scales, [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k) {
                  return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 2));
                }});
-  f.push_back({"grazing", "an edge passing a box edge 2^-k box sizes outside or inside", tangency_scales,
+  f.push_back({"grazing", "an edge passing a box edge 2^-k box sizes outside or inside", tangency_scales(),
                [](Next& next, int k) { return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 2); }});
   f.push_back({"near-parallel", "in a face's plane turned by 2^-k radians, within 1e-9 box sizes of the face",
                range(4, 52, 4), [](Next& next, int k) { return tri_box_near_parallel(next, k); }});
-  f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades, [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades(), [](Next& next, int k) {
                  return tri_box_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), flat boxes, coplanar with a face", {0},
@@ -230,7 +230,7 @@ std::vector<Family> triangle_box_family_list() {
                    }
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
                [](Next& next, int k) { return scaled(tri_box_uniform(next), 15, k); }});
   return f;
 }
@@ -285,15 +285,15 @@ std::vector<Family> obb_obb_family_list() {
   f.push_back({"uniform", "centres in [-2,2]^3, extents in [0.1,2]^3, random rotations", {0},
                [](Next& next, int) { return obbs_uniform(next); }});
   f.push_back({"near-touching", "placed along a face normal at the sum of the radii times 1 +- 2^-k",
-               tangency_scales, [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 0); }});
+               tangency_scales(), [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 0); }});
   f.push_back({"grazing", "placed along an edge cross a_i x b_j at the sum of the radii times 1 +- 2^-k (edge-edge)",
-               tangency_scales, [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 1); }});
+               tangency_scales(), [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 1); }});
   f.push_back({"near-parallel", "B's frame A's turned by 2^-k radians, placed face or edge to face 1e-9 apart or in",
                range(4, 52, 4), [](Next& next, int k) {
                  const Rot t = small_rotation(next, std::ldexp(1.0, -k));
                  return obbs_touching(next, uni(next, -1e-9, 1e-9), V{0, 0, 0}, pick(next, 2), &t);
                }});
-  f.push_back({"long-range", "placed face or edge to face within 1e-9 of touching, 10^k from the origin", decades,
+  f.push_back({"long-range", "placed face or edge to face within 1e-9 of touching, 10^k from the origin", decades(),
                [](Next& next, int k) {
                  return obbs_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 2));
                }});
@@ -322,7 +322,7 @@ std::vector<Family> obb_obb_family_list() {
                    }
                  }
                }});
-  f.push_back({"magnitude", "the uniform family's centres and extents scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family's centres and extents scaled by 10^k", magnitudes(),
                [](Next& next, int k) { return scaled_obbs(obbs_uniform(next), k); }});
   return f;
 }

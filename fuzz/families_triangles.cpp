@@ -367,15 +367,15 @@ std::vector<Family> triangle_triangle_family_list() {
   f.push_back({"near-touching",
                "B's tip 2^-k of A's size from A's face, an edge or a vertex (off it or through it), B's other "
                "vertices on one side",
-               tangency_scales, [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k) {
                  return tri_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
                }});
-  f.push_back({"long-range", "touching to within 1e-9 of A's size, 10^k from the origin", decades,
+  f.push_back({"long-range", "touching to within 1e-9 of A's size, 10^k from the origin", decades(),
                [](Next& next, int k) {
                  return tri_tri_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
                }});
   f.push_back({"near-parallel", "B tilted 2^-k from A's plane, within 2^-k of it, overlapping it in projection",
-               tangency_scales, [](Next& next, int k) { return tri_tri_parallel(next, k); }});
+               tangency_scales(), [](Next& next, int k) { return tri_tri_parallel(next, k); }});
   f.push_back({"coplanar", "two triangles exactly in one plane (integer vertices)", {0},
                [](Next& next, int) { return tri_tri_coplanar(next); }});
   f.push_back({"degenerate",
@@ -394,7 +394,7 @@ std::vector<Family> triangle_triangle_family_list() {
                    default: return tri_tri(a, b, a + 2.0 * (b - a), d, e, d + 0.5 * (e - d));  // two segments
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
                [](Next& next, int k) { return scaled(tri_tri_uniform(next), 18, k); }});
   return f;
 }
@@ -441,14 +441,14 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
                               : "source and target in [-3,3]^3, vertices in [-2,2]^3",
                {0}, [ray](Next& next, int) { return shot_tri_uniform(next, ray); }});
   f.push_back({"near-edge", "aimed at a point of an edge or at a vertex, moved 2^-k of the edge's length across it",
-               tangency_scales, [ray](Next& next, int k) {
+               tangency_scales(), [ray](Next& next, int k) {
                  return shot_tri_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 2));
                }});
-  f.push_back({"long-range", "aimed at an edge or a vertex to within 1e-9, the triangle 10^k from the origin", decades,
+  f.push_back({"long-range", "aimed at an edge or a vertex to within 1e-9, the triangle 10^k from the origin", decades(),
                [ray](Next& next, int k) {
                  return shot_tri_edge(next, ray, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 2));
                }});
-  f.push_back({"grazing", "aimed at an interior point, 2^-k radians from the triangle's plane", tangency_scales,
+  f.push_back({"grazing", "aimed at an interior point, 2^-k radians from the triangle's plane", tangency_scales(),
                [ray](Next& next, int k) { return shot_tri_grazing(next, ray, k); }});
   f.push_back({"coplanar", "a shot exactly in the plane of a triangle with integer vertices", {0},
                [ray](Next& next, int) { return shot_tri_coplanar(next, ray); }});
@@ -474,7 +474,7 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
                    default: return shot(a + 0.5 * (b - a), V{0, 0, 0}, a, b, d);           // zero length, on an edge
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
                [ray](Next& next, int k) { return scaled(shot_tri_uniform(next, ray), 15, k); }});
   return f;
 }
@@ -483,11 +483,11 @@ std::vector<Family> sphere_triangle_family_list() {
   std::vector<Family> f;
   f.push_back({"uniform", "centre in [-3,3]^3, radius in [0.1,2], vertices in [-2,2]^3", {0},
                [](Next& next, int) { return sphere_tri_uniform(next); }});
-  f.push_back({"near-touching", "touching the face, an edge or a vertex, at rho (1 +- 2^-k) from it", tangency_scales,
+  f.push_back({"near-touching", "touching the face, an edge or a vertex, at rho (1 +- 2^-k) from it", tangency_scales(),
                [](Next& next, int k) {
                  return sphere_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
                }});
-  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades, [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
                  return sphere_tri_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), the centre on the triangle, radius 0, slivers",
@@ -502,7 +502,7 @@ std::vector<Family> sphere_triangle_family_list() {
                    default: return sphere_tri(uvec(next, -3, 3), rho, a, b, b + std::ldexp(1.0, -40) * (d - b));  // a sliver
                  }
                }});
-  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes,
+  f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
                [](Next& next, int k) { return scaled(sphere_tri_uniform(next), 13, k); }});
   return f;
 }

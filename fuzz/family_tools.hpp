@@ -52,14 +52,17 @@ inline std::vector<int> range(int a, int b, int step = 1) {
   for (int k = a; k <= b; k += step) v.push_back(k);
   return v;
 }
-inline const std::vector<int> tangency_scales = {1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52};
-inline const std::vector<int> decades = range(0, 12);
+// The scale lists are functions, not namespace-scope vectors: the query registry may be built
+// during another translation unit's static initialisation (a benchmark's global Query), before
+// such a vector would have been initialised.
+inline std::vector<int> tangency_scales() { return {1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52}; }
+inline std::vector<int> decades() { return range(0, 12); }
 // 10^-320 and 10^-310 put the uniform family's coordinates among the subnormals.
-inline const std::vector<int> magnitudes = [] {
+inline std::vector<int> magnitudes() {
   std::vector<int> v = {-320, -310};
   for (int k : range(-300, 300, 50)) v.push_back(k);
   return v;
-}();
+}
 
 // Scales every coordinate and length of a case by 10^k.
 inline Inputs scaled(Inputs in, int n, int k) {

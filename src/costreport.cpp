@@ -305,7 +305,8 @@ void write_csv(std::ostream& o, const std::vector<QueryReport>& reps) {
        "ulps,outputs_p99_max_ulps\n";
   for (const QueryReport& r : reps)
     for (const Row& row : r.rows) {
-      o << info(r.q).name << "," << row.name << "," << row.ns << "," << row.ns / r.bare << "," << row.ns / r.base << ",";
+      // (implementation names contain commas: quoted, as CSV wants)
+      o << info(r.q).name << ",\"" << row.name << "\"," << row.ns << "," << row.ns / r.bare << "," << row.ns / r.base << ",";
       if (row.measured) {
         o << row.miss_uniform << "," << row.miss_hard << ","
           << (first_output_in_ulps(r.q) ? std::to_string(row.p99) + "," + std::to_string(row.max) : ",") << ",";

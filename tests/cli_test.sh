@@ -123,7 +123,9 @@ grep -q "^  bare (book at double, unchecked)  *[0-9.]*  *1.00 " report.txt || fa
 grep -q "^  book double  *[0-9.]*  *[0-9.]*  *1.00 " report.txt || fail "report: no book double baseline row"
 grep -q "^  stable double  " report.txt || fail "report: no stable row"
 python3 -c "
-import json
+import csv, json
+rows = list(csv.reader(open('report.csv')))
+assert all(len(r) == len(rows[0]) for r in rows), 'a CSV row with the wrong number of fields'
 d = json.load(open('report.json'))
 assert len(d['queries']) == len(set(l.split(',')[0] for l in open('report.csv').readlines()[1:]))
 assert sum(len(q['rows']) for q in d['queries']) == len(open('report.csv').readlines()) - 1
