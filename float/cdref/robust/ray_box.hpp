@@ -114,13 +114,16 @@
 //     c_i +- eta_i exactly, so it is fl(c_i +- eta_i), correctly rounded (0 ulps). On the
 //     other axes, p_j = s_j + lambda r_j, computed with s_j, t_j (or d_j) scaled by the power
 //     of two of their own larger magnitude (so that a point coordinate far smaller than the
-//     largest input does not underflow): x1 = fma(lambda^, rh_j, s_j), x2 = fl(lambda^ rl_j),
-//     p^_j = fl(x1 + x2) (scaled back exactly), with
-//       |p^_j - p_j| <= 2u(1 + u) |p_j| + (1 + 2u) |lambda^ - lambda| |r_j| + 2u^2 |lambda r_j|,
-//     in the normal range <= u (2(1 + u) |p_j| + (1 + 64u) |lambda r_j|), plus eta where p_j is
-//     subnormal (scaling back rounds it to the subnormal grid): the error is that of
-//     lambda carried along r_j, which no formulation with a rounded lambda avoids. The
-//     source (when it is in the box: enters = false, lambda_enter = 0) is returned exactly.
+//     largest input does not underflow), and lambda as the quotient's double word (lh, ll)
+//     before its rounding (lh + ll is within a few u^2 |lambda| of lambda: the remainder
+//     fma(-lh, rh, nh) is exact and the three roundings after it act on terms of size
+//     u |lambda|): x1 = fma(lh, rh_j, s_j), x2 = fl(lh rl_j + ll rh_j), p^_j = fl(x1 + x2)
+//     (scaled back exactly), with
+//       |p^_j - p_j| <= 2u(1 + u) |p_j| + O(u^2) |lambda r_j|,
+//     plus eta where p_j is subnormal (scaling back rounds it to the subnormal grid). With the
+//     rounded lambda the second term was u |lambda r_j|: at range (|lambda r_j| ~ |s_j| far
+//     above |p_j|) every digit of a point near the box. The source (when it is in the box:
+//     enters = false, lambda_enter = 0) is returned exactly.
 //     The normal is the book's unit vector of the entering face.
 //
 // decide(): value = the classification above; certain == false iff some comparison of
@@ -233,27 +236,28 @@ Pair<F> numerator(const Scaled<F>& L, int plane) {
 
 // Step 4: (nh + nl) / (rh + rl), rh != 0.
 template <class F>
-F quotient(const Pair<F>& n, const Pair<F>& r) {
+Pair<F> quotient_pair(const Pair<F>& n, const Pair<F>& r) {
   const F q0 = n.hi / r.hi;
-  if (!std::isfinite(q0)) return q0;
+  if (!std::isfinite(q0)) return {q0, F(0)};
   const F rho = std::fma(-q0, r.hi, n.hi);
   const F a = rho + n.lo;
   const F num = std::fma(-q0, r.lo, a);
   const F corr = num / r.hi;
-  return q0 + corr;
+  return {q0, corr};
 }
 
-// Step 6: s_j + lambda r_j on one axis, scaled by its own power of two (so that neither
-// the point nor r_j under- or overflows where the other axes are much larger).
+// Step 6: s_j + lambda r_j on one axis, lambda the quotient's double word (lh, ll), scaled by
+// the axis's own power of two (so that neither the point nor r_j under- or overflows where
+// the other axes are much larger).
 template <class F>
-F point_coordinate(F s, F t_or_d, F lambda, bool bounded) {
+F point_coordinate(F s, F t_or_d, const Pair<F>& lambda, bool bounded) {
   const F m = std::max(std::fabs(s), std::fabs(t_or_d));
   if (m == F(0)) return s;
   const int e = std::ilogb(m);
   const F ss = std::ldexp(s, -e), td = std::ldexp(t_or_d, -e);
   const Pair<F> r = bounded ? two_sum(td, F(-ss)) : Pair<F>{td, F(0)};
-  const F x1 = std::fma(lambda, r.hi, ss);
-  const F x2 = lambda * r.lo;
+  const F x1 = std::fma(lambda.hi, r.hi, ss);
+  const F x2 = lambda.hi * r.lo + lambda.lo * r.hi;
   return std::ldexp(F(x1 + x2), e);
 }
 
@@ -428,12 +432,21 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
   res.hit = true;
   res.enters = face >= 0;
   res.unbounded_exit = !bounded && xplane < 0;
-  const auto accurate = [&](int plane) {
-    const F q = quotient(num[plane], L.r[plane / 2]);
-    return bounded ? std::clamp(q, F(0), F(1)) : std::max(q, F(0));
+  // a parameter as a double word, clamped to [0, 1] (a ray: [0, inf)) as the book clamps it
+  const auto accurate_pair = [&](int plane) {
+    const Pair<F> q = quotient_pair(num[plane], L.r[plane / 2]);
+    const F v = q.hi + q.lo;
+    if (v < F(0)) return Pair<F>{F(0), F(0)};
+    if (bounded && v > F(1)) return Pair<F>{F(1), F(0)};
+    return q;
   };
-  const F enter = face >= 0 && (w & (want_lambda_enter | want_point)) ? accurate(face) : F(0);
-  if (w & want_lambda_enter) res.lambda_enter = enter;
+  const auto accurate = [&](int plane) {
+    const Pair<F> q = accurate_pair(plane);
+    return F(q.hi + q.lo);
+  };
+  const Pair<F> enter =
+      face >= 0 && (w & (want_lambda_enter | want_point)) ? accurate_pair(face) : Pair<F>{F(0), F(0)};
+  if (w & want_lambda_enter) res.lambda_enter = enter.hi + enter.lo;
   if (w & want_lambda_exit) {
     if (xplane >= 0)
       res.lambda_exit = accurate(xplane);

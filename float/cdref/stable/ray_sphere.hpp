@@ -22,6 +22,11 @@
 //     lambda_exit = min(lambda_2, 1). The entry point is source + lambda_enter r and the
 //     normal (f + lambda_enter r) / rho, as the book computes them.
 // A zero-length segment (a = 0) is the point test c <= 0 (lambda_enter 0, lambda_exit 1).
+// Range: a, b, c and D are sums of squares and products, and a D a product of two: inputs past
+// about 10^150 overflow them (the campaign's magnitude family at 10^150 and beyond gets
+// non-finite outputs: 297 of 58,000 ray casts in the default campaign, the book 30) and
+// inputs below about 10^-150 underflow. Careful float code lives within those bounds; the
+// robust tier scales every query by a power of two first.
 //
 // Error bound of the classification (first order in u, the unit roundoff of F; f taken as
 // computed, that is the source moved by at most u |f|, as every tier does). With
