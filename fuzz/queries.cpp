@@ -78,8 +78,10 @@ const std::vector<Implementation>& builtin_implementations() {
         {"robust-long-double", 64, [](Query q, const Inputs& in) { return info(q).robust(64, in); }},
     };
     // the stable tier, over the queries that have one
-    for (const auto& [name, precision] : {std::pair<const char*, int>{"stable-float", 24}, {"stable-double", 53}}) {
-      Implementation im{name, precision, [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }};
+    for (const auto& tier : {std::pair<const char*, int>{"stable-float", 24}, {"stable-double", 53}}) {
+      const int precision = tier.second;  // (clang 14 cannot capture a structured binding)
+      Implementation im{tier.first, precision,
+                        [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }};
       for (Query q : all_queries())
         if (info(q).stable) im.queries.push_back(q);
       if (!im.queries.empty()) v.push_back(std::move(im));
