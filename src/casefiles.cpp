@@ -247,6 +247,13 @@ Answer answer_case(Query q, const CaseRow& r, int precision, bool values) {
   return values ? oracle_truth(q, in, precision) : oracle_classify(q, in);
 }
 
+bool classification_only(const std::string& outputs) {
+  if (outputs != "all" && outputs != "cls")
+    throw std::invalid_argument("--outputs is all (every output) or cls (the classification alone), not '" + outputs +
+                                "'");
+  return outputs == "cls";
+}
+
 namespace {
 std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad) {
   std::ifstream f;
@@ -293,11 +300,7 @@ int oracle_command(std::vector<std::string> args) {
   const Opts o = parse(args, {"--query", "--cases", "--out", "--precision", "--outputs"}, {"--decimal"});
   const Query q = query_by_name(o.need("--query"));
   const int precision = parse_precision(o.get("--precision", "53"));
-  const std::string outputs = o.get("--outputs", "all");
-  if (outputs != "all" && outputs != "cls")
-    throw std::invalid_argument("--outputs is all (every answer column) or cls (the classification alone), not '" +
-                                outputs + "'");
-  const bool values = outputs == "all";
+  const bool values = !classification_only(o.get("--outputs", "all"));
   int bad = 0;
   const auto rows = read_cases(q, o.get("--cases", "-"), bad);
   Out out(o.get("--out"));

@@ -25,12 +25,15 @@ struct CaseRow {
 std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::string& source, int& bad);
 
 // The exact answer to a case at the precision (24: for the inputs rounded to float, as a float
-// implementation receives them), as `cdref oracle` writes it. Throws cdref::invalid_input
-// naming the problem for a case outside the query's domain, non-finite inputs included (they
-// are refused by column before any exact conversion).
-// The exact answer to a case at the precision (24: for its inputs rounded to float); with
-// values false the classification alone (the classification oracle).
+// implementation receives them), as `cdref oracle` writes it; with values false the
+// classification alone (the classification oracle). Throws cdref::invalid_input naming the
+// problem for a case outside the query's domain, non-finite inputs included (they are refused
+// by column before any exact conversion).
 fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision, bool values = true);
+
+// The value of an --outputs option: "all" (false) or "cls" (true: the classification alone);
+// anything else throws std::invalid_argument naming the choices.
+bool classification_only(const std::string& outputs);
 
 int cases_command(std::vector<std::string> args);
 int oracle_command(std::vector<std::string> args);

@@ -5,24 +5,28 @@
 // same prepared inputs in one loop, no call per case; a row that computes a query's outputs
 // asks for all of them):
 //   bare: the book's classification at double without its input checks (book::unchecked),
-//   the loop a tight engine runs over bodies it checked once: the baseline; book at float, double (all outputs, and the classification alone: book::hit or
-//   book::intersect), long double, MPFR-128 and MPFR-256; robust at float, double and long
-//   double; the oracle (the classification alone, and every output correctly rounded); the
-//   book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its first output
-//   rounded correctly to double); CGAL's own do_intersect in its filtered (Epick) and exact
-//   (Epeck) kernels, classification only, translated to closed solids as the cross-check
-//   test does (tests/test_cgal_crosscheck.cpp: CGAL's sphere pairs test surfaces). Where the
-//   book assumes what the inputs do not give (oriented boxes), the exact rows run the truth's
-//   formulation instead. Then the query's own variants (the patches engines ship, the book
-//   at an exact type), timed through the campaign's interface (the columns' conversion
-//   included in their time).
+//   the loop a tight engine runs over bodies it checked once: the baseline; book at float,
+//   double (all outputs, and the classification alone: book::hit or book::intersect), long
+//   double, MPFR-128 and MPFR-256; the stable tier at float and double (and its
+//   classification, with and without input checks) where the query has one; robust at float,
+//   double and long double; the oracle (the classification alone, and every output correctly
+//   rounded); the book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its first
+//   output rounded correctly to double); CGAL's own do_intersect in its filtered (Epick) and
+//   exact (Epeck) kernels, classification only, translated to closed solids as the
+//   cross-check test does (tests/test_cgal_crosscheck.cpp: CGAL's sphere pairs test
+//   surfaces). Where the book assumes what the inputs do not give (oriented boxes), the exact
+//   rows run the truth's formulation instead. Then the query's own variants (the patches
+//   engines ship, the book at an exact type), timed through the campaign's interface (the
+//   columns' conversion included in their time).
 // Columns: nanoseconds per query (median of interleaved repetitions over the same inputs, one
-// thread; a row under 2 us a query runs once untimed before each timed run), ratio to bare and to the book at double (all outputs), and for the rows the campaign engine runs: the share
+// thread; a row under 2 us a query runs once untimed before each timed run), ratio to bare and
+// to the book at double (all outputs), and for the rows the campaign engine runs: the share
 // misclassified on the uniform family and on the query's hard families (every other family),
 // and the p99 and max error in ulps of the row's type of every output group (lambda_enter,
 // lambda_exit, point, normal; distance, depth, witnesses; ...) over all families, graded where
-// the row and the truth classify alike. Exact rows and the oracle have no error by construction (the
-// oracle's equality with the exact path is tested); MPFR's error is not measured here.
+// the row and the truth classify alike. Exact rows and the oracle have no error by
+// construction (the oracle's equality with the exact path is tested); MPFR's error is not
+// measured here.
 // Output: the table, and on request CSV, JSON and an SVG of cost against error (log-log, one
 // point per row, one panel per query; gnuplot).
 #include <algorithm>
@@ -157,8 +161,9 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   // accuracy: a campaign over every family of the query
   Spec spec;
   spec.queries = {q};
-  spec.impls = {"book-float", "book-double", "book-long-double", "robust-float", "robust-double", "robust-long-double"};
-  if (info(q).stable) spec.impls.insert(spec.impls.begin() + 3, {"stable-float", "stable-double"});
+  spec.impls = {"book-float", "book-double", "book-long-double"};
+  if (info(q).stable) spec.impls.insert(spec.impls.end(), {"stable-float", "stable-double"});
+  spec.impls.insert(spec.impls.end(), {"robust-float", "robust-double", "robust-long-double"});
   for (const Implementation& v : info(q).variants) spec.impls.push_back(v.name);
   spec.n = err_n;
   spec.threads = threads;

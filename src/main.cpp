@@ -212,13 +212,8 @@ int campaign(Args& a, bool defaults) {
       csv = a.next(opt);
     else if (opt == "--quiet")
       quiet = true;
-    else if (opt == "--outputs") {
-      const std::string v = a.next(opt);
-      if (v != "all" && v != "cls")
-        throw std::invalid_argument("--outputs is all (every output graded) or cls (the classification alone), not '" +
-                                    v + "'");
-      spec.classification_only = v == "cls";
-    }
+    else if (opt == "--outputs")
+      spec.classification_only = cli::classification_only(a.next(opt));
     else
       throw std::invalid_argument("unknown option '" + opt + "' (see `cdref help`)");
   }

@@ -27,13 +27,16 @@ struct Worst {  // the worst output of a cell
   std::uint64_t p50 = 0, p99 = 0, max = 0, nonfinite = 0;
 };
 
+// Groups nothing graded (a campaign with --outputs cls, a cast that never hit) are left out:
+// group -1 when no group has a graded value.
 Worst worst_output(const CellKey& k, const CellStats& st) {
   Worst w;
   const QueryInfo& qi = info(k.query);
   for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
     const OutputStats& os = st.out[g];
-    const std::uint64_t mx = os.worst.set ? os.worst.metric : 0;
     w.nonfinite += os.nonfinite;
+    if (!os.worst.set) continue;
+    const std::uint64_t mx = os.worst.metric;
     if (w.group < 0 || mx > w.max) {
       w.group = int(g);
       w.max = mx;
@@ -180,8 +183,9 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     const std::string p = std::to_string(st->pred_fp) + "/" + std::to_string(st->pred_fn);
     std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
                   info(k.query).name, k.impl.c_str(), fam.c_str(), (unsigned long long)st->n, c.c_str(), p.c_str(),
-                  w.group < 0 ? "-" : info(k.query).outputs[w.group].name.c_str(), num(double(w.p50)).c_str(),
-                  num(double(w.p99)).c_str(), num(double(w.max)).c_str());
+                  w.group < 0 ? "-" : info(k.query).outputs[w.group].name.c_str(),
+                  w.group < 0 ? "-" : num(double(w.p50)).c_str(), w.group < 0 ? "-" : num(double(w.p99)).c_str(),
+                  w.group < 0 ? "-" : num(double(w.max)).c_str());
     o << line;
   }
   // reproducible examples for the very worst

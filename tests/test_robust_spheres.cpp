@@ -805,26 +805,24 @@ TEMPLATE_TEST_CASE("stable sphere casts: every misclassification lies in the hea
           const Sphere<F> sp{at<F>(in, 6), F(in[9])};
           bool got = false, cast_hit = false, truth = false, book_got = false;
           Vec3<Q> src, r;
-          try {
-            if (segment) {
-              const Segment<F> s{at<F>(in, 0), at<F>(in, 3)};
-              got = stable::hit(s, sp);
-              cast_hit = stable::cast(s, sp, unsigned(want_all)).hit;
-              book_got = book::hit(s, sp);
-              const Segment<Q> e = convert_prim_exact(s);
-              truth = book::hit(e, convert_prim_exact(sp));
-              src = e.source;
-              r = e.target - e.source;
-            } else {
-              const Ray<F> s{at<F>(in, 0), at<F>(in, 3)};
-              got = stable::hit(s, sp);
-              cast_hit = stable::cast(s, sp, unsigned(want_all)).hit;
-              book_got = book::hit(s, sp);
-              const Ray<Q> e = convert_prim_exact(s);
-              truth = book::hit(e, convert_prim_exact(sp));
-              src = e.source;
+          // the shot at F and at Gmpq; r the exact direction (t - s for a segment)
+          auto run = [&](const auto& shot) {
+            got = stable::hit(shot, sp);
+            cast_hit = stable::cast(shot, sp, unsigned(want_all)).hit;
+            book_got = book::hit(shot, sp);
+            const auto e = convert_prim_exact(shot);
+            truth = book::hit(e, convert_prim_exact(sp));
+            src = e.source;
+            if constexpr (requires { e.direction; })
               r = e.direction;
-            }
+            else
+              r = e.target - e.source;
+          };
+          try {
+            if (segment)
+              run(Segment<F>{at<F>(in, 0), at<F>(in, 3)});
+            else
+              run(Ray<F>{at<F>(in, 0), at<F>(in, 3)});
           } catch (const invalid_input&) {
             continue;
           }

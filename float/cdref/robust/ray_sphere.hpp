@@ -321,14 +321,17 @@ Analysis<F> analyse(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho, bool bo
 template <class F>
 Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded, unsigned w) {
   Cast<F> res;
+  // the source itself, from its exact offset s to the centre
+  const auto source_point = [&] {
+    for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
+  };
   const LocalDW<F> L = scaled_dw(s, r, sp.radius);
   const bool zero = L.r[0].hi == F(0) && L.r[1].hi == F(0) && L.r[2].hi == F(0);
   const Pair<F> c = c_dw(L);
   if (zero) {  // a zero-length segment: a point test, as in the book
     res.hit = c.hi <= F(0);
     if (res.hit && (w & want_lambda_exit)) res.lambda_exit = F(1);
-    if (res.hit && (w & want_point))
-      for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
+    if (res.hit && (w & want_point)) source_point();
     return res;
   }
   const Quantities<F> Q = quantities(L);
@@ -340,8 +343,7 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
   if (w & want_lambda_exit) res.lambda_exit = bounded ? std::min(R.lambda2, F(1)) : R.lambda2;
   if (!(w & (want_point | want_normal))) return res;
   if (!res.enters) {  // the source is inside: the entry point is the source itself
-    if (w & want_point)
-      for (int i = 0; i < 3; ++i) res.point[i] = F(s[i].hi + sp.center[i]) + s[i].lo;
+    if (w & want_point) source_point();
     return res;
   }
   // step 5: the entry point relative to the centre, x = l - h r with h = sqrt(D / a) (the

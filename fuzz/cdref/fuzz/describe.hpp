@@ -111,11 +111,12 @@ TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
 
 // Rows (each answers the same prepared inputs; a row that computes a query's outputs asks
 // for all of them): `bare`, the book's classification at double without its input checks
-// (book::unchecked, the loop a tight engine runs: the honest baseline); the book at float, double (all outputs, and the classification alone),
-// long double, MPFR-128 and MPFR-256; the stable tier at float and double (all outputs, the
-// classification alone, and that without input checks, beside `bare`) where the query has
-// one; robust at float, double and long double; the oracle
-// (the classification alone, and every output correctly rounded), on the uniform cases and on
+// (book::unchecked, the loop a tight engine runs: the honest baseline); the book at float,
+// double (all outputs, and the classification alone), long double, MPFR-128 and MPFR-256; the
+// stable tier at float and double (all outputs, the classification alone, and that without
+// input checks, beside `bare`) where the query has one; robust at float, double and long
+// double; the oracle (the classification alone, and every output correctly rounded), on the
+// uniform cases and on
 // the hard ones; the book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its
 // first output rounded correctly to double); CGAL's own do_intersect in its filtered (Epick)
 // and exact (Epeck) kernels where CGAL has the pair.
