@@ -4,7 +4,9 @@
 #include <bit>
 #include <cdref/error.hpp>
 #include <charconv>
+#include <chrono>
 #include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/work.hpp>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -185,6 +187,14 @@ std::vector<Cell> cells_of(const Spec& spec) {
         if (wanted) cells.push_back({q, f, k});
       }
   }
+  // a family named for none of the queries is a mistake, not a filter (a family of some of
+  // them is fine: "grazing" is the boxes', not the spheres')
+  for (const std::string& name : spec.families) {
+    bool known = false;
+    for (Query q : spec.queries)
+      for (const Family& f : families(q)) known = known || f.name == name;
+    if (!known) family_by_name(spec.queries.front(), name);  // throws, naming the choices
+  }
   if (cells.empty()) throw std::invalid_argument("the campaign selects no (query, family, scale) cell");
   return cells;
 }
@@ -303,26 +313,6 @@ std::vector<Item> items_of(const Spec& spec, const std::vector<Cell>& cells) {
   return items;
 }
 
-void write_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
-    f << text;
-    f.flush();
-    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot replace checkpoint " + path);
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error("cannot read " + path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 }  // namespace
 
 // exact_truth is left out: the oracle and the exact path give identical results (tested),
@@ -344,77 +334,113 @@ std::string Spec::fingerprint() const {
 
 std::uint64_t total_items(const Spec& spec) { return items_of(spec, cells_of(spec)).size(); }
 
-Results run(const Spec& spec) {
+// ---- work items ----
+struct Work::State {
+  Spec spec;
+  std::vector<Cell> cells;
+  std::vector<Item> items;
+  std::vector<const Implementation*> impls;
+};
+
+Work::Work(const Spec& spec) {
   if (spec.shards < 1 || spec.shard < 0 || spec.shard >= spec.shards)
     throw std::invalid_argument("shard must be k/N with 0 <= k < N");
-  const std::vector<Cell> cells = cells_of(spec);
-  const std::vector<Item> items = items_of(spec, cells);
-  std::vector<const Implementation*> impls;
+  auto s = std::make_shared<State>();
+  s->spec = spec;
+  s->spec.progress = nullptr;
+  s->cells = cells_of(spec);
+  s->items = items_of(spec, s->cells);
   for (const auto& name : spec.impls) {
     const Implementation* found = nullptr;
-    for (const Implementation& c : spec.custom)
+    for (const Implementation& c : s->spec.custom)
       if (c.name == name) found = &c;
-    impls.push_back(found ? found : &implementation_by_name(name));
+    s->impls.push_back(found ? found : &implementation_by_name(name));
   }
-  if (impls.empty()) throw std::invalid_argument("the campaign names no implementation");
+  if (s->impls.empty()) throw std::invalid_argument("the campaign names no implementation");
+  s_ = std::move(s);
+}
 
+const Spec& Work::spec() const { return s_->spec; }
+std::uint64_t Work::items() const { return s_->items.size(); }
+
+std::uint64_t Work::cases(std::uint64_t begin, std::uint64_t end) const {
+  const Spec& spec = s_->spec;
+  std::uint64_t c = 0;
+  for (std::uint64_t k = begin; k < end && k < s_->items.size(); ++k) {
+    const std::uint64_t first = s_->items[k].first, last = std::min(spec.n, first + block);
+    for (std::uint64_t i = first; i < last; ++i) c += i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard);
+  }
+  return c;
+}
+
+void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
+  const Spec& spec = s_->spec;
+  const std::vector<Cell>& cells = s_->cells;
+  const std::vector<Item>& items = s_->items;
+  const std::vector<const Implementation*>& impls = s_->impls;
+  end = std::min<std::uint64_t>(end, items.size());
+  if (begin >= end) return;
+  const int threads = int(std::min<std::uint64_t>(std::max(1, spec.threads), end - begin));
+  std::atomic<std::uint64_t> next{begin};
+  std::vector<Results> local(threads);
+  std::vector<std::exception_ptr> errors(threads);
+  auto work = [&](int t) {
+    try {
+      for (std::uint64_t k; (k = next++) < end;) {
+        const Item& it = items[k];
+        const Cell& cell = cells[it.cell];
+        std::vector<CellStats*> stats;  // looked up once per block, at its first case of this shard
+        const std::uint64_t last = std::min(spec.n, it.first + block);
+        for (std::uint64_t i = it.first; i < last; ++i) {
+          if (i % std::uint64_t(spec.shards) != std::uint64_t(spec.shard)) continue;
+          if (stats.empty())
+            for (const Implementation* im : impls)
+              stats.push_back(im->supports(cell.q) ? &local[t].cells[{cell.q, im->name, cell.family->name, cell.scale}]
+                                                   : nullptr);
+          run_case(cell, spec.seed, i, impls, spec, stats);
+        }
+      }
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& th : pool) th.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  for (const Results& r : local) into.merge(r);
+}
+
+Results run(const Spec& spec) {
+  const Work work(spec);
+  const std::uint64_t n_items = work.items();
   Results total;
   std::uint64_t done = 0;
   if (spec.resume) {
-    const Saved saved = deserialize(read_file(spec.checkpoint), spec.checkpoint);
+    const Saved saved = deserialize(read_whole_file(spec.checkpoint), spec.checkpoint);
     if (saved.fingerprint != spec.fingerprint() || saved.shard != spec.shard || saved.shards != spec.shards)
       throw std::runtime_error("checkpoint " + spec.checkpoint + " belongs to another campaign (" + saved.fingerprint +
                                ", shard " + std::to_string(saved.shard) + "/" + std::to_string(saved.shards) + ")");
     total = saved.results;
     done = saved.items_done;
   }
-  // cases of this shard in each work item, for the progress report
-  auto cases_in = [&](std::uint64_t k) {
-    const std::uint64_t first = items[k].first, last = std::min(spec.n, first + block);
-    std::uint64_t c = 0;
-    for (std::uint64_t i = first; i < last; ++i) c += i % std::uint64_t(spec.shards) == std::uint64_t(spec.shard);
-    return c;
-  };
-  std::uint64_t cases_total = 0, cases_done = 0;
-  for (std::uint64_t k = 0; k < items.size(); ++k) (k < done ? cases_done : cases_total) += cases_in(k);
-  cases_total += cases_done;
-  const int threads = std::max(1, spec.threads);
-  const std::uint64_t round = std::uint64_t(threads) * 8;
-  while (done < items.size()) {
-    const std::uint64_t end = std::min<std::uint64_t>(items.size(), done + round);
-    std::atomic<std::uint64_t> next{done};
-    std::vector<Results> local(threads);
-    std::vector<std::exception_ptr> errors(threads);
-    auto work = [&](int t) {
-      try {
-        for (std::uint64_t k; (k = next++) < end;) {
-          const Item& it = items[k];
-          const Cell& cell = cells[it.cell];
-          std::vector<CellStats*> stats;  // looked up once per block, at its first case of this shard
-          const std::uint64_t last = std::min(spec.n, it.first + block);
-          for (std::uint64_t i = it.first; i < last; ++i) {
-            if (i % std::uint64_t(spec.shards) != std::uint64_t(spec.shard)) continue;
-            if (stats.empty())
-              for (const Implementation* im : impls)
-                stats.push_back(im->supports(cell.q) ? &local[t].cells[{cell.q, im->name, cell.family->name, cell.scale}]
-                                                     : nullptr);
-            run_case(cell, spec.seed, i, impls, spec, stats);
-          }
-        }
-      } catch (...) {
-        errors[t] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool) th.join();
-    for (auto& e : errors)
-      if (e) std::rethrow_exception(e);
-    for (const Results& r : local) total.merge(r);
-    for (std::uint64_t k = done; k < end; ++k) cases_done += cases_in(k);
+  const std::uint64_t cases_total = work.cases(0, n_items);
+  std::uint64_t cases_done = work.cases(0, done);
+  const std::uint64_t round = std::uint64_t(std::max(1, spec.threads)) * 8;
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  while (done < n_items) {
+    const std::uint64_t end = std::min<std::uint64_t>(n_items, done + round);
+    work.run(done, end, total);
+    cases_done += work.cases(done, end);
     done = end;
-    if (!spec.checkpoint.empty()) write_atomically(spec.checkpoint, serialize(spec, total, done));
+    const auto now = std::chrono::steady_clock::now();
+    if (!spec.checkpoint.empty() &&
+        (done == n_items || std::chrono::duration<double>(now - last_checkpoint).count() >= spec.checkpoint_every)) {
+      write_file_atomically(spec.checkpoint, serialize(spec, total, done));
+      last_checkpoint = now;
+    }
     if (spec.progress) spec.progress(double(cases_done), double(cases_total));
   }
   return total;
@@ -471,7 +497,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
   std::string line;
   int lineno = 0;
   CellStats* cur = nullptr;
-  std::size_t n_in = 0;
+  std::size_t n_in = 0, n_out = 0;
   bool header = false, ended = false;
   int version = 0;
   auto fail = [&](const std::string& why) {
@@ -535,6 +561,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
         fail(e.what());
       }
       n_in = info(query).inputs.size();
+      n_out = info(query).outputs.size();
       cur = &s.results.cells[{query, impl, fam, scale}];
       *cur = st;
     } else if (tag == "ex" || tag == "out") {
@@ -548,13 +575,14 @@ Saved deserialize(const std::string& text, const std::string& source) {
           read_ex(ls, cur->pred_example);
         else if (which == "certain")
           read_ex(ls, cur->certain_wrong_example);
-        else if (which.rfind("out", 0) == 0 && number(which.substr(3)) < max_values)
+        else if (which.rfind("out", 0) == 0 && number(which.substr(3)) < n_out)
           read_ex(ls, cur->out[number(which.substr(3))].worst);
         else
           fail("unknown example kind '" + which + "'");
       } else {
         std::size_t g;
-        if (!(ls >> g >> cur->out.at(g < max_values ? g : 0).nonfinite) || g >= max_values) fail("malformed out record");
+        if (!(ls >> g >> cur->out.at(g < max_values ? g : 0).nonfinite) || g >= n_out)
+          fail("malformed out record (the query has " + std::to_string(n_out) + " output groups)");
         std::string bc;
         while (ls >> bc) {
           const auto colon = bc.find(':');

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <cdref/fuzz/work.hpp>
+
 #include "../src/casefiles.hpp"
 #include "../src/scene/scene.hpp"
 
@@ -185,6 +187,31 @@ void check_case_reader(const std::uint8_t* data, std::size_t size) {
       } catch (const invalid_input&) {
       }
     }
+  }
+}
+
+void check_results_reader(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  // a campaign's text form (a shard, a checkpoint, --out): read whole or refused by line;
+  // what is read writes back to the same statistics
+  try {
+    const Saved s = deserialize(text, "fuzz");
+    const Saved back = deserialize(serialize(s), "fuzz (written back)");
+    if (!(back.results == s.results) || back.fingerprint != s.fingerprint || back.items_done != s.items_done) {
+      std::fprintf(stderr, "cdref fuzz: a results file does not survive its own round trip\n");
+      std::abort();
+    }
+  } catch (const std::runtime_error&) {
+  }
+  // a rank's checkpoint (cdref-mpi): its done items and its statistics agree, or it is refused
+  try {
+    const PartCheckpoint c = deserialize_part(text, "fuzz");
+    const PartCheckpoint back = deserialize_part(serialize(c), "fuzz (written back)");
+    if (c.done.count() != c.saved.items_done || !(back.done == c.done) || !(back.saved.results == c.saved.results)) {
+      std::fprintf(stderr, "cdref fuzz: a rank's checkpoint does not survive its own round trip\n");
+      std::abort();
+    }
+  } catch (const std::runtime_error&) {
   }
 }
 

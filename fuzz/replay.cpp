@@ -1,8 +1,10 @@
 // fuzz/replay.cpp - replays a fuzz corpus through the same checks as the libFuzzer targets,
 // in any build (g++ included):
-//   cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...   TARGET is a query name, "casefile" or "scene"
+//   cdref_fuzz_replay TARGET FILE-OR-DIRECTORY...   TARGET is a query name, "casefile", "scene"
+//                                                   or "results"
 //   cdref_fuzz_replay --all CORPUS                  every query's CORPUS/<query>,
-//                                                   CORPUS/casefile and CORPUS/scene, each
+//                                                   CORPUS/casefile, CORPUS/scene and
+//                                                   CORPUS/results, each
 //                                                   required non-empty
 //   cdref_fuzz_replay --list                        the targets, one a line
 // Prints the number of inputs replayed per target.
@@ -17,8 +19,9 @@
 namespace {
 
 std::size_t replay(const std::string& target, const std::vector<std::filesystem::path>& paths) {
-  const bool casefile = target == "casefile", scene = target == "scene";
-  const cdref::fuzz::Query q = casefile || scene ? cdref::fuzz::Query{} : cdref::fuzz::query_by_name(target);
+  const bool casefile = target == "casefile", scene = target == "scene", results = target == "results";
+  const cdref::fuzz::Query q =
+      casefile || scene || results ? cdref::fuzz::Query{} : cdref::fuzz::query_by_name(target);
   std::vector<std::filesystem::path> files;
   for (const auto& p : paths) {
     if (std::filesystem::is_directory(p)) {
@@ -36,6 +39,8 @@ std::size_t replay(const std::string& target, const std::vector<std::filesystem:
       cdref::fuzz::check_case_reader(data, bytes.size());
     else if (scene)
       cdref::fuzz::check_scene_reader(data, bytes.size());
+    else if (results)
+      cdref::fuzz::check_results_reader(data, bytes.size());
     else
       cdref::fuzz::check_query(q, data, bytes.size());
   }
@@ -51,6 +56,7 @@ int main(int argc, char** argv) {
   for (cdref::fuzz::Query q : cdref::fuzz::all_queries()) targets.push_back(cdref::fuzz::info(q).name);
   targets.push_back("casefile");
   targets.push_back("scene");
+  targets.push_back("results");
   if (first == "--list") {
     for (const auto& t : targets) std::printf("%s\n", t.c_str());
     return 0;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang 14 (AddressSanitizer and UndefinedBehaviorSanitizer)
-# and runs each query's target, the case-file reader's and the scene reader's, for a fixed time, starting from
+# and runs each query's target, the case-file reader's, the scene reader's and the results
+# readers' (campaign text form, cdref-mpi checkpoints), for a fixed time, starting from
 # the seed corpus in fuzz/corpus.
 #   bash scripts/fuzz.sh [SECONDS-PER-TARGET]   (default 10)
 # New inputs found go to build/fuzz/corpus/<target> (the repository's corpus is not changed);
@@ -15,13 +16,13 @@ bash scripts/deps.sh
 bash scripts/deps.sh clang-14 libclang-rt-14-dev
 cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCDREF_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
-cmake --build build/fuzz --target fuzz_query fuzz_casefile fuzz_scene cdref_fuzz_replay
+cmake --build build/fuzz --target fuzz_query fuzz_casefile fuzz_scene fuzz_results cdref_fuzz_replay
 mapfile -t targets < <(build/fuzz/cdref_fuzz_replay --list)
 failed=()
 for t in "${targets[@]}"; do
   mkdir -p "build/fuzz/corpus/$t"
   echo "cdref: fuzzing $t for ${seconds}s"
-  case "$t" in casefile) bin=./fuzz_casefile ;; scene) bin=./fuzz_scene ;; *) bin=./fuzz_query ;; esac
+  case "$t" in casefile) bin=./fuzz_casefile ;; scene) bin=./fuzz_scene ;; results) bin=./fuzz_results ;; *) bin=./fuzz_query ;; esac
   # libFuzzer exits nonzero on a crash or a violated check (and leaves crash-* in build/fuzz)
   set +e
   (cd build/fuzz && CDREF_FUZZ_QUERY="$t" "$bin" -max_total_time="$seconds" -seed="$seed" -print_final_stats=1 \

@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "campaign_cli.hpp"
 #include "casefiles.hpp"
 #include "report.hpp"
 #include "scene/scene.hpp"
@@ -49,6 +50,7 @@ const char* usage = R"(usage:
       --threads T      worker threads (default: hardware threads)
       --shard k/N      run only the cases with index % N == k
       --checkpoint F   write the results so far to F as the campaign goes
+      --checkpoint-every S  seconds between checkpoints (default 10; 0: after every round)
       --resume         continue the campaign saved in --checkpoint F
       --out F          write the results (mergeable text form) to F
       --json F         write the results as JSON to F ("-" for standard output)
@@ -103,41 +105,6 @@ struct Args {
   }
 };
 
-std::uint64_t to_u64(const std::string& s, const std::string& opt) {
-  std::size_t pos = 0;
-  unsigned long long x = 0;
-  try {
-    x = std::stoull(s, &pos);
-  } catch (const std::exception&) {
-    pos = 0;
-  }
-  if (pos != s.size() || s.empty() || s[0] == '-')
-    throw std::invalid_argument(opt + " wants a nonnegative whole number, not '" + s + "'");
-  return x;
-}
-
-int to_int(const std::string& s, const std::string& opt) {
-  std::size_t pos = 0;
-  int x = 0;
-  try {
-    x = std::stoi(s, &pos);
-  } catch (const std::exception&) {
-    pos = 0;
-  }
-  if (pos != s.size() || s.empty()) throw std::invalid_argument(opt + " wants a whole number, not '" + s + "'");
-  return x;
-}
-
-void write_to(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f) throw std::runtime_error("cannot write " + path);
-}
-
 // A progress bar with rate and ETA on a terminal; nothing otherwise.
 struct Progress {
   bool tty = isatty(2);
@@ -155,77 +122,9 @@ struct Progress {
   }
 };
 
-void emit(const Results& r, std::uint64_t seed, const std::string& out, const std::string& json,
-          const std::string& csv, bool quiet, const Spec* spec) {
-  if (!out.empty() && spec) write_to(out, serialize(*spec, r, total_items(*spec)));
-  if (!json.empty()) {
-    std::ostringstream s;
-    cli::write_json(s, r, seed);
-    write_to(json, s.str());
-  }
-  if (!csv.empty()) {
-    std::ostringstream s;
-    cli::write_csv(s, r);
-    write_to(csv, s.str());
-  }
-  if (!quiet) cli::print_table(std::cout, r, seed);
-}
-
 int campaign(Args& a, bool defaults) {
-  Spec spec;
-  spec.threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  std::string out, json, csv;
-  bool quiet = false;
-  if (defaults) spec.n = 1000;  // a minute and a quarter on 2 cores
-  while (a.more()) {
-    const std::string opt = a.next("");
-    if (opt == "--query")
-      spec.queries.push_back(query_by_name(a.next(opt)));
-    else if (opt == "--family")
-      spec.families.push_back(a.next(opt));
-    else if (opt == "--scale")
-      spec.scales.push_back(to_int(a.next(opt), opt));
-    else if (opt == "--impl") {
-      spec.impls.push_back(a.next(opt));
-      implementation_by_name(spec.impls.back());
-    } else if (opt == "--n")
-      spec.n = to_u64(a.next(opt), opt);
-    else if (opt == "--seed")
-      spec.seed = to_u64(a.next(opt), opt);
-    else if (opt == "--threads")
-      spec.threads = int(to_u64(a.next(opt), opt));
-    else if (opt == "--shard") {
-      const std::string s = a.next(opt);
-      const auto slash = s.find('/');
-      if (slash == std::string::npos) throw std::invalid_argument("--shard wants k/N, not '" + s + "'");
-      spec.shard = to_int(s.substr(0, slash), opt);
-      spec.shards = to_int(s.substr(slash + 1), opt);
-    } else if (opt == "--checkpoint")
-      spec.checkpoint = a.next(opt);
-    else if (opt == "--resume")
-      spec.resume = true;
-    else if (opt == "--out")
-      out = a.next(opt);
-    else if (opt == "--json")
-      json = a.next(opt);
-    else if (opt == "--csv")
-      csv = a.next(opt);
-    else if (opt == "--quiet")
-      quiet = true;
-    else if (opt == "--outputs")
-      spec.classification_only = cli::classification_only(a.next(opt));
-    else
-      throw std::invalid_argument("unknown option '" + opt + "' (see `cdref help`)");
-  }
-  if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
-  if (spec.queries.empty()) spec.queries = all_queries();
-  if (spec.impls.empty())  // every implementation of the chosen queries
-    for (const Implementation& im : builtin_implementations())
-      for (Query q : spec.queries)
-        if (im.supports(q)) {
-          spec.impls.push_back(im.name);
-          break;
-        }
+  cli::CampaignCommand c = cli::parse_campaign({a.v.begin() + long(a.i), a.v.end()}, defaults, false);
+  Spec& spec = c.spec;
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
   if (defaults)
@@ -236,10 +135,10 @@ int campaign(Args& a, bool defaults) {
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  emit(r, spec.seed, out, json, csv, quiet, &spec);
+  cli::emit_campaign(c, r);
   std::uint64_t cases = 0;
   for (const auto& [k, st] : r.cells) cases += st.n;
-  if (!quiet)
+  if (!c.quiet)
     std::cout << "\n" << cases << " evaluations in " << secs << " s on " << spec.threads << " threads.\n";
   return 0;
 }
@@ -266,9 +165,13 @@ int merge(Args& a) {
   const Results r = merge_shards(shards);
   // the merged result is the unsharded campaign's: shard 0 of 1, complete
   if (!out.empty())
-    write_to(out, serialize(Saved{shards.front().fingerprint, 0, 1, shards.front().items_total,
+    cli::write_to(out, serialize(Saved{shards.front().fingerprint, 0, 1, shards.front().items_total,
                                   shards.front().items_total, r, shards.front().seed}));
-  emit(r, shards.front().seed, "", json, csv, false, nullptr);
+  cli::CampaignCommand c;
+  c.spec.seed = shards.front().seed;
+  c.json = json;
+  c.csv = csv;
+  cli::emit_campaign(c, r);
   return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cdref/error.hpp>
 #include <cdref/fuzz/campaign.hpp>
+#include <cdref/fuzz/work.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -111,6 +112,83 @@ TEST_CASE("shards merge into exactly the unsharded result, whatever the thread c
   }
 }
 
+TEST_CASE("work items run in any partition and any order merge into exactly run()", "[campaign][work]") {
+  // what lets cdref-mpi hand items out on request and still print what one process prints
+  Spec s = small_spec();
+  s.threads = 1;
+  const Results all = run(s);
+  const Work work(s);
+  REQUIRE(work.items() == total_items(s));
+  REQUIRE(work.cases(0, work.items()) == s.n * all.cells.size() / s.impls.size());
+  // chunks of 1..7 items, run from the last to the first, each into its own results
+  std::vector<ItemSet::Range> chunks;
+  for (std::uint64_t b = 0, k = 0; b < work.items(); ++k) {
+    const std::uint64_t e = std::min(work.items(), b + 1 + (k * 5) % 7);
+    chunks.push_back({b, e});
+    b = e;
+  }
+  Results merged;
+  ItemSet done;
+  for (auto it = chunks.rbegin(); it != chunks.rend(); ++it) {
+    Results part;
+    work.run(it->first, it->second, part);
+    merged.merge(part);
+    done.add(it->first, it->second);
+  }
+  REQUIRE(merged == all);
+  REQUIRE(done.ranges() == std::vector<ItemSet::Range>{{0, work.items()}});
+  REQUIRE(done.complement(work.items()).empty());
+}
+
+TEST_CASE("item sets: joined neighbours, complements, items counted twice refused", "[campaign][work]") {
+  ItemSet s;
+  s.add(10, 20);
+  s.add(30, 40);
+  s.add(20, 25);  // joins the range before
+  s.add(28, 30);  // joins the range after
+  REQUIRE(s.text() == "10-25 28-40");
+  REQUIRE(s.count() == 27);
+  s.add(25, 28);  // closes the gap
+  REQUIRE(s.text() == "10-40");
+  REQUIRE(s.complement(50).text() == "0-10 40-50");
+  REQUIRE(s.complement(5).text() == "0-5");
+  REQUIRE_THROWS_WITH(s.add(39, 41), Catch::Contains("items 39..39 counted twice"));
+  REQUIRE_THROWS_WITH(s.add(0, 11), Catch::Contains("items 10..10 counted twice"));
+  REQUIRE(s.text() == "10-40");  // a refused add changes nothing
+  REQUIRE(ItemSet::parse(s.text()) == s);
+  REQUIRE(ItemSet::parse("").empty());
+  for (const char* bad : {"5", "5-", "-5", "7-3", "1-2x", "3-3"})
+    REQUIRE_THROWS_WITH(ItemSet::parse(bad), Catch::Contains("malformed item range"));
+  REQUIRE_THROWS_WITH(ItemSet::parse("0-5 4-6"), Catch::Contains("counted twice"));
+}
+
+TEST_CASE("a rank's checkpoint round-trips, and a damaged one is refused by name", "[campaign][work]") {
+  Spec s = small_spec();
+  s.threads = 1;
+  const Work work(s);
+  PartCheckpoint c;
+  c.part = 3;
+  c.generation = 2;
+  work.run(4, 9, c.saved.results);
+  c.done.add(4, 9);
+  c.saved.fingerprint = s.fingerprint();
+  c.saved.items_done = 5;
+  c.saved.items_total = work.items();
+  c.saved.seed = s.seed;
+  const std::string text = serialize(c);
+  const PartCheckpoint back = deserialize_part(text, "ck.g2.r3");
+  REQUIRE(back.part == 3);
+  REQUIRE(back.generation == 2);
+  REQUIRE(back.done == c.done);
+  REQUIRE(back.saved.results == c.saved.results);
+  REQUIRE_THROWS_WITH(deserialize_part("cdref-results 2\n", "f"), Catch::Contains("f:1: not a cdref part checkpoint"));
+  REQUIRE_THROWS_WITH(deserialize_part("cdref-part 1\npart 1 1\n", "f"), Catch::Contains("truncated"));
+  std::string wrong_count = text;
+  wrong_count.replace(wrong_count.find("done 4-9"), 8, "done 4-8");
+  REQUIRE_THROWS_WITH(deserialize_part(wrong_count, "f"), Catch::Contains("4 items marked done, statistics of 5"));
+  REQUIRE_THROWS_WITH(deserialize_part(text.substr(0, text.size() - 4), "f"), Catch::Contains("truncated (no end record)"));
+}
+
 TEST_CASE("the text form round-trips, and a malformed file is refused by line", "[campaign]") {
   const Spec s = small_spec();
   const Results r = run(s);
@@ -140,7 +218,7 @@ TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterru
                                          "sphere-sphere", "--family", "near-tangent", "--family", "near-touching",
                                          "--scale", "8", "--scale", "24", "--n", "8000", "--impl", "book-float", "--impl", "book-double",
                                          "--impl", "book-long-double", "--impl", "robust-double", "--seed", "9", "--threads", "2", "--checkpoint", ck,
-                                         "--quiet"};
+                                         "--checkpoint-every", "0", "--quiet"};
   const pid_t pid = fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {

@@ -257,6 +257,8 @@ struct Spec {
   // outputs: the fast mode for hunting misclassifications)
   bool classification_only = false;
   std::string checkpoint;     // file to write as it goes ("" for none)
+  double checkpoint_every = 10;  // seconds between checkpoints (0: after every round of work
+                                 // items); always one when the campaign is done
   bool resume = false;        // continue from `checkpoint`
   std::function<void(double cases_done, double cases_total)> progress;  // optional, per cell-case
   // Implementations the caller brings (cdref/validate.hpp): named in `impls` like the

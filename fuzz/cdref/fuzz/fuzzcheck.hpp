@@ -11,7 +11,8 @@
 //     Algorithm 3.1 with Algorithm 3.2 for segments and spheres;
 //   - the oracle (filter first, then exact) must give exactly the Gmpq answer.
 // A violated check prints the inputs in hex-float and aborts.
-// check_case_reader feeds bytes as a case file to the case-file parser.
+// check_case_reader feeds bytes as a case file to the case-file parser; check_results_reader
+// as a campaign's text form and as a cdref-mpi rank's checkpoint (read back after writing).
 #pragma once
 
 #include <cdref/fuzz/campaign.hpp>
@@ -23,6 +24,7 @@ namespace cdref::fuzz {
 bool decode_inputs(Query q, const std::uint8_t* data, std::size_t size, Inputs& in);
 void check_query(Query q, const std::uint8_t* data, std::size_t size);
 void check_case_reader(const std::uint8_t* data, std::size_t size);
+void check_results_reader(const std::uint8_t* data, std::size_t size);
 // A scene file: refused with a scene_error, or (when small enough to run quickly) run at
 // float, double and exact precision and compared, never anything else.
 void check_scene_reader(const std::uint8_t* data, std::size_t size);

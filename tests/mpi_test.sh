@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# tests/mpi_test.sh CDREF CDREF_MPI MPIRUN - campaigns across MPI ranks on this machine:
+#  - 1, 2 and 4 ranks print byte for byte what one process prints (text form, JSON, CSV, table);
+#  - a rank killed mid-run, the job resumed (with another number of ranks, and killed again):
+#    exactly the uninterrupted result, nothing counted twice;
+#  - the whole job killed, resumed on one rank, then resumed once more when all was done;
+#  - errors by name: a bad option, --resume without a checkpoint, another campaign's checkpoint.
+set -euo pipefail
+cdref="$1"
+cdref_mpi="$2"
+mpirun="$3"
+dir=$(mktemp -d)
+trap 'kill -9 $(jobs -p) 2>/dev/null || true; rm -rf "$dir"' EXIT
+cd "$dir"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+# OpenMPI refuses root unless told twice (CI runs as root); --oversubscribe: 4 ranks on 2 cores;
+# no grace period between the TERM and the KILL of a failed job's other ranks (2 s by default)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpi() { local np=$1; shift; "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 -np "$np" "$cdref_mpi" "$@"; }
+# the same as a background job whose pid ($!) is mpirun's
+mpi_bg() { local np=$1; shift; exec "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 -np "$np" "$cdref_mpi" "$@"; }
+
+args=(campaign --query segment-sphere-cast --query box-box --query ray-triangle-cast
+      --impl book-float --impl book-double --impl robust-double --n 700 --seed 11)
+"$cdref" "${args[@]}" --threads 2 --out ref.txt --json ref.json --csv ref.csv > ref.tbl
+head -n -2 ref.tbl > ref.table  # (the last line: the time taken)
+
+same() {  # same RUN: RUN's outputs are the single process's, byte for byte
+  cmp -s ref.txt "$1.txt" || fail "$1: the text form differs: $(diff ref.txt "$1.txt" | head -5)"
+  cmp -s ref.json "$1.json" || fail "$1: the JSON differs"
+  cmp -s ref.csv "$1.csv" || fail "$1: the CSV differs"
+  head -n -2 "$1.tbl" > "$1.table"
+  cmp -s ref.table "$1.table" || fail "$1: the table differs: $(diff ref.table "$1.table" | head -5)"
+}
+outs() { echo --out "$1.txt" --json "$1.json" --csv "$1.csv"; }
+
+for np in 1 2 4; do
+  mpi $np "${args[@]}" --threads 1 --checkpoint ck$np $(outs np$np) > np$np.tbl
+  same np$np
+  grep -q "on $np ranks of 1 threads" np$np.tbl || fail "np $np: $(tail -1 np$np.tbl)"
+done
+
+# the pid of rank R of the job started as background job with pid MPIRUN_PID
+rank_pid() {
+  local p
+  for p in $(pgrep -P "$1"); do
+    tr '\0' '\n' < /proc/$p/environ 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2" && { echo $p; return; }
+  done
+}
+# wait until FILE exists (a rank's first checkpoint), then kill -9 the given ranks of the job
+kill_after() {
+  local job=$1 file=$2; shift 2
+  for _ in $(seq 600); do
+    [ -e "$file" ] && break
+    kill -0 "$job" 2>/dev/null || fail "the job ended before $file was written"
+    sleep 0.01
+  done
+  [ -e "$file" ] || fail "no checkpoint $file after 6 s"
+  local r p pids=()
+  for r in "$@"; do
+    p=$(rank_pid "$job" "$r")
+    [ -n "$p" ] || fail "rank $r not found"
+    pids+=("$p")
+  done
+  kill -9 "${pids[@]}" 2>/dev/null || true  # (one may be gone: mpirun ends a job that lost a rank)
+  if wait "$job"; then fail "the job finished although ranks $* were killed"; fi
+}
+
+# a rank killed in generation 1 (4 ranks), rank 1 killed in generation 2 (2 ranks), then the
+# rest on 4 ranks; every item counted once
+mpi_bg 4 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 $(outs k) > k.tbl 2>k.err &
+kill_after $! ck.g1.r2 2
+mpi_bg 2 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 --resume $(outs k) > k.tbl 2>k.err &
+kill_after $! ck.g2.r1 1
+grep -q "^generation 2$" ck || fail "the resumed job did not open generation 2: $(cat ck)"
+mpi 4 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 --resume $(outs k) > k.tbl
+same k
+[ ! -e ck.g1.r0 ] && [ ! -e ck.g2.r0 ] || fail "earlier generations left behind: $(ls)"
+
+# the whole job killed (every rank, rank 0 too), resumed on one rank, resumed again when done
+mpi_bg 2 "${args[@]}" --threads 1 --checkpoint ca --checkpoint-every 0 $(outs a) > a.tbl 2>a.err &
+kill_after $! ca.g1.r1 0 1
+mpi 1 "${args[@]}" --threads 2 --checkpoint ca --resume $(outs a) > a.tbl
+same a
+mpi 2 "${args[@]}" --threads 1 --checkpoint ca --resume $(outs a2) > a2.tbl
+same a2
+
+# errors by name, exit status 2, nothing written
+expect_error() {  # expect_error PATTERN ARGS...: the job fails naming PATTERN
+  local pat=$1; shift
+  set +e
+  mpi 2 "$@" > e.out 2> e.err
+  local status=$?
+  set -e
+  [ $status -ne 0 ] || fail "'$*' succeeded"
+  grep -q -- "$pat" e.err || fail "'$*': no '$pat' in: $(cat e.err)"
+}
+expect_error "unknown option '--bogus'" "${args[@]}" --bogus
+expect_error "--resume needs --checkpoint FILE" "${args[@]}" --resume
+expect_error "--n wants a nonnegative whole number, not '-5'" "${args[@]}" --n -5
+expect_error "checkpoint-every wants seconds" "${args[@]}" --checkpoint-every nan
+expect_error "unknown command 'describe'" describe
+expect_error "cannot resume: no checkpoint nothere" "${args[@]}" --checkpoint nothere --resume
+expect_error "belongs to another campaign" "${args[@]}" --seed 12 --checkpoint ck --resume
+"$cdref" "${args[@]}" --checkpoint single > /dev/null
+expect_error "not a cdref-mpi checkpoint" "${args[@]}" --checkpoint single --resume
+echo "mpi: identical at 1, 2 and 4 ranks, after killed ranks and a killed job"
