@@ -547,13 +547,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
     } else if (tag == "cell") {
       std::string q, impl, fam;
       int scale;
-      CellStats st;
-      if (!(ls >> q >> impl >> fam >> scale >> st.n >> st.refused >> st.cls_fp >> st.cls_fn >> st.pred_fp >>
-            st.pred_fn))
-        fail("malformed cell record");
-      // version 2 adds the certificate counts (version 1 files have none)
-      if (version >= 2 && !(ls >> st.certified >> st.uncertain >> st.certain_wrong))
-        fail("malformed cell record (certificate counts)");
+      if (!(ls >> q >> impl >> fam >> scale)) fail("malformed cell record");
       Query query;
       try {
         query = query_by_name(q);
@@ -562,8 +556,17 @@ Saved deserialize(const std::string& text, const std::string& source) {
       }
       n_in = info(query).inputs.size();
       n_out = info(query).outputs.size();
-      cur = &s.results.cells[{query, impl, fam, scale}];
-      *cur = st;
+      // read into the map's own node (a cell's statistics are some 60 KB, mostly histogram
+      // bins: a copy through a local doubled the cost of reading a large file)
+      const auto [at, fresh] = s.results.cells.try_emplace(CellKey{query, impl, fam, scale});
+      cur = &at->second;
+      if (!fresh) *cur = CellStats{};  // a cell given twice: its last record holds
+      CellStats& st = *cur;
+      if (!(ls >> st.n >> st.refused >> st.cls_fp >> st.cls_fn >> st.pred_fp >> st.pred_fn))
+        fail("malformed cell record");
+      // version 2 adds the certificate counts (version 1 files have none)
+      if (version >= 2 && !(ls >> st.certified >> st.uncertain >> st.certain_wrong))
+        fail("malformed cell record (certificate counts)");
     } else if (tag == "ex" || tag == "out") {
       if (!cur) fail("record before any cell");
       if (tag == "ex") {

@@ -21,7 +21,8 @@ mpi() { local np=$1; shift; "$mpirun" --oversubscribe --mca odls_base_sigkill_ti
 mpi_bg() { local np=$1; shift; exec "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 -np "$np" "$cdref_mpi" "$@"; }
 
 args=(campaign --query segment-sphere-cast --query box-box --query ray-triangle-cast
-      --impl book-float --impl book-double --impl robust-double --n 700 --seed 11)
+      --family long-range --family degenerate --impl book-float --impl book-double --impl robust-double
+      --n 1500 --seed 11)
 "$cdref" "${args[@]}" --threads 2 --out ref.txt --json ref.json --csv ref.csv > ref.tbl
 head -n -2 ref.tbl > ref.table  # (the last line: the time taken)
 

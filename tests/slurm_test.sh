@@ -16,15 +16,16 @@ cd "$dir"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 args=(--query segment-sphere-cast --query box-box --query ray-triangle-cast
-      --impl book-float --impl book-double --impl robust-double --n 700 --seed 11)
+      --family long-range --family degenerate --impl book-float --impl book-double --impl robust-double
+      --n 1500 --seed 11)
 "$cdref" campaign "${args[@]}" --threads 2 --out ref.txt --json ref.json --csv ref.csv --quiet
 
 export CDREF="$cdref" CDREF_DIR="$dir/shards" SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1
 mkdir shards
-# (a checkpoint after every round of work, so that task 1 has one to be killed after)
-task() { SLURM_ARRAY_TASK_ID=$1 bash "$src/scripts/slurm/campaign-array.sbatch" "${args[@]}" --checkpoint-every 0; }
+task() { SLURM_ARRAY_TASK_ID=$1 bash "$src/scripts/slurm/campaign-array.sbatch" "${args[@]}"; }
 task 0
-# task 1 killed once its checkpoint exists, then run again: it resumes
+# task 1 (a checkpoint after every round of work) killed once its checkpoint exists, then run
+# again: it resumes
 SLURM_ARRAY_TASK_ID=1 bash -c 'exec bash "$0/scripts/slurm/campaign-array.sbatch" "${@}"' "$src" "${args[@]}" \
   --checkpoint-every 0 &
 job=$!

@@ -23,6 +23,7 @@
 // Waiting never spins: OpenMPI's blocking calls poll in a loop, which on an oversubscribed
 // node would take the core from a rank that works; requests are tested every 200 us instead.
 #include <mpi.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -230,13 +231,33 @@ void finish_generation(const Spec& spec, std::uint64_t generation, const Pointer
   for (int r = 0; r < old.ranks; ++r) std::remove(part_path(p, old.generation, r).c_str());
 }
 
-int threads_per_rank() {  // the node's hardware threads shared among its ranks
+// Results::merge, moving the cells this rank has not seen instead of copying them (a cell's
+// statistics are some 60 KB; ranks that worked on other cells share few).
+void merge_into(Results& mine, Results&& other) {
+  while (!other.cells.empty()) {
+    auto node = other.cells.extract(other.cells.begin());
+    const auto ins = mine.cells.insert(std::move(node));
+    if (!ins.inserted) ins.position->second.merge(ins.node.mapped());
+  }
+}
+
+// The CPUs this rank may run on (mpirun binds a rank to one core when there are at most two
+// ranks, and to a socket otherwise, unless told --bind-to none).
+int cpus_of_this_rank() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+// The ranks on this rank's node.
+int node_ranks() {
   MPI_Comm node;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
   int local = 1;
   MPI_Comm_size(node, &local);
   MPI_Comm_free(&node);
-  return std::max(1, int(std::thread::hardware_concurrency()) / std::max(1, local));
+  return std::max(1, local);
 }
 
 int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, int ranks) {
@@ -255,7 +276,19 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
     return 2;
   }
   Spec& spec = cmd.spec;
-  if (std::find(args.begin(), args.end(), "--threads") == args.end()) spec.threads = threads_per_rank();
+  // a rank bound to fewer CPUs than its threads (they only take turns) or than its share of
+  // the node (the rest stay idle): say so once, on rank 0
+  const int cpus = cpus_of_this_rank();
+  const int share = std::max(1, int(std::thread::hardware_concurrency()) / node_ranks());
+  if (std::find(args.begin(), args.end(), "--threads") == args.end()) spec.threads = std::min(cpus, share);
+  int bound[2] = {spec.threads > cpus || cpus < share, 0};
+  MPI_Reduce(&bound[0], &bound[1], 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
+  if (rank == 0 && bound[1] > 0)
+    std::fprintf(stderr,
+                 "cdref-mpi: %d of %d ranks are bound to fewer CPUs than their threads or their share of the node "
+                 "(rank 0: %d threads, bound to %d of its share of %d CPUs); mpirun --bind-to none, or --map-by "
+                 "...:PE=N, lets them use the node's cores\n",
+                 bound[1], ranks, spec.threads, cpus, share);
   const Work work(spec);
   const std::string fingerprint = spec.fingerprint();
 
@@ -351,9 +384,9 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
     if (rank + k < ranks) {
       const std::string text = recv_text(rank + k);
       bytes += text.size();
-      const PartCheckpoint other = deserialize_part(text, "rank " + std::to_string(rank + k));
+      PartCheckpoint other = deserialize_part(text, "rank " + std::to_string(rank + k));
       part.c.done.add(other.done);
-      part.c.saved.results.merge(other.saved.results);
+      merge_into(part.c.saved.results, std::move(other.saved.results));
     }
   }
   const auto t2 = Clock::now();
