@@ -187,8 +187,8 @@ std::vector<Cell> cells_of(const Spec& spec) {
         if (wanted) cells.push_back({q, f, k});
       }
   }
-  // a family named for none of the queries is a mistake, not a filter (a family of some of
-  // them is fine: "grazing" is the boxes', not the spheres')
+  // a family named for none of the queries is a mistake, not a filter (one that only some of
+  // them have is fine when each query has at least one of the named families)
   for (const std::string& name : spec.families) {
     bool known = false;
     for (Query q : spec.queries)

@@ -1,7 +1,12 @@
 // fuzz/work.cpp - sets of work items, a runner's checkpoint and its text form, atomic files.
 // (Work itself is in engine.cpp, beside run().)
 #include <cdref/fuzz/work.hpp>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -122,16 +127,35 @@ PartCheckpoint deserialize_part(const std::string& text, const std::string& sour
   return c;
 }
 
+// The data reaches the disk before the rename, and the rename before the function returns
+// (fsync of the file, then of its directory): a node that crashes leaves the old file or the
+// new one, and a caller may remove what the new file replaces once this returns.
 void write_file_atomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
-    f << text;
-    f.flush();
-    if (!f) throw std::runtime_error("cannot write checkpoint " + tmp);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) {
+      const int e = errno;
+      ::close(fd);
+      throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(e));
+    }
+    done += std::size_t(k);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot replace checkpoint " + path);
+  if (::fsync(fd) != 0 || ::close(fd) != 0)
+    throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("cannot replace checkpoint " + path + ": " + std::strerror(errno));
+  const auto slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {  // (a file system that cannot sync a directory still renamed the file)
+    ::fsync(dfd);
+    ::close(dfd);
+  }
 }
 
 std::string read_whole_file(const std::string& path) {

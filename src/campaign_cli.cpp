@@ -23,7 +23,7 @@ std::uint64_t to_u64(const std::string& s, const std::string& opt) {
   } catch (const std::exception&) {
     pos = 0;
   }
-  if (pos != s.size() || s.empty() || s[0] == '-')
+  if (pos != s.size() || s.empty() || s.find('-') != std::string::npos)
     throw std::invalid_argument(opt + " wants a nonnegative whole number, not '" + s + "'");
   return x;
 }
@@ -99,7 +99,12 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
       c.quiet = true;
     else if (opt == "--outputs")
       spec.classification_only = classification_only(next(opt));
-    else if (opt == "--checkpoint-every") {
+    else if (opt == "--mpi") {  // (cdref-mpi runs across the ranks whether or not it is given)
+      if (!mpi)
+        throw std::invalid_argument(
+            "--mpi: campaigns across MPI ranks run as `mpirun --bind-to none -np R cdref-mpi campaign ...` (built "
+            "beside cdref when OpenMPI is installed)");
+    } else if (opt == "--checkpoint-every") {
       const std::string s = next(opt);
       char* end = nullptr;
       const double x = std::strtod(s.c_str(), &end);
@@ -110,6 +115,16 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
       throw std::invalid_argument("unknown option '" + opt + "' (see `" + (mpi ? "cdref-mpi" : "cdref") + " help`)");
   }
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
+  // a name given twice would run its cells twice and count every case of them twice
+  auto once = [](const auto& v, const std::string& opt, auto name) {
+    for (std::size_t a = 0; a < v.size(); ++a)
+      for (std::size_t b = a + 1; b < v.size(); ++b)
+        if (v[a] == v[b]) throw std::invalid_argument(opt + " " + name(v[a]) + " is given twice");
+  };
+  once(spec.queries, "--query", [](Query q) { return std::string(info(q).name); });
+  once(spec.families, "--family", [](const std::string& f) { return f; });
+  once(spec.impls, "--impl", [](const std::string& i) { return i; });
+  once(spec.scales, "--scale", [](int k) { return std::to_string(k); });
   if (spec.shards < 1 || spec.shard < 0 || spec.shard >= spec.shards)
     throw std::invalid_argument("--shard wants k/N with 0 <= k < N");
   if (spec.queries.empty()) spec.queries = all_queries();

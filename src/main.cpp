@@ -58,6 +58,8 @@ const char* usage = R"(usage:
       --outputs O      all (default): grade every output against the correctly rounded truth;
                        cls: grade the classification alone (the classification oracle: fast)
       --quiet          no table
+                       (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign
+                       [options]; see cdref-mpi help)
   cdref merge [--out F] [--json F] [--csv F] FILE...
                                  merge complete shard files of one campaign
   cdref report [--query Q]... [--n N] [--reps R] [--error-n N] [--threads T]

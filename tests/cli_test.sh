@@ -103,8 +103,15 @@ set +e
 "$cdref" campaign --query sphere-cube 2> err.txt; s1=$?
 "$cdref" campaign --n -5 2>> err.txt; s2=$?
 "$cdref" campaign --query box-box --family grazing 2>> err.txt; s3=$?
+"$cdref" campaign --query box-box --family uniform --family grazng 2>> err.txt; s4=$?
+"$cdref" campaign --query box-box --checkpoint-every -1 2>> err.txt; s5=$?
+"$cdref" campaign --query box-box --mpi 2>> err.txt; s6=$?
 set -e
-[ $s1 = 2 ] && [ $s2 = 2 ] && [ $s3 = 2 ] || fail "bad options did not fail: $s1 $s2 $s3"
+[ $s1 = 2 ] && [ $s2 = 2 ] && [ $s3 = 2 ] && [ $s4 = 2 ] && [ $s5 = 2 ] && [ $s6 = 2 ] ||
+  fail "bad options did not fail: $s1 $s2 $s3 $s4 $s5 $s6"
+grep -q "no family 'grazng' for query box-box" err.txt || fail "a misspelt family beside a known one: $(cat err.txt)"
+grep -q "\-\-checkpoint-every wants seconds from 0 to 1e6, not '-1'" err.txt || fail "bad --checkpoint-every message"
+grep -q "\-\-mpi: campaigns across MPI ranks run as .mpirun" err.txt || fail "--mpi message: $(cat err.txt)"
 grep -q "unknown query 'sphere-cube'" err.txt || fail "unknown query message"
 grep -q "\-\-n wants a nonnegative whole number, not '-5'" err.txt || fail "bad --n message"
 grep -q "no family 'grazing' for query box-box" err.txt || fail "unknown family message"

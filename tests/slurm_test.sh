@@ -20,6 +20,7 @@ args=(--query segment-sphere-cast --query box-box --query ray-triangle-cast
       --n 1500 --seed 11)
 "$cdref" campaign "${args[@]}" --threads 2 --out ref.txt --json ref.json --csv ref.csv --quiet
 
+unset SLURM_ARRAY_TASK_MIN SLURM_ARRAY_TASK_MAX  # (should the tests themselves run in an array)
 export CDREF="$cdref" CDREF_DIR="$dir/shards" SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1
 mkdir shards
 task() { SLURM_ARRAY_TASK_ID=$1 bash "$src/scripts/slurm/campaign-array.sbatch" "${args[@]}"; }
@@ -29,7 +30,7 @@ task 0
 SLURM_ARRAY_TASK_ID=1 bash -c 'exec bash "$0/scripts/slurm/campaign-array.sbatch" "${@}"' "$src" "${args[@]}" \
   --checkpoint-every 0 &
 job=$!
-for _ in $(seq 500); do
+for _ in $(seq 3000); do
   [ -e shards/shard-1.ckpt ] && break
   sleep 0.01
 done

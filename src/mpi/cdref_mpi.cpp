@@ -20,8 +20,10 @@
 // any rank starts; the items in it are never handed out again. A chunk finished but not yet
 // in a checkpoint when its rank dies is run again after the resume, and counted once.
 //
-// Waiting never spins: OpenMPI's blocking calls poll in a loop, which on an oversubscribed
-// node would take the core from a rank that works; requests are tested every 200 us instead.
+// Waiting for work and for results does not spin: OpenMPI's blocking calls poll in a loop,
+// which on an oversubscribed node would take the core from a rank that works; those requests
+// are tested every 200 us instead (the collectives at the start are brief and still block).
+// A rank that dies ends the job through the launcher (mpirun ends a job that lost a rank).
 #include <mpi.h>
 #include <sched.h>
 #include <unistd.h>
@@ -69,10 +71,12 @@ const char* usage = R"(usage:
 
 constexpr int tag_request = 1, tag_chunk = 2, tag_result = 3;
 
-void wait_for(MPI_Request& r, MPI_Status* st = MPI_STATUS_IGNORE) {
+// `stop` (optional): give up waiting when it becomes true (rank 0's own worker failed).
+bool wait_for(MPI_Request& r, MPI_Status* st = MPI_STATUS_IGNORE, const std::atomic<bool>* stop = nullptr) {
   for (int done = 0;;) {
     MPI_Test(&r, &done, st);
-    if (done) return;
+    if (done) return true;
+    if (stop && stop->load()) return false;
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
 }
@@ -195,11 +199,20 @@ PartCheckpoint start_generation(const Spec& spec, const Work& work, Pointer& old
       throw std::runtime_error("checkpoint " + p + " belongs to another campaign (" + old.fingerprint + ")");
     for (int r = 0; r < old.ranks; ++r) {
       const std::string f = part_path(p, old.generation, r);
+      // rank 0's file holds all that earlier generations finished: it is always written before
+      // P names its generation. Missing, the files are not where this rank 0 looks (P must be
+      // on a file system every node sees) or were removed.
+      if (r == 0 && !exists(f))
+        throw std::runtime_error("cannot resume: " + f + " is missing (P and its rank files must be on a file system "
+                                 "every rank sees, and stay together)");
       if (!exists(f)) continue;  // that rank died before its first checkpoint
       const PartCheckpoint c = deserialize_part(read_whole_file(f), f);
-      if (c.saved.fingerprint != spec.fingerprint() || c.saved.shard != spec.shard || c.saved.shards != spec.shards ||
-          c.saved.items_total != work.items())
+      if (c.saved.fingerprint != spec.fingerprint() || c.saved.shard != spec.shard || c.saved.shards != spec.shards)
         throw std::runtime_error(f + " belongs to another campaign (" + c.saved.fingerprint + ")");
+      if (c.saved.items_total != work.items() ||
+          (!c.done.empty() && c.done.ranges().back().second > work.items()))
+        throw std::runtime_error(f + " has " + std::to_string(c.saved.items_total) + " work items, this campaign " +
+                                 std::to_string(work.items()) + " (written by a cdref whose families differ)");
       try {
         base.done.add(c.done);
       } catch (const std::exception& e) {
@@ -223,6 +236,9 @@ PartCheckpoint start_generation(const Spec& spec, const Work& work, Pointer& old
 // then P naming that generation, then the earlier generation's files removed.
 void finish_generation(const Spec& spec, std::uint64_t generation, const Pointer& old, int ranks, Part& part0) {
   const std::string& p = spec.checkpoint;
+  // files of the new generation left by another job (a campaign started over under the same
+  // name) would be read on a resume: removed before P names the generation
+  for (int r = 1; r < ranks; ++r) std::remove(part_path(p, generation, r).c_str());
   part0.write();
   std::ostringstream o;
   o << "cdref-mpi-checkpoint 1\ngeneration " << generation << "\nranks " << ranks << "\nfingerprint "
@@ -281,7 +297,9 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   const int cpus = cpus_of_this_rank();
   const int share = std::max(1, int(std::thread::hardware_concurrency()) / node_ranks());
   if (std::find(args.begin(), args.end(), "--threads") == args.end()) spec.threads = std::min(cpus, share);
-  int bound[2] = {spec.threads > cpus || cpus < share, 0};
+  // (one CPU where the node has more is mpirun's binding of at most two ranks; a larger set
+  // smaller than the node may be the job's allocation, which is as it should be)
+  int bound[2] = {spec.threads > cpus || (cpus == 1 && share > 1), 0};
   MPI_Reduce(&bound[0], &bound[1], 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
   if (rank == 0 && bound[1] > 0)
     std::fprintf(stderr,
@@ -329,12 +347,14 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   if (rank == 0) {
     Dispenser disp(base.done.complement(work.items()), ranks);
     std::exception_ptr failed;
+    std::atomic<bool> stop{false};  // rank 0's worker failed: the job ends now, not at the end
     std::thread local([&] {
       try {
         for (ItemSet::Range r; (r = disp.take(spec.threads)).first < r.second;) part.run(r);
         part.write();
       } catch (...) {
         failed = std::current_exception();
+        stop = true;
       }
     });
     for (int finished = 0; finished < ranks - 1;) {
@@ -342,7 +362,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
       MPI_Request req;
       MPI_Status st;
       MPI_Irecv(&threads, 1, MPI_INT, MPI_ANY_SOURCE, tag_request, MPI_COMM_WORLD, &req);
-      wait_for(req, &st);
+      if (!wait_for(req, &st, &stop)) break;  // (MPI_Abort follows the rethrow below)
       const ItemSet::Range r = disp.take(threads);
       const std::uint64_t msg[2] = {r.first, r.second};
       MPI_Send(msg, 2, MPI_UINT64_T, st.MPI_SOURCE, tag_chunk, MPI_COMM_WORLD);
