@@ -410,7 +410,7 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
   for (auto& th : pool) th.join();
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
-  for (const Results& r : local) into.merge(r);
+  for (Results& r : local) merge_into(into, std::move(r));
 }
 
 Results run(const Spec& spec) {

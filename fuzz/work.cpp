@@ -88,6 +88,14 @@ ItemSet ItemSet::parse(const std::string& text) {
   return s;
 }
 
+void merge_into(Results& into, Results&& from) {
+  while (!from.cells.empty()) {
+    auto node = from.cells.extract(from.cells.begin());
+    const auto ins = into.cells.insert(std::move(node));
+    if (!ins.inserted) ins.position->second.merge(ins.node.mapped());
+  }
+}
+
 std::string serialize(const PartCheckpoint& c) {
   std::ostringstream o;
   o << "cdref-part 1\n";

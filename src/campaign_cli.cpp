@@ -138,6 +138,14 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
   return c;
 }
 
+std::string default_campaign_banner(const Spec& spec) {
+  return "cdref: the default campaign - every query of Sections 3.1-3.4, the book's algorithms and the\n"
+         "robust versions at float, double and long double (and the queries' own variants) against the\n"
+         "exact answer, " +
+         std::to_string(spec.n) + " cases in each (query, family, scale) cell, seed " + std::to_string(spec.seed) +
+         ".\n\n";
+}
+
 void emit_campaign(const CampaignCommand& c, const Results& r) {
   if (!c.out.empty()) write_to(c.out, serialize(c.spec, r, total_items(c.spec)));
   if (!c.json.empty()) {

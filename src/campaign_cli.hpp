@@ -24,6 +24,9 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
 // --json, --csv, and the table on standard output unless --quiet.
 void emit_campaign(const CampaignCommand& c, const fuzz::Results& r);
 
+// What the default campaign (`cdref` with no command) prints before it runs.
+std::string default_campaign_banner(const fuzz::Spec& spec);
+
 std::uint64_t to_u64(const std::string& s, const std::string& opt);  // throws std::invalid_argument
 int to_int(const std::string& s, const std::string& opt);
 void write_to(const std::string& path, const std::string& text);  // "-": standard output

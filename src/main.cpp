@@ -129,11 +129,7 @@ int campaign(Args& a, bool defaults) {
   Spec& spec = c.spec;
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
-  if (defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.4, the book's algorithms and the\n"
-                 "robust versions at float, double and long double (and the queries' own variants) against the\n"
-                 "exact answer, "
-              << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
+  if (defaults) std::cout << cli::default_campaign_banner(spec);
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

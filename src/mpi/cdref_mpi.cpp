@@ -247,16 +247,6 @@ void finish_generation(const Spec& spec, std::uint64_t generation, const Pointer
   for (int r = 0; r < old.ranks; ++r) std::remove(part_path(p, old.generation, r).c_str());
 }
 
-// Results::merge, moving the cells this rank has not seen instead of copying them (a cell's
-// statistics are some 60 KB; ranks that worked on other cells share few).
-void merge_into(Results& mine, Results&& other) {
-  while (!other.cells.empty()) {
-    auto node = other.cells.extract(other.cells.begin());
-    const auto ins = mine.cells.insert(std::move(node));
-    if (!ins.inserted) ins.position->second.merge(ins.node.mapped());
-  }
-}
-
 // The CPUs this rank may run on (mpirun binds a rank to one core when there are at most two
 // ranks, and to a socket otherwise, unless told --bind-to none).
 int cpus_of_this_rank() {
@@ -337,11 +327,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   part.c.generation = generation;
   if (!spec.checkpoint.empty()) part.path = part_path(spec.checkpoint, generation, rank);
 
-  if (rank == 0 && defaults)
-    std::cout << "cdref: the default campaign - every query of Sections 3.1-3.4, the book's algorithms and the\n"
-                 "robust versions at float, double and long double (and the queries' own variants) against the\n"
-                 "exact answer, "
-              << spec.n << " cases in each (query, family, scale) cell, seed " << spec.seed << ".\n\n";
+  if (rank == 0 && defaults) std::cout << cli::default_campaign_banner(spec);
 
   const auto t0 = Clock::now();
   if (rank == 0) {

@@ -69,6 +69,10 @@ std::string serialize(const PartCheckpoint& c);
 // Throws std::runtime_error naming `source`, the line and the problem.
 PartCheckpoint deserialize_part(const std::string& text, const std::string& source);
 
+// Results::merge that moves the cells `into` does not have yet instead of copying them (a
+// cell's statistics are some 60 KB, mostly histogram bins); `from` is left empty.
+void merge_into(Results& into, Results&& from);
+
 // Writes `text` to `path` through a temporary file and a rename (a reader sees the old file
 // or the new one, never a part); throws std::runtime_error naming the file.
 void write_file_atomically(const std::string& path, const std::string& text);
