@@ -6,6 +6,7 @@
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
+#include <cdref/stable/ray_box.hpp>
 #include <iostream>
 
 #include "support.hpp"
@@ -542,4 +543,85 @@ TEMPLATE_TEST_CASE("robust ray-box decide() beyond the exact range", "[robust-bo
     std::cout << "[robust-boxes] beyond the exact range at " << type_name<F>() << ": " << certain << "/" << cases
               << " certain, " << predicted << " segment cases outside (**)\n";
   REQUIRE(predicted > 0);
+}
+
+// ---------------------------------------------------------------------------
+// The stable tier of the box casts (float/cdref/stable/ray_box.hpp): the slab test in the
+// box's frame, plain F arithmetic. Its header says where it can misclassify: a pair of the
+// decisive values (0 or a near parameter against 1 or a far parameter) within the sum of their
+// error bounds E(t) = 3u |t| + u |f_i| / |r_i| (f = source - centre), or, for a direction
+// component 0, the source within u |f_i| of that plane. On generated cases of every family, every
+// misclassified case lies in one of those bands, computed exactly (Gmpq); the cast's
+// classification equals hit().
+TEMPLATE_TEST_CASE("stable box casts: every misclassification lies in the header's bands", "[stable]", float, double) {
+  using F = TestType;
+  const long double u = std::ldexp(1.0L, -digits<F>);
+  auto mag = [](const Q& x) { return std::fabs(static_cast<long double>(CGAL::to_double(x))); };
+  for (const char* name : {"segment-box-cast", "ray-box-cast"}) {
+    const fuzz::Query q = fuzz::query_by_name(name);
+    const bool segment = std::string(name) == "segment-box-cast";
+    long cases = 0, wrong = 0, book_wrong = 0;
+    for (const fuzz::Family& fam : fuzz::families(q)) {
+      const int per = std::max<int>(20, 800 / int(fam.scales.size()));
+      for (int sc : fam.scales)
+        for (int i = 0; i < per; ++i) {
+          const fuzz::Inputs in = fuzz::make_case(17, q, fam, sc, std::uint64_t(i));
+          const Vec3<F> s0 = in3<F>(in, 0), t0 = in3<F>(in, 3);
+          const Box<F> box{in3<F>(in, 6), in3<F>(in, 9)};
+          if (!finite3(s0) || !finite3(t0) || !finite3(box.center) || !finite3(box.extent)) continue;
+          bool got = false, cast_hit = false, book_got = false, truth = false;
+          Vec3<Q> src, r;
+          auto run = [&](const auto& shot) {
+            got = stable::hit(shot, box);
+            cast_hit = stable::cast(shot, box, unsigned(want_all)).hit;
+            book_got = book::hit(shot, box);
+            const auto e = convert_prim_exact(shot);
+            truth = book::hit(e, exact_box(box));
+            src = e.source;
+            if constexpr (requires { e.direction; })
+              r = e.direction;
+            else
+              r = e.target - e.source;
+          };
+          try {
+            if (segment)
+              run(Segment<F>{s0, t0});
+            else
+              run(Ray<F>{s0, t0});
+          } catch (const invalid_input&) {
+            continue;
+          }
+          INFO(name << " family " << fam.name << " scale " << sc << " case " << i << " type " << type_name<F>());
+          REQUIRE(cast_hit == got);
+          ++cases;
+          book_wrong += book_got != truth;
+          if (got == truth) continue;
+          ++wrong;
+          // the decisive values with their bounds: a in {0, near_i}, b in {1, far_j}
+          std::vector<std::pair<Q, long double>> as{{Q(0), 0.0L}}, bs;
+          if (segment) bs.push_back({Q(1), 0.0L});
+          bool in_band = false;
+          for (int k = 0; k < 3; ++k) {
+            const Q f = src[k] - exact_q(box.center[k]), h = exact_q(box.extent[k]);
+            if (r[k] == Q(0)) {
+              in_band = in_band || mag(h - f) <= 1.05L * u * mag(f) || mag(h + f) <= 1.05L * u * mag(f);
+              continue;
+            }
+            const Q t_lo = (-h - f) / r[k], t_hi = (h - f) / r[k];
+            const bool down = r[k] < Q(0);
+            const long double ef = u * mag(f) / mag(r[k]);
+            auto E = [&](const Q& t) { return 1.05L * (3 * u * mag(t) + ef); };
+            as.push_back(down ? std::pair{t_hi, E(t_hi)} : std::pair{t_lo, E(t_lo)});
+            bs.push_back(down ? std::pair{t_lo, E(t_lo)} : std::pair{t_hi, E(t_hi)});
+          }
+          for (const auto& [a, ea] : as)
+            for (const auto& [b, eb] : bs) in_band = in_band || mag(a - b) <= ea + eb;
+          REQUIRE(in_band);
+        }
+    }
+    REQUIRE(cases > 2000);
+    if (report<F>())
+      std::cout << "stable " << type_name<F>() << " " << name << ": " << cases << " cases, " << wrong
+                << " misclassified (the book " << book_wrong << ")\n";
+  }
 }

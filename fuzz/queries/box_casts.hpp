@@ -6,6 +6,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/robust/ray_box.hpp>
+#include <cdref/stable/ray_box.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -34,6 +35,13 @@ struct BoxCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Box<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the stable tier (float/cdref/stable/ray_box.hpp)
+  template <class F>
+  static auto stable(const Shot<F>& a, const Box<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const Box<F>& b) { return cdref::stable::hit(a, b); }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const Box<T>& b) { return cdref::stable::unchecked::hit(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const Box<T>& b) { return cdref::book::unchecked::hit(a, b); }
