@@ -12,7 +12,11 @@ mpirun="$3"
 dir=$(mktemp -d)
 trap 'kill -9 $(jobs -p) 2>/dev/null || true; rm -rf "$dir"' EXIT
 cd "$dir"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+fail() {  # the reason, then what the background jobs said
+  echo "FAIL: $*" >&2
+  for f in *.err; do [ -s "$f" ] && { echo "--- $f:" >&2; tail -n 20 "$f" >&2; }; done
+  exit 1
+}
 # OpenMPI refuses root unless told twice (CI runs as root); --oversubscribe: 4 ranks on 2 cores;
 # no grace period between the TERM and the KILL of a failed job's other ranks (2 s by default)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -9,6 +9,7 @@
 // leaks through a shared edge at double, and the robust casts' zero leaks on every case of the
 // watertight family.
 #include <cdref/robust/ray_triangle.hpp>
+#include <cdref/stable/ray_triangle.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
 #include <cdref/robust/polygon.hpp>
@@ -300,6 +301,8 @@ TEST_CASE("a ray through a shared edge that the book at double lets through, and
   REQUIRE(book::cast(ray, a).hit == false);                      // the book at double: a leak
   REQUIRE(book::cast(ray, b).hit == false);
   REQUIRE((robust::cast(ray, a).hit || robust::cast(ray, b).hit));  // the robust cast: no leak
+  REQUIRE((stable::cast(ray, a).hit || stable::cast(ray, b).hit));  // nor the stable one (WBW)
+  REQUIRE((stable::hit(ray, a) || stable::hit(ray, b)));
   // whichever it hits, it hits where the exact ray does (certain), or says it cannot tell
   for (const auto& t : {a, b}) {
     const robust::Decision dd = robust::decide(ray, t);
@@ -336,6 +339,120 @@ TEST_CASE("the robust casts never leak on the watertight family (float, double, 
       REQUIRE(robust_leaks == 0);
       if (precision == 53) CHECK(book_leaks > 0);
     }
+  }
+}
+
+// ---- the stable tier (stable/ray_triangle.hpp: Woop-Benthin-Wald in F) ----
+// Its header says where it can misclassify: an edge function within its error bound E_k =
+// 20u m_i m_j of zero (the shot near an edge's line, or parallel to the plane), t within Et
+// (the source near the plane) or, for a segment, t - det within Et + Edet (the target near the
+// plane); a zero-length segment is the book's point test at F. On generated cases of every
+// family within the header's range, every misclassified case lies in one of those bands,
+// computed exactly (Gmpq); the cast's classification equals hit().
+TEMPLATE_TEST_CASE("stable triangle casts: every misclassification lies in the header's bands", "[stable]", float,
+                   double) {
+  using F = TestType;
+  const long double u = std::ldexp(1.0L, -std::numeric_limits<F>::digits);
+  auto mag = [](const Q& x) { return std::fabs(static_cast<long double>(CGAL::to_double(x))); };
+  // the header's range: products of two coordinates normal in F, with room for the bands
+  const long double lo_ok = std::sqrt(static_cast<long double>(std::numeric_limits<F>::min())) / u,
+                    hi_ok = std::sqrt(static_cast<long double>(std::numeric_limits<F>::max())) / 8;
+  for (const char* name : {"segment-triangle-cast", "ray-triangle-cast"}) {
+    const fuzz::Query q = fuzz::query_by_name(name);
+    const bool segment = std::string(name) == "segment-triangle-cast";
+    long cases = 0, wrong = 0, book_wrong = 0, out_of_range = 0, points = 0;
+    for (const fuzz::Family& fam : fuzz::families(q)) {
+      const int per = std::max<int>(20, 600 / int(fam.scales.size()));
+      for (int sc : fam.scales)
+        for (int i = 0; i < per; ++i) {
+          const fuzz::Inputs in = fuzz::make_case(19, q, fam, sc, std::uint64_t(i));
+          bool finite = true;
+          for (int j = 0; j < 15; ++j) finite = finite && std::isfinite(F(in[j]));
+          if (!finite) continue;
+          auto v3 = [&](int k) { return Vec3<F>(F(in[k]), F(in[k + 1]), F(in[k + 2])); };
+          const Triangle<F> tri{{v3(6), v3(9), v3(12)}};
+          bool got = false, cast_hit = false, book_got = false, truth = false;
+          Vec3<Q> src, r;
+          auto run = [&](const auto& shot) {
+            got = stable::hit(shot, tri);
+            cast_hit = stable::cast(shot, tri, unsigned(want_all)).hit;
+            book_got = book::cast(shot, tri, unsigned(want_all)).hit;
+            const auto e = convert_prim_exact(shot);
+            truth = book::hit(e, convert_prim_exact(tri));
+            src = e.source;
+            if constexpr (requires { e.direction; })
+              r = e.direction;
+            else
+              r = e.target - e.source;
+          };
+          try {
+            if (segment)
+              run(Segment<F>{v3(0), v3(3)});
+            else
+              run(Ray<F>{v3(0), v3(3)});
+          } catch (const invalid_input&) {
+            continue;
+          }
+          INFO(name << " family " << fam.name << " scale " << sc << " case " << i);
+          REQUIRE(cast_hit == got);
+          ++cases;
+          book_wrong += book_got != truth;
+          if (got == truth) continue;
+          ++wrong;
+          if (r == Vec3<Q>(Q(0), Q(0), Q(0))) {  // the book's point test at F
+            REQUIRE(got == book::cast(Segment<F>{v3(0), v3(0)}, tri, unsigned(want_all)).hit);
+            ++points;
+            continue;
+          }
+          int kz = 0;
+          for (int k = 1; k < 3; ++k)
+            if (mag(r[k]) > mag(r[kz])) kz = k;
+          Vec3<Q> P[3];
+          long double m[3], z[3];
+          bool in_range = true;
+          for (int k = 0; k < 3; ++k) {
+            P[k] = convert_prim_exact(tri).vertex[k] - src;
+            m[k] = mag(P[k][0]) + mag(P[k][1]) + mag(P[k][2]);
+            z[k] = mag(P[k][kz] / r[kz]);
+            for (int j = 0; j < 3; ++j)
+              in_range = in_range && (P[k][j] == Q(0) || (mag(P[k][j]) >= lo_ok && mag(P[k][j]) <= hi_ok));
+          }
+          for (int j = 0; j < 3; ++j) in_range = in_range && (r[j] == Q(0) || (mag(r[j]) >= lo_ok && mag(r[j]) <= hi_ok));
+          if (!in_range) {  // only the magnitude family's far scales leave the range
+            REQUIRE(fam.name == "magnitude");
+            ++out_of_range;
+            continue;
+          }
+          Q e[3];
+          long double E[3];
+          for (int k = 0; k < 3; ++k) {
+            const Vec3<Q>& B = P[(k + 1) % 3];
+            const Vec3<Q>& C = P[(k + 2) % 3];
+            e[k] = r.dot(B.cross(C)) / r[kz];
+            E[k] = 1.05L * 20 * u * m[(k + 1) % 3] * m[(k + 2) % 3];
+          }
+          const Q det = e[0] + e[1] + e[2];
+          Q t(0);
+          long double Et = 0;
+          for (int k = 0; k < 3; ++k) {
+            t += e[k] * (P[k][kz] / r[kz]);
+            Et += 1.05L * z[k] * (E[k] + 6 * u * mag(e[k]));
+          }
+          const long double Edet = E[0] + E[1] + E[2] + 2.1L * u * mag(det);
+          const bool in_band = mag(e[0]) <= E[0] || mag(e[1]) <= E[1] || mag(e[2]) <= E[2] || mag(t) <= Et ||
+                               (segment && mag(t - det) <= Et + Edet);
+          INFO("e " << double(CGAL::to_double(e[0])) << " " << double(CGAL::to_double(e[1])) << " "
+                    << double(CGAL::to_double(e[2])) << " (bands " << double(E[0]) << " " << double(E[1]) << " "
+                    << double(E[2]) << "), t " << double(CGAL::to_double(t)) << " (" << double(Et) << "), det "
+                    << double(CGAL::to_double(det)));
+          REQUIRE(in_band);
+        }
+    }
+    REQUIRE(cases > 2000);
+    if (std::getenv("CDREF_TEST_REPORT"))
+      std::cout << "stable " << typeid(F).name() << " " << name << ": " << cases << " cases, " << wrong
+                << " misclassified (the book's cast " << book_wrong << "; " << points << " zero-length segments, "
+                << out_of_range << " outside the header's range)\n";
   }
 }
 

@@ -1,6 +1,6 @@
 // fuzz/queries/triangle_casts.hpp - the descriptors of ray-triangle-cast and
 // segment-triangle-cast (Section 3.4): Moller-Trumbore with the exact flat cases (book),
-// Woop-Benthin-Wald (robust), the orientation filter (oracle).
+// Woop-Benthin-Wald (stable, and robust's values), the orientation filter (oracle).
 #pragma once
 
 #include <CGAL/Intersections_3/Ray_3_Triangle_3.h>
@@ -10,6 +10,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/robust/ray_triangle.hpp>
+#include <cdref/stable/ray_triangle.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -41,6 +42,13 @@ struct TriangleCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Triangle<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the stable tier (float/cdref/stable/ray_triangle.hpp)
+  template <class F>
+  static auto stable(const Shot<F>& a, const Triangle<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const Triangle<F>& b) { return cdref::stable::hit(a, b); }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const Triangle<T>& b) { return cdref::stable::unchecked::hit(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const Triangle<T>& b) { return cdref::book::unchecked::hit(a, b); }

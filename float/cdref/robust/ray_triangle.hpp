@@ -3,30 +3,9 @@
 //
 // Two pieces: the classification (below, "Classification and certificate": exact where the
 // double words decide, never a false miss where they do not), and the values where the double
-// words cannot give them, from Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection"
-// (JCGT 2013), the test pbrt-v4 ships, run in F (watertight() below). With the vertices moved to the source (P_k = v_k - s), the axes permuted so
-// that z is the direction's largest coordinate (kz), and the shear Sx = -d_x/d_z, Sy = -d_y/d_z
-// applied (p_k = (P_kx + Sx P_kz, P_ky + Sy P_kz)), the ray is the origin of the sheared plane
-// looking down z, and the edge functions
-//   e0 = p1 x p2,  e1 = p2 x p0,  e2 = p0 x p1   (2D cross products, one rounding per product
-//                                                and one for the difference)
-// are det(d, B, C), det(d, C, A), det(d, A, B) of book/ray_triangle.hpp divided by d_z, as rounded.
-// The ray meets the triangle iff they do not have opposite signs; det = e0 + e1 + e2, and
-// lambda = (e0 z0 + e1 z1 + e2 z2) / det with z_k = P_kz / d_z, tested against [0, 1] or
-// [0, inf) by sign (closed: lambda = 0 and lambda = 1 are hits).
-//
-// Why no ray leaks between two triangles that share an edge: every vertex is translated and
-// sheared the same way in every triangle that holds it (the same rounded sheared coordinates),
-// so the triangles' projections form a mesh again; a shared edge's function is computed from
-// the same two products in both triangles, with its operands swapped, and fl(a b) - fl(c d) is
-// exactly -(fl(c d) - fl(a b)); and its sign is never the wrong one for the sheared coordinates
-// (rounding is monotonic: a b > c d implies fl(a b) >= fl(c d)), only possibly 0, which a
-// closed test counts as inside. So the origin, which lies in the sheared mesh, lies in some
-// triangle's closed projection as computed. (pbrt-v4 recomputes in double where a float edge
-// function is 0 to avoid a double hit; with closed triangles a double hit is allowed, and cdref
-// does not.) Where det = 0 as computed the shot is parallel to the plane as rounded: if all
-// three edge functions are 0 the line lies in the plane and the book's coplanar clip runs in F,
-// else a miss.
+// words cannot give them, from Woop, Benthin and Wald's watertight test run in F: the stable
+// tier's arithmetic (stable/ray_triangle.hpp derives it, and why no ray leaks between two
+// triangles that share an edge), on scaled inputs.
 //
 // Every length is first scaled by a power of two (robust/words.hpp), so that the shear's products
 // neither overflow nor underflow early. Two triangles of a mesh may get different scales; away
@@ -52,57 +31,13 @@
 #pragma once
 
 #include <cdref/book/ray_triangle.hpp>
+#include <cdref/stable/ray_triangle.hpp>
 
 #include "words.hpp"
 
 namespace cdref::robust {
 
 namespace detail {
-
-// WBW on a scaled shot (lambda in [0, 1] when bounded). d = 0 (a zero-length segment) is a
-// point test, the book's in F.
-// With `values`, a miss still carries the values at the plane's crossing (or at the source):
-// the caller reports an uncertain hit there.
-template <class F>
-TriangleCast<F> watertight(const Vec3<F>& s, const Vec3<F>& d, const Triangle<F>& tri, bool bounded,
-                           bool values = false) {
-  if (d[0] == F(0) && d[1] == F(0) && d[2] == F(0)) return book::detail::cast_triangle(s, d, tri, bounded, want_all);
-  int kz = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::fabs(d[i]) > std::fabs(d[kz])) kz = i;
-  const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-  const F Sx = -d[kx] / d[kz], Sy = -d[ky] / d[kz], Sz = F(1) / d[kz];
-  F px[3], py[3], pz[3];
-  for (int k = 0; k < 3; ++k) {
-    const Vec3<F> P = tri.vertex[k] - s;
-    px[k] = P[kx] + Sx * P[kz];
-    py[k] = P[ky] + Sy * P[kz];
-    pz[k] = P[kz];
-  }
-  const F e[3] = {px[1] * py[2] - py[1] * px[2], px[2] * py[0] - py[2] * px[0], px[0] * py[1] - py[0] * px[1]};
-  TriangleCast<F> r;
-  const F det = e[0] + e[1] + e[2];
-  if (det == F(0)) {
-    if (e[0] == F(0) && e[1] == F(0) && e[2] == F(0)) return book::detail::cast_flat(s, d, tri, bounded, want_all);
-    if (values) r.point = s;
-    return r;
-  }
-  const F t = e[0] * (Sz * pz[0]) + e[1] * (Sz * pz[1]) + e[2] * (Sz * pz[2]);
-  const bool out = ((e[0] < F(0) || e[1] < F(0) || e[2] < F(0)) && (e[0] > F(0) || e[1] > F(0) || e[2] > F(0))) ||
-                   (det > F(0) ? (t < F(0) || (bounded && t > det)) : (t > F(0) || (bounded && t < det)));
-  if (out && !values) return r;
-  r.hit = !out;
-  const F lambda = t / det;
-  const F b0 = e[0] / det, b1 = e[1] / det, b2 = e[2] / det;
-  r.lambda_enter = r.lambda_exit = lambda;
-  r.enters = lambda != F(0);
-  r.u = b1, r.v = b2;
-  r.point = tri.vertex[0] * b0 + tri.vertex[1] * b1 + tri.vertex[2] * b2;
-  const Vec3<F> n = Vec3<F>(tri.vertex[1] - tri.vertex[0]).cross(Vec3<F>(tri.vertex[2] - tri.vertex[0]));
-  const F side = Vec3<F>(s - tri.vertex[0]).dot(n), nn = n.norm();
-  if (side != F(0) && nn > F(0) && std::isfinite(nn)) r.normal = (side > F(0) ? n : Vec3<F>(-n)) / nn;
-  return r;
-}
 
 template <class F>
 TriangleCast<F> triangle_cast_value(const TriangleCast<W>& c) {
@@ -174,7 +109,7 @@ std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const 
     else
       return Vec3<F>(ss.target - ss.source);
   }();
-  TriangleCast<F> r = watertight(ss.source, d, scaled(tri, sc), bounded, true);
+  TriangleCast<F> r = stable::detail::watertight(ss.source, d, scaled(tri, sc), bounded, unsigned(want_all), true);
   r.hit = true;
   r.point = Scale{-sc.k}.len(r.point);
   return {r, {true, o && *o == 1}};
