@@ -310,18 +310,19 @@ TEST_CASE("a ray through a shared edge that the book at double lets through, and
   }
 }
 
-TEST_CASE("the robust casts never leak on the watertight family (float, double, long double)",
+TEST_CASE("the robust casts never leak on the watertight family, the stable ones hardly (float, double, long double)",
           "[triangle-cast][watertight][robust]") {
   // Every case of the family at every scale, 600 per cell, for the ray and the segment: where
   // the exact shot meets the fan (the truth on the inputs as the type holds them), the robust
-  // cast at that type hits some triangle of it. The book's leaks are counted beside, to show
-  // that the family finds them.
+  // cast at that type hits some triangle of it; the stable cast (WBW in F, at float and double)
+  // leaks at most once in 1,000 (see below). The book's leaks are counted beside, to show that
+  // the family finds them.
   for (const char* name : {"ray-fan-cast", "segment-fan-cast"}) {
     const fuzz::Query q = fuzz::query_by_name(name);
     const fuzz::QueryInfo& qi = fuzz::info(q);
     const fuzz::Family& fam = fuzz::family_by_name(q, "watertight");
     for (const int precision : {24, 53, 64}) {
-      std::uint64_t cases = 0, meets = 0, robust_leaks = 0, book_leaks = 0;
+      std::uint64_t cases = 0, meets = 0, robust_leaks = 0, book_leaks = 0, stable_leaks = 0;
       for (const int k : fam.scales)
         for (std::uint64_t i = 0; i < 600; ++i) {
           fuzz::Inputs in = fuzz::make_case(5, q, fam, k, i);
@@ -332,11 +333,17 @@ TEST_CASE("the robust casts never leak on the watertight family (float, double, 
           ++meets;
           robust_leaks += !qi.robust(precision, in).cls;
           book_leaks += !qi.book(precision, in).cls;
+          if (precision != 64) stable_leaks += !qi.stable(precision, in).cls;
         }
       INFO(name << " at precision " << precision << ": " << cases << " cases, " << meets << " meet the fan; book leaks "
-                << book_leaks << ", robust leaks " << robust_leaks);
+                << book_leaks << ", robust leaks " << robust_leaks << ", stable leaks " << stable_leaks);
       CHECK(meets > cases * 9 / 10);
       REQUIRE(robust_leaks == 0);
+      // WBW's watertightness holds for the mesh as rounded (stable/ray_triangle.hpp): no leak
+      // through a shared edge of the sheared mesh; against the exact inputs a shot can still
+      // miss at the range's ends (source or target near the plane) or the fan's outer edges,
+      // within the header's bands. Measured: 1 of 4,060 segment casts at float, 0 elsewhere.
+      REQUIRE(stable_leaks * 1000 <= meets);
       if (precision == 53) CHECK(book_leaks > 0);
     }
   }

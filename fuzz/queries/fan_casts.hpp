@@ -1,6 +1,6 @@
 // fuzz/queries/fan_casts.hpp - the descriptors of ray-fan-cast and segment-fan-cast (Section 3.4,
 // mesh level): a shot against a fan of triangles that share a vertex (or two that share an
-// edge), each triangle cast by the triangle query's own book, robust and oracle versions. The
+// edge), each triangle cast by the triangle query's own book, stable, robust and oracle versions. The
 // fan's classification is the union's: a false negative is a leak (the exact shot meets the
 // fan's closed triangles and the implementation hits none of them), a false positive a phantom
 // hit. Its values are the first hit's (the smallest lambda_enter, the first triangle on ties)
@@ -11,6 +11,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/robust/ray_triangle.hpp>
+#include <cdref/stable/ray_triangle.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -55,6 +56,19 @@ struct FanCastQuery {
   template <class T>
   static auto book(const Shot<T>& a, const spec::Fan<T>& f, unsigned w) {
     return spec::first_hit(f, [&](const Triangle<T>& t) { return cdref::book::cast(a, t, w | want_lambda_enter); });
+  }
+  // the stable tier on each triangle (float/cdref/stable/ray_triangle.hpp: watertight)
+  template <class F>
+  static auto stable(const Shot<F>& a, const spec::Fan<F>& f, unsigned w) {
+    return spec::first_hit(f, [&](const Triangle<F>& t) { return cdref::stable::cast(a, t, w | want_lambda_enter); });
+  }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const spec::Fan<F>& f) {
+    return f.any([&](const Triangle<F>& t) { return cdref::stable::hit(a, t); });
+  }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const spec::Fan<T>& f) {
+    return f.any([&](const Triangle<T>& t) { return cdref::stable::unchecked::hit(a, t); });
   }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
