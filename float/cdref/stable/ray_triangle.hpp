@@ -121,13 +121,8 @@ Sheared<F> shear(const Vec3<F>& s, const Vec3<F>& d, const Triangle<F>& tri, boo
 }
 
 template <class F>
-bool is_zero3(const Vec3<F>& d) {
-  return d[0] == F(0) && d[1] == F(0) && d[2] == F(0);
-}
-
-template <class F>
 bool watertight_hit(const Vec3<F>& s, const Vec3<F>& d, const Triangle<F>& tri, bool bounded) {
-  if (is_zero3(d)) return book::detail::cast_triangle(s, d, tri, bounded, 0u).hit;
+  if (book::detail::is_zero(d)) return book::detail::cast_triangle(s, d, tri, bounded, 0u).hit;
   const Sheared<F> w = shear(s, d, tri, bounded);
   if (w.flat) return book::detail::cast_flat(s, d, tri, bounded, 0u).hit;
   return !w.out;
@@ -138,7 +133,7 @@ bool watertight_hit(const Vec3<F>& s, const Vec3<F>& d, const Triangle<F>& tri, 
 template <class F>
 TriangleCast<F> watertight(const Vec3<F>& s, const Vec3<F>& d, const Triangle<F>& tri, bool bounded, unsigned want,
                            bool values = false) {
-  if (is_zero3(d)) return book::detail::cast_triangle(s, d, tri, bounded, want);
+  if (book::detail::is_zero(d)) return book::detail::cast_triangle(s, d, tri, bounded, want);
   const Sheared<F> w = shear(s, d, tri, bounded);
   TriangleCast<F> r;
   if (w.flat) return book::detail::cast_flat(s, d, tri, bounded, want);
