@@ -10,28 +10,40 @@
 //     pairs and rho then by one power of two bringing the largest hi (or rho) into [1,2).
 //  2. The branch, as the book: delta <= 0 iff s.r >= 0; delta >= |r|^2 iff t.r <= 0 (since
 //     t = s + r); both products by dot2 over the 12 exact products of the pairs.
-//  3. Endpoint branches (x = s or x = t, exact pairs): Q = |x|^2 - rho^2 by dot2 over 10
-//     exact products, |x| from its 9 products, and distance/depth = +-Q / (|x| + rho) exactly
-//     as in sphere_sphere.hpp: relative error <= 4.5u + 101 u^2 (|x|^2 + rho^2) / |Q|. The
-//     witness on the segment (and `closest`) is the source or the target itself: exact.
-//  4. Interior branch: the foot x = s + (delta/|r|^2) r = (r x (s x r)) / |r|^2. The cross
-//     product w = s x r is formed by dot2 over 8 exact products per component, so
-//     |w^ - w| <= u|w| + gamma_8^2 2 sqrt3 (1+u)^2 max|s_i| |r|; then x_i = (r x w^)_i / |r|^2
-//     (dot2 over 4 products per component, |r|^2 by dot2): no term of the size of |s| is
-//     subtracted, and normwise
-//       |x^ - x| <= 4.02u |x| + 226 u^2 max|s_i|     (w: u|x|; r x w: u; |r|^2: u; division: u).
-//     (The book's and the perpendicular-foot formulations lose u|s| here, |s|/rho times more
-//     at long range.) Q = |x^|^2 - rho^2 by dot2, distance/depth = +-Q / (|x^| + rho): error
-//       <= 4.5u d + 8.1u |x| + O(u^2)  -> at most 13 ulps of max(d, |x|);
-//     closest = x^ + c: at most 5 ulps of max(|closest_i|, |x|) (+ the u^2 term).
-//  5. The witness on the sphere c + rho x/|x|: n = x/|x| with error <= 3.5u per component
-//     in the endpoint branches (unit_of_pairs), <= 10.5u (2 x 4.02u for the direction of x^,
-//     1.5u for |x^|, u for the division) in the interior; on_b_i = fma(rho, n_i, c_i): at most
-//     4.5 ulps (endpoints) or 11.5 ulps (interior) of max(|on_b_i|, rho).
+//  3. Endpoint branches (x = s or x = t, exact pairs): the classification's Q = |x|^2 - rho^2
+//     by dot2_cert over 10 exact products. The witness on the segment (and `closest`) is the
+//     source or the target itself: exact.
+//  4. Interior branch: the foot x = s + (delta/|r|^2) r = (r x (s x r)) / |r|^2. For the
+//     classification, the cross product w = s x r is formed by dot2 over 8 exact products per
+//     component, so |w^ - w| <= u|w| + gamma_8^2 2 sqrt3 (1+u)^2 max|s_i| |r|; then x_i =
+//     (r x w^)_i / |r|^2 (dot2 over 4 products per component, |r|^2 by dot2): no term of the
+//     size of |s| is subtracted, and normwise
+//       |x^ - x| <= 4.02u |x| + 226 u^2 max|s_i|     (w: u|x|; r x w: u; |r|^2: u; division: u),
+//     and Q^ = |x^|^2 - rho^2 by dot2 with the bound below (decide_closest).
+//  5. The values, from double words (eft.hpp, sphere_sphere.hpp): x is the endpoint's exact
+//     pair, or the foot l = s - f r, f = s.r / |r|^2, of ray_sphere.hpp's quantities(), each
+//     l_i a double word. Its step A: l^ = s - f^ r + e, |e| <= 33u^2 |s|, and f^ r is off by
+//     |f^ - f| |r| <= 51u^2 |s| + 60u^2 |f||r| <= 111u^2 |s| along r, so the foot's position
+//     is within 144u^2 |s|; along r it moves |x| only to second order, so Q = |x|^2 - rho^2
+//     (the foot's -D) is within u^2 (56 (rho^2 + |x|^2) + 66 |x| |s|); at an endpoint c_dw's
+//     55u^2 (|x|^2 + rho^2).
+//       closest = c + x, rounded once (plus_dw): within 144u^2 |s| + u^2 (|x| + |closest_i|)
+//         before the rounding (endpoints: the endpoint itself, exact);
+//       distance/depth = +-Q / (|x| + rho) by div_pair (|x|: norm_dw, 18u^2; the quotient
+//         30u^2 in all): within u^2 (86 (|x| + rho) + 66 |s|) before the rounding, i.e.
+//         within an ulp unless the distance (or depth) is below ~2^-46 of |x| + rho + |s|
+//         (a sign other than the classification's, possible only where it is uncertain,
+//         gives 0);
+//       the witness on the sphere c + rho x/|x| (unit_dw, then along_dw): x's direction within
+//         27u^2 + 144u^2 |s| / |x|, then 4u^2 max(|on_b_i|, rho) before the rounding.
+//     Each is within 1.5 ulps of the truth unless the truth is below 2/u times that error.
+//     The previous formulation took the values from x^ in F (4.02u |x|): 3.5e14 ulps of
+//     distance at 2^-48 from tangency and 288 ulps of witness at p99 (`cdref campaign --query
+//     segment-sphere --impl robust-double`).
 //     x = 0 exactly (the segment passes through the centre: s = 0, t = 0, or w = 0 exactly,
-//     decided by an exact expansion sum when dot2 cannot tell): n = y/|y|, y = r x e_i with
-//     e_i the axis of the smallest |r_i| (compared exactly on the pairs; e_x when r = 0),
-//     as in the book; y's components are r's pairs, so n has 3.5u.
+//     decided by an exact expansion sum when dot2 cannot tell): depth = rho exactly, n = y/|y|,
+//     y = r x e_i with e_i the axis of the smallest |r_i| (compared exactly on the pairs; e_x
+//     when r = 0), as in the book; y's components are r's pairs, so n has 27u^2.
 //
 // decide_closest(): the book's intersect() at an exact type decides the sign of |x|^2 - rho^2
 // for the exact branch. It is certain iff the branch tests are certain (dot2_cert on s.r
@@ -206,9 +218,9 @@ SegSphSolved<F> seg_sph_solve(const SegSphLocal<F>& L) {
 // The witness direction through the centre: y = r x e_i, i the axis of the smallest |r_i|
 // (exact comparison of the pairs; first on ties), e_x when r = 0.
 template <class F>
-void through_centre_direction(const SegSphLocal<F>& L, F (&n)[3]) {
+void through_centre_direction(const SegSphLocal<F>& L, Pair<F> (&n)[3]) {
   if (L.r_zero) {
-    n[0] = F(1), n[1] = F(0), n[2] = F(0);
+    n[0] = {F(1), F(0)}, n[1] = {F(0), F(0)}, n[2] = {F(0), F(0)};
     return;
   }
   auto abs_less = [&](int a, int b) {  // |r_a| < |r_b| exactly
@@ -226,7 +238,7 @@ void through_centre_direction(const SegSphLocal<F>& L, F (&n)[3]) {
   h[best] = F(0), l[best] = F(0);
   h[j] = L.r[k], l[j] = L.rl[k];
   h[k] = F(-L.r[j]), l[k] = F(-L.rl[j]);
-  unit_of_pairs(h, l, n);
+  unit_dw(h, l, n);
 }
 
 }  // namespace detail
@@ -263,45 +275,67 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
   res.intersect = R.q.value <= F(0);
-  // x in world coordinates
-  Vec3<F> xw;
-  if (R.branch == detail::Branch::source)
+  if (!(w & (want_closest | want_distance | want_depth | want_witnesses))) return res;
+  // x, the closest point relative to the centre (scaled), as double words, and q = |x|^2 -
+  // rho^2 (steps 3-5): an endpoint's exact pair and c_dw; the line's foot l and -D from
+  // ray_sphere.hpp's quantities()
+  const detail::Branch b = R.branch;
+  detail::LocalDW<F> D{};
+  for (int i = 0; i < 3; ++i) {
+    D.s[i] = b == detail::Branch::target ? Pair<F>{L.t[i], L.tl[i]} : Pair<F>{L.s[i], L.sl[i]};
+    D.r[i] = {L.r[i], L.rl[i]};
+  }
+  D.rho = L.rho;
+  Pair<F> x[3];
+  Pair<F> q{F(0), F(0)};
+  if (R.x_zero) {
+    for (auto& xi : x) xi = {F(0), F(0)};
+  } else if (b == detail::Branch::interior) {
+    const auto Q = detail::quantities(D);
+    for (int i = 0; i < 3; ++i) x[i] = Q.l[i];
+    q = {F(-Q.D.hi), F(-Q.D.lo)};
+  } else {
+    for (int i = 0; i < 3; ++i) x[i] = D.s[i];
+    q = detail::c_dw(D);
+  }
+  Vec3<F> xw;  // the closest point, world coordinates
+  if (b == detail::Branch::source)
     xw = seg.source;
-  else if (R.branch == detail::Branch::target)
+  else if (b == detail::Branch::target)
     xw = seg.target;
   else
-    for (int i = 0; i < 3; ++i) xw[i] = R.x_zero ? sp.center[i] : F(std::ldexp(R.x[i], L.scale) + sp.center[i]);
+    for (int i = 0; i < 3; ++i) xw[i] = R.x_zero ? sp.center[i] : detail::plus_dw(sp.center[i], x[i], L.scale);
   if (w & want_closest) res.closest = xw;
   if (!(w & (want_distance | want_depth | want_witnesses))) return res;
 
-  F len = 0;
-  bool x_zero = R.x_zero;
-  F n[3] = {0, 0, 0};
-  if (R.branch == detail::Branch::interior) {
-    if (!R.x_zero) {
-      len = std::sqrt(dot2({R.x[0], R.x[1], R.x[2]}, {R.x[0], R.x[1], R.x[2]}));
-      for (int i = 0; i < 3; ++i) n[i] = R.x[i] / len;
+  const F xh[3] = {x[0].hi, x[1].hi, x[2].hi}, xl[3] = {x[0].lo, x[1].lo, x[2].lo};
+  const bool x_zero = xh[0] == F(0) && xh[1] == F(0) && xh[2] == F(0);
+  if (w & (want_distance | want_depth)) {
+    if (x_zero) {  // the segment passes through the centre: depth rho, exactly
+      if (w & want_depth) res.depth = sp.radius;
+    } else {
+      // +-q / (|x| + rho), the sign the classification's (a value of the other sign, where
+      // the classification is uncertain, is 0)
+      const Pair<F> len = detail::norm_dw(xh, xl);
+      const Pair<F> t = two_sum(len.hi, L.rho);
+      const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
+      const F num = res.intersect ? F(-q.hi) : q.hi;
+      if (num > F(0)) {
+        const Pair<F> v = div_pair(res.intersect ? Pair<F>{F(-q.hi), F(-q.lo)} : q, den);
+        (res.intersect ? res.depth : res.distance) = std::ldexp(F(v.hi + v.lo), L.scale);
+      }
+      if (!(w & want_distance)) res.distance = F(0);
+      if (!(w & want_depth)) res.depth = F(0);
     }
-  } else {
-    const bool src = R.branch == detail::Branch::source;
-    const F(&h)[3] = src ? L.s : L.t;
-    const F(&l)[3] = src ? L.sl : L.tl;
-    x_zero = h[0] == F(0) && h[1] == F(0) && h[2] == F(0);
-    if (!x_zero) {
-      len = detail::norm_of_pairs(h, l);
-      detail::unit_of_pairs(h, l, n);
-    }
-  }
-  const F den = len + L.rho;
-  const F q = R.q.value;
-  if (den > F(0)) {
-    if ((w & want_distance) && q > F(0)) res.distance = std::ldexp(q / den, L.scale);
-    if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
   }
   if (w & want_witnesses) {
-    if (x_zero) detail::through_centre_direction(L, n);
+    Pair<F> n[3];
+    if (x_zero)
+      detail::through_centre_direction(L, n);
+    else
+      detail::unit_dw(xh, xl, n);
     res.on_a = xw;
-    for (int i = 0; i < 3; ++i) res.on_b[i] = std::fma(sp.radius, n[i], sp.center[i]);
+    for (int i = 0; i < 3; ++i) res.on_b[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
   }
   return res;
 }

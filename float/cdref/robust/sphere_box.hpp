@@ -18,8 +18,11 @@
 //  5. Centre outside (some axis clamped): v is also rounded to pairs (two_sum(a, fl(b + e)),
 //     off by at most 3u^2 |v_i|), |v| from them (1.5u + O(u^2)); distance/depth = +-Q/(|v| +
 //     rho): relative error <= 4.5u + 362 u^2 S / |Q| + O(u^2), at most 5 ulps away from
-//     touching within ~u. Witness on the sphere c + rho n, n = v/|v| (3.5u + O(u^2) per
-//     component; fma): at most 4.5 ulps of max(|on_a_i|, rho |n_i|). Witness on the box (and
+//     touching within ~u. Witness on the sphere c + rho n, n = v/|v| from the pairs (their
+//     rounding 3u^2, unit_dw 27u^2 per component) and c_i + rho n_i rounded once (along_dw,
+//     sphere_sphere.hpp): within one ulp unless it cancels to below ~64u rho |n_i| (fma with
+//     n rounded to F was off by 3.5u rho |n_i|: 929 ulps on the near-touching family).
+//     Witness on the box (and
 //     `closest`): a clamped coordinate is fl(box centre_i +- h_i), half an ulp; an unclamped
 //     one is the sphere's centre coordinate itself, exact.
 //  6. Centre in the closed box (no axis clamped, v = 0 exactly): delta_i = h_i - |c_i| =
@@ -158,9 +161,9 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
       if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
     }
     if (w & want_witnesses) {
-      F n[3];
-      detail::unit_of_pairs(vh, vl, n);
-      for (int i = 0; i < 3; ++i) res.on_a[i] = std::fma(sp.radius, n[i], sp.center[i]);
+      Pair<F> n[3];
+      detail::unit_dw(vh, vl, n);
+      for (int i = 0; i < 3; ++i) res.on_a[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
       res.on_b = x;
     }
     return res;

@@ -19,8 +19,11 @@
 //     i.e. at most 5 ulps until |Q| falls below ~145u (|v|^2 + s^2) (touching within ~u).
 //  5. Witnesses pA = cA - rhoA n, pB = cB + rhoB n, n = v/|v| from the pair v scaled by its
 //     own largest component (so that a tiny v next to large radii keeps its direction):
-//     n_i = fl(v_i) / |v| has relative error <= 3.5u, and pA_i = fma(-rhoA, n_i, cA_i) is off
-//     by at most u|pA_i| + 3.5u rhoA |n_i|: at most 4.5 ulps of max(|pA_i|, rhoA |n_i|).
+//     each n_i a double word with relative error <= 27u^2 (unit_dw), and pA_i = cA_i - rhoA
+//     n_i rounded once (along_dw): within half an ulp plus 31u^2 max(|pA_i|, rhoA |n_i|), i.e.
+//     within one ulp unless the witness cancels to below 62u rhoA |n_i| (a witness near a
+//     coordinate plane through a far centre; then 31u^2 rhoA |n_i| absolute). fma(-rhoA,
+//     fl(n_i), cA_i) was off by 3.5u rhoA |n_i|: 144 ulps at p99 on the magnitude family.
 //     Concentric (v = 0 exactly): n = e_x as in the book; pA_x = fl(cA_x - rhoA), 0.5 ulp.
 //  6. Distances are scaled back by 2^(e1+e2), exactly unless the result leaves the range.
 //
@@ -99,13 +102,28 @@ F norm_of_pairs(const F (&v)[3], const F (&l)[3]) {
                         {v[0], v[1], v[2], v[0], v[1], v[2], l[0], l[1], l[2]}));
 }
 
-// v/|v| for a nonzero v = hi + lo (exact pairs, hi = fl(hi + lo)), scaled first by the
-// exponent of its largest hi so that neither a tiny nor a huge v under- or overflows:
-// n_i = hi_i / |v|^, relative error <= u (hi) + 1.5u (|v|) + u (division) + O(u^2) = 3.5u.
+// |x|^2 for x = h + l (normalized pairs, |l_i| <= u|h_i|) as a double word: the exact squares
+// of the highs (two_prod_split: the caller keeps |h_i| < 2^(emax/2)) summed by a two_sum
+// chain; the squares' lows, the chain's errors and 2 h.l summed in F (five terms of total
+// <= 5u|x|^2, so gamma_4 of it), l.l dropped (<= u^2|x|^2); 2 h.l itself off by gamma_3 2u|x|^2:
+// relative error <= 28u^2 (+ eta for squares below the normal range).
 template <class F>
-void unit_of_pairs(const F (&h)[3], const F (&l)[3], F (&n)[3]) {
+Pair<F> norm2_dw(const F (&h)[3], const F (&l)[3]) {
+  const Pair<F> p0 = two_prod_split(h[0], h[0]), p1 = two_prod_split(h[1], h[1]), p2 = two_prod_split(h[2], h[2]);
+  const Pair<F> s1 = two_sum(p0.hi, p1.hi), s2 = two_sum(s1.hi, p2.hi);
+  const F x = F(h[0] * l[0] + h[1] * l[1]) + h[2] * l[2];
+  return fast_two_sum(s2.hi, F(F(F(p0.lo + p1.lo) + F(p2.lo + s1.lo)) + F(s2.lo + F(2) * x)));
+}
+
+// x/|x| for a nonzero x = h + l (normalized pairs), each component a double word, x scaled
+// first by the exponent of its largest high so that neither a tiny nor a huge x under- or
+// overflows: |x| = sqrt_pair(norm2_dw) (14u^2 + 4u^2), n_i = div_pair(x_i, |x|) (+ 8u^2):
+// relative error <= 27u^2 per component (a component whose square falls below the normal
+// range after scaling is below 2^(emin/2) of the largest: its absolute error is of that size).
+template <class F>
+void unit_dw(const F (&h)[3], const F (&l)[3], Pair<F> (&n)[3]) {
   const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
-  // (a zero or non-finite top -- v underflowed, or overflowed upstream -- is not scaled:
+  // (a zero or non-finite top -- x underflowed, or overflowed upstream -- is not scaled:
   // ilogb would return INT_MIN or INT_MAX there)
   const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
   F hs[3], ls[3];
@@ -113,8 +131,47 @@ void unit_of_pairs(const F (&h)[3], const F (&l)[3], F (&n)[3]) {
     hs[i] = std::ldexp(h[i], -e);
     ls[i] = std::ldexp(l[i], -e);
   }
-  const F len = norm_of_pairs(hs, ls);
-  for (int i = 0; i < 3; ++i) n[i] = hs[i] / len;
+  const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
+  for (int i = 0; i < 3; ++i) n[i] = len.hi > F(0) ? div_pair(Pair<F>{hs[i], ls[i]}, len) : Pair<F>{F(0), F(0)};
+}
+template <class F>
+void unit_dw(const Pair<F> (&x)[3], Pair<F> (&n)[3]) {
+  const F h[3] = {x[0].hi, x[1].hi, x[2].hi}, l[3] = {x[0].lo, x[1].lo, x[2].lo};
+  unit_dw(h, l, n);
+}
+
+// |x| for a nonzero x = h + l (normalized pairs) as a double word, scaled as in unit_dw and
+// back: relative error <= 18u^2 (14u^2 from norm2_dw, 4u^2 sqrt_pair).
+template <class F>
+Pair<F> norm_dw(const F (&h)[3], const F (&l)[3]) {
+  const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
+  const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
+  F hs[3], ls[3];
+  for (int i = 0; i < 3; ++i) {
+    hs[i] = std::ldexp(h[i], -e);
+    ls[i] = std::ldexp(l[i], -e);
+  }
+  const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
+  return {std::ldexp(len.hi, e), std::ldexp(len.lo, e)};
+}
+
+// c + k n for a double-word n, rounded once: k n.hi exactly (two_prod; k |n| <= k, no
+// overflow), its sum with c exactly (two_sum), the three small terms in F. The error before
+// the last rounding is at most u^2 |c + k n| + 3u^2 k |n|, so the result is within half an
+// ulp plus (1 + 3 + d) u^2 max(|c + k n|, k |n|) of c + k n_true when n has relative error
+// d u^2: with unit_dw's 27u^2, within one ulp unless c + k n cancels to below 62u k |n|.
+template <class F>
+F along_dw(F c, F k, const Pair<F>& n) {
+  const Pair<F> p = two_prod(k, n.hi);
+  const Pair<F> s = two_sum(c, p.hi);
+  return s.hi + F(s.lo + F(p.lo + k * n.lo));
+}
+
+// c + x 2^e for a double-word x, rounded once (x 2^e exact unless it leaves the normal range).
+template <class F>
+F plus_dw(F c, const Pair<F>& x, int e) {
+  const Pair<F> s = two_sum(c, std::ldexp(x.hi, e));
+  return s.hi + F(s.lo + std::ldexp(x.lo, e));
 }
 
 // The exact sign of x_0 + ... + x_{N-1} (Shewchuk's Grow-Expansion with zero elimination:
@@ -178,11 +235,11 @@ Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want
     }
   }
   if (w & want_witnesses) {
-    F n[3] = {F(1), F(0), F(0)};
-    if (!L.zero_v) detail::unit_of_pairs(L.v, L.vl, n);
+    Pair<F> n[3] = {{F(1), F(0)}, {F(0), F(0)}, {F(0), F(0)}};
+    if (!L.zero_v) detail::unit_dw(L.v, L.vl, n);
     for (int i = 0; i < 3; ++i) {
-      res.on_a[i] = std::fma(-a.radius, n[i], a.center[i]);
-      res.on_b[i] = std::fma(b.radius, n[i], b.center[i]);
+      res.on_a[i] = detail::along_dw(a.center[i], F(-a.radius), n[i]);
+      res.on_b[i] = detail::along_dw(b.center[i], b.radius, n[i]);
     }
   }
   return res;
