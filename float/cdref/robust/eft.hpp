@@ -48,6 +48,23 @@ F dot2(const F (&x)[N], const F (&y)[N]) {
   return acc.hi + err;
 }
 
+// sum_k(p, K): Ogita, Rump and Oishi's SumK (Algorithm 4.8 of the paper above): K - 1
+// error-free cascades of two_sum over p (in place), then the plain sum. The result is as if
+// computed in K-fold precision and rounded (their Proposition 4.10):
+//   |res - s| <= (u + 3 gamma_{n-1}^2) |s| + gamma_{2n-2}^K sum |p_i|,
+// so a sum that cancels by up to u^-(K-1) still comes out within about an ulp.
+template <class F, std::size_t N>
+F sum_k(F (&p)[N], int K) {
+  for (int k = 1; k < K; ++k)
+    for (std::size_t i = 1; i < N; ++i) {
+      const Pair<F> t = two_sum(p[i], p[i - 1]);
+      p[i] = t.hi;
+      p[i - 1] = t.lo;
+    }
+  F s = p[0];
+  for (std::size_t i = 1; i < N; ++i) s += p[i];
+  return s;
+}
 
 // ---- Double-word helpers (additions for ray_sphere.hpp) ----
 //

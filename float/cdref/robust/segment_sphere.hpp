@@ -101,13 +101,14 @@ SegSphLocal<F> seg_sph_local(const Segment<F>& seg, const Sphere<F>& sp) {
   }
   L.r_zero = rtop == F(0);
   const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
-    L.s[i] = std::ldexp(S[i].hi, -e2);
-    L.sl[i] = std::ldexp(S[i].lo, -e2);
-    L.t[i] = std::ldexp(T[i].hi, -e2);
-    L.tl[i] = std::ldexp(T[i].lo, -e2);
-    L.r[i] = std::ldexp(R[i].hi, -e2);
-    L.rl[i] = std::ldexp(R[i].lo, -e2);
+    L.s[i] = down(S[i].hi);
+    L.sl[i] = down(S[i].lo);
+    L.t[i] = down(T[i].hi);
+    L.tl[i] = down(T[i].lo);
+    L.r[i] = down(R[i].hi);
+    L.rl[i] = down(R[i].lo);
   }
   L.rho = scale_down(scale_down(sp.radius, e1, L.exact), e2, L.exact);
   L.scale = e1 + e2;

@@ -94,12 +94,13 @@ SphBoxLocal<F> sph_box_local(const Sphere<F>& sp, const Box<F>& box) {
     }
   }
   const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
-    L.a[i] = std::ldexp(L.a[i], -e2);
-    L.b[i] = std::ldexp(L.b[i], -e2);
-    L.e[i] = std::ldexp(L.e[i], -e2);
+    L.a[i] = down(L.a[i]);
+    L.b[i] = down(L.b[i]);
+    L.e[i] = down(L.e[i]);
   }
-  L.rho = std::ldexp(L.rho1, -e2);
+  L.rho = down(L.rho1);
   L.scale = L.e1 + e2;
   return L;
 }

@@ -14,9 +14,14 @@
 //     <= (1+u)^2 (|v|^2 + s^2). intersect = Q^ <= 0.
 //  3. |v| = sqrt(dot2 of the 9 products of |v|^2): relative error <= 1.5u + O(u^2).
 //  4. distance = Q / (|v| + s) when Q > 0, depth = -Q / (|v| + s) when Q < 0 (the book's
-//     |v| - s and s - |v|, whose cancellation is gone): relative error
-//       <= 4.5u + 145 u^2 (|v|^2 + s^2) / |Q|   (Q: u + gamma^2 S/|Q|; |v|: 1.5u; add; divide),
-//     i.e. at most 5 ulps until |Q| falls below ~145u (|v|^2 + s^2) (touching within ~u).
+//     |v| - s and s - |v|, whose cancellation is gone), with Q within (1 + 1/16)u|Q|: step 2's
+//     value where dot2_cert's bound shows its gamma^2 S term below u|Q|/16, else the 24 parts
+//     of the 12 exact products summed as if in triple precision (sum_k, K = 3: (u + 3
+//     gamma_23^2)|Q| + gamma_46^3 S, i.e. u|Q| until |Q| falls below ~10^5 u^2 S); |v| + s a
+//     double word (norm_dw, 18u^2), the quotient by div_pair (8u^2) rounded once: within
+//     half an ulp plus 1.07u of the truth, i.e. 2.1 ulps at worst and 1.6 but at a binade's
+//     edge. (The previous Q / (fl|v| + s) in F: 4.5u + 145 u^2 S/|Q|, 44 ulps measured at 2^-52
+//     from touching.)
 //  5. Witnesses pA = cA - rhoA n, pB = cB + rhoB n, n = v/|v| from the pair v scaled by its
 //     own largest component (so that a tiny v next to large radii keeps its direction):
 //     each n_i a double word with relative error <= 27u^2 (unit_dw), and pA_i = cA_i - rhoA
@@ -75,12 +80,13 @@ SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b)
   L.zero_v = vtop == F(0);
   L.all_zero = top == F(0);
   const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
-    L.v[i] = std::ldexp(vh[i], -e2);
-    L.vl[i] = std::ldexp(vlo[i], -e2);
+    L.v[i] = down(vh[i]);
+    L.vl[i] = down(vlo[i]);
   }
-  L.s = std::ldexp(sp.hi, -e2);
-  L.sl = std::ldexp(sp.lo, -e2);
+  L.s = down(sp.hi);
+  L.sl = down(sp.lo);
   L.scale = e1 + e2;
   return L;
 }
@@ -93,6 +99,24 @@ Bounded<F> sphere_sphere_q(const SphereSphereLocal<F>& L) {
   return dot2_cert({v[0], v[1], v[2], F(2 * l[0]), F(2 * l[1]), F(2 * l[2]), l[0], l[1], l[2], L.s, F(2 * L.sl), L.sl},
                    {v[0], v[1], v[2], v[0], v[1], v[2], l[0], l[1], l[2], F(-L.s), F(-L.s), F(-L.sl)},
                    64);  // 8 low parts scaled below the normal range: each |dQ| <= 8 eta
+}
+
+// Q as sphere_sphere_q, summed as if in triple precision (sum_k, K = 3, over the 24 parts of
+// the 12 exact products): |Q^ - Q| <= (u + 3 gamma_23^2)|Q| + gamma_46^3 S (+ 24 eta for
+// products below the normal range).
+template <class F>
+F sphere_sphere_q3(const SphereSphereLocal<F>& L) {
+  const F* v = L.v;
+  const F* l = L.vl;
+  const F x[12] = {v[0], v[1], v[2], F(2 * l[0]), F(2 * l[1]), F(2 * l[2]), l[0], l[1], l[2], L.s, F(2 * L.sl), L.sl};
+  const F y[12] = {v[0], v[1], v[2], v[0], v[1], v[2], l[0], l[1], l[2], F(-L.s), F(-L.s), F(-L.sl)};
+  F p[24];
+  for (int i = 0; i < 12; ++i) {
+    const Pair<F> t = two_prod(x[i], y[i]);
+    p[2 * i] = t.hi;
+    p[2 * i + 1] = t.lo;
+  }
+  return sum_k(p, 3);
 }
 
 // |v| for v = hi + lo (exact pairs): dot2 of the 9 products, relative error <= 1.5u + O(u^2).
@@ -126,10 +150,11 @@ void unit_dw(const F (&h)[3], const F (&l)[3], Pair<F> (&n)[3]) {
   // (a zero or non-finite top -- x underflowed, or overflowed upstream -- is not scaled:
   // ilogb would return INT_MIN or INT_MAX there)
   const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
+  const Pow2<F> down(e);
   F hs[3], ls[3];
   for (int i = 0; i < 3; ++i) {
-    hs[i] = std::ldexp(h[i], -e);
-    ls[i] = std::ldexp(l[i], -e);
+    hs[i] = down(h[i]);
+    ls[i] = down(l[i]);
   }
   const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
   for (int i = 0; i < 3; ++i) n[i] = len.hi > F(0) ? div_pair(Pair<F>{hs[i], ls[i]}, len) : Pair<F>{F(0), F(0)};
@@ -146,13 +171,14 @@ template <class F>
 Pair<F> norm_dw(const F (&h)[3], const F (&l)[3]) {
   const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
   const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
+  const Pow2<F> down(e), up(-e);
   F hs[3], ls[3];
   for (int i = 0; i < 3; ++i) {
-    hs[i] = std::ldexp(h[i], -e);
-    ls[i] = std::ldexp(l[i], -e);
+    hs[i] = down(h[i]);
+    ls[i] = down(l[i]);
   }
   const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
-  return {std::ldexp(len.hi, e), std::ldexp(len.lo, e)};
+  return {up(len.hi), up(len.lo)};
 }
 
 // c + k n for a double-word n, rounded once: k n.hi exactly (two_prod; k |n| <= k, no
@@ -223,15 +249,25 @@ Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want
   check(b, "sphere B");
   Proximity<F> res;
   const auto L = detail::sphere_sphere_local(a, b);
-  const F q = L.all_zero ? F(0) : detail::sphere_sphere_q(L).value;
+  const detail::Bounded<F> qb = L.all_zero ? detail::Bounded<F>{F(0), F(0)} : detail::sphere_sphere_q(L);
+  const F q = qb.value;
   res.intersect = q <= F(0);
   if (!(w & (want_distance | want_depth | want_witnesses))) return res;
-  if (w & (want_distance | want_depth)) {
-    const F len = detail::norm_of_pairs(L.v, L.vl);
-    const F den = len + L.s;
-    if (den > F(0)) {
-      if ((w & want_distance) && q > F(0)) res.distance = std::ldexp(q / den, L.scale);
-      if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
+  if ((w & (want_distance | want_depth)) && q != F(0)) {
+    // Q within (1 + 1/16)u of itself: dot2's where its bound says so (E <= 2.125u|Q^|, i.e.
+    // gamma^2 S below u|Q|/16), else summed as if in triple precision (item 4)
+    const F aq = std::fabs(q);
+    const F Q = qb.err <= F(2.125) * detail::unit_roundoff<F>() * aq ? q : detail::sphere_sphere_q3(L);
+    // |v| + s as a double word (norm_dw: 18u^2), the quotient by div_pair, one rounding
+    Pair<F> len{F(0), F(0)};
+    if (!L.zero_v) len = detail::norm_dw(L.v, L.vl);
+    const Pair<F> t = two_sum(len.hi, L.s);
+    const Pair<F> den = fast_two_sum(t.hi, F(t.lo + F(len.lo + L.sl)));
+    if (den.hi > F(0) && (Q > F(0)) == (q > F(0))) {
+      const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
+      const F dv = std::ldexp(F(d.hi + d.lo), L.scale);
+      if ((w & want_distance) && q > F(0)) res.distance = dv;
+      if ((w & want_depth) && q < F(0)) res.depth = dv;
     }
   }
   if (w & want_witnesses) {
