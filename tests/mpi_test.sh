@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # tests/mpi_test.sh CDREF CDREF_MPI MPIRUN - campaigns across MPI ranks on this machine:
 #  - 1, 2 and 4 ranks print byte for byte what one process prints (text form, JSON, CSV, table);
-#  - a rank killed mid-run, the job resumed (with another number of ranks, and killed again):
-#    exactly the uninterrupted result, nothing counted twice;
-#  - the whole job killed, resumed on one rank, then resumed once more when all was done;
+#  - a rank lost mid-run (it kills itself after a checkpoint: CDREF_MPI_TEST_KILL_RANKS), the
+#    job resumed (with another number of ranks, and a rank lost again): exactly the
+#    uninterrupted result, nothing counted twice;
+#  - the whole job lost, resumed on one rank, then resumed once more when all was done;
 #  - errors by name: a bad option, --resume without a checkpoint, another campaign's checkpoint.
 set -euo pipefail
 cdref="$1"
@@ -21,8 +22,6 @@ fail() {  # the reason, then what the background jobs said
 # no grace period between the TERM and the KILL of a failed job's other ranks (2 s by default)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpi() { local np=$1; shift; "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 -np "$np" "$cdref_mpi" "$@"; }
-# the same as a background job whose pid ($!) is mpirun's
-mpi_bg() { local np=$1; shift; exec "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 -np "$np" "$cdref_mpi" "$@"; }
 
 args=(campaign --query segment-sphere-cast --query box-box --query ray-triangle-cast
       --family long-range --family degenerate --impl book-float --impl book-double --impl robust-double
@@ -45,48 +44,29 @@ for np in 1 2 4; do
   grep -q "on $np ranks of 1 threads" np$np.tbl || fail "np $np: $(tail -1 np$np.tbl)"
 done
 
-# the pid of rank R of the job started as background job with pid MPIRUN_PID
-rank_pid() {
-  local p
-  for p in $(pgrep -P "$1"); do
-    # (grep reads it all: with -q under pipefail an early exit would fail the pipe)
-    grep -x "OMPI_COMM_WORLD_RANK=$2" < <(tr '\0' '\n' < /proc/$p/environ 2>/dev/null) > /dev/null &&
-      { echo $p; return; }
-  done
-}
-# wait until FILE exists (a rank's first checkpoint), then kill -9 the given ranks of the job
-kill_after() {
-  local job=$1 file=$2; shift 2
-  for _ in $(seq 3000); do
-    [ -e "$file" ] && break
-    kill -0 "$job" 2>/dev/null || fail "the job ended before $file was written"
-    sleep 0.01
-  done
-  [ -e "$file" ] || fail "no checkpoint $file after 30 s"
-  local r p pids=()
-  for r in "$@"; do
-    p=$(rank_pid "$job" "$r" || true)
-    [ -n "$p" ] || fail "rank $r not found"
-    pids+=("$p")
-  done
-  kill -9 "${pids[@]}" 2>/dev/null || true  # (one may be gone: mpirun ends a job that lost a rank)
-  if wait "$job"; then fail "the job finished although ranks $* were killed"; fi
+# a job whose ranks RANKS (r[,r...]) kill themselves with SIGKILL right after their first
+# checkpoint written while working (cdref-mpi's CDREF_MPI_TEST_KILL_RANKS): a rank lost mid-run,
+# whatever this machine's speed. The job must fail and leave FILE behind.
+mpi_killed() {  # mpi_killed NP RANKS FILE ARGS...
+  local np=$1 ranks=$2 file=$3; shift 3
+  if CDREF_MPI_TEST_KILL_RANKS=$ranks "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 \
+      -x CDREF_MPI_TEST_KILL_RANKS -np "$np" "$cdref_mpi" "$@" > killed.tbl 2> killed.err; then
+    fail "the job finished although ranks $ranks were to die"
+  fi
+  [ -e "$file" ] || fail "no checkpoint $file after ranks $ranks died: $(ls)"
 }
 
-# a rank killed in generation 1 (4 ranks), rank 1 killed in generation 2 (2 ranks), then the
-# rest on 4 ranks; every item counted once
-mpi_bg 4 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 $(outs k) > k.tbl 2>k.err &
-kill_after $! ck.g1.r2 2
-mpi_bg 2 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 --resume $(outs k) > k.tbl 2>k.err &
-kill_after $! ck.g2.r1 1
+# rank 2 lost in generation 1 (4 ranks), rank 1 lost in generation 2 (2 ranks), then the rest
+# on 4 ranks; every item counted once
+mpi_killed 4 2 ck.g1.r2 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 $(outs k)
+mpi_killed 2 1 ck.g2.r1 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 --resume $(outs k)
 grep -q "^generation 2$" ck || fail "the resumed job did not open generation 2: $(cat ck)"
 mpi 4 "${args[@]}" --threads 1 --checkpoint ck --checkpoint-every 0 --resume $(outs k) > k.tbl
 same k
 [ ! -e ck.g1.r0 ] && [ ! -e ck.g2.r0 ] || fail "earlier generations left behind: $(ls)"
 
-# the whole job killed (every rank, rank 0 too), resumed on one rank, resumed again when done
-mpi_bg 2 "${args[@]}" --threads 1 --checkpoint ca --checkpoint-every 0 $(outs a) > a.tbl 2>a.err &
-kill_after $! ca.g1.r1 0 1
+# the whole job lost (every rank, rank 0 too), resumed on one rank, resumed again when done
+mpi_killed 2 0,1 ca.g1.r0 "${args[@]}" --threads 1 --checkpoint ca --checkpoint-every 0 $(outs a)
 mpi 1 "${args[@]}" --threads 2 --checkpoint ca --resume $(outs a) > a.tbl
 same a
 mpi 2 "${args[@]}" --threads 1 --checkpoint ca --resume $(outs a2) > a2.tbl
@@ -110,4 +90,4 @@ expect_error "cannot resume: no checkpoint nothere" "${args[@]}" --checkpoint no
 expect_error "belongs to another campaign" "${args[@]}" --seed 12 --checkpoint ck --resume
 "$cdref" "${args[@]}" --checkpoint single > /dev/null
 expect_error "not a cdref-mpi checkpoint" "${args[@]}" --checkpoint single --resume
-echo "mpi: identical at 1, 2 and 4 ranks, after killed ranks and a killed job"
+echo "mpi: identical at 1, 2 and 4 ranks, after lost ranks and a lost job"

@@ -31,7 +31,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <deque>
@@ -163,6 +165,7 @@ struct Part {
   double every;
   PartCheckpoint c;
   Clock::time_point last = Clock::now();
+  bool die_after_checkpoint = false;  // CDREF_MPI_TEST_KILL_RANKS (see main)
 
   void stamp() {  // the campaign's text form's header fields, for this part
     const Spec& s = work.spec();
@@ -182,7 +185,10 @@ struct Part {
   void run(ItemSet::Range r) {
     work.run(r.first, r.second, c.saved.results);
     c.done.add(r.first, r.second);
-    if (std::chrono::duration<double>(Clock::now() - last).count() >= every) write();
+    if (std::chrono::duration<double>(Clock::now() - last).count() >= every) {
+      write();
+      if (die_after_checkpoint && !path.empty()) std::raise(SIGKILL);
+    }
   }
 };
 
@@ -326,6 +332,14 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   MPI_Bcast(&generation, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
   part.c.generation = generation;
   if (!spec.checkpoint.empty()) part.path = part_path(spec.checkpoint, generation, rank);
+  // Fault injection for tests/mpi_test.sh: CDREF_MPI_TEST_KILL_RANKS=r[,r...] makes those ranks
+  // kill themselves (SIGKILL) right after their first checkpoint written while working, so that
+  // the resume tests lose a rank mid-run whatever the machine's speed (killing it from outside
+  // raced with a rank that had already finished its share).
+  if (const char* kill = std::getenv("CDREF_MPI_TEST_KILL_RANKS")) {
+    std::string list = std::string(",") + kill + ",";
+    part.die_after_checkpoint = list.find("," + std::to_string(rank) + ",") != std::string::npos;
+  }
 
   if (rank == 0 && defaults) std::cout << cli::default_campaign_banner(spec);
 
