@@ -30,10 +30,15 @@
 //       closest = c + x, rounded once (plus_dw): within 144u^2 |s| + u^2 (|x| + |closest_i|)
 //         before the rounding (endpoints: the endpoint itself, exact);
 //       distance/depth = +-Q / (|x| + rho) by div_pair (|x|: norm_dw, 18u^2; the quotient
-//         30u^2 in all): within u^2 (86 (|x| + rho) + 66 |s|) before the rounding, i.e.
-//         within an ulp unless the distance (or depth) is below ~2^-46 of |x| + rho + |s|
-//         (a sign other than the classification's, possible only where it is uncertain,
-//         gives 0);
+//         30u^2 in all): within u^2 (86 (|x| + rho) + 66 |s|) before the rounding. The 66u^2
+//         |s| (from the foot's 33u^2 |s|) dominates at range near tangency; where it could
+//         exceed u/16 of the distance (3168u max|x_i| max|s_i| >= |Q^|), each l_i is formed
+//         again from the exact products, f taken as exact (foot_exactly: u^2 |l_i| + 3e4
+//         u^3 (|s_i| + |f r_i|)), and Q from it: then within u^2 (88 (|x| + rho)) + 1.2e5
+//         u^3 |s| + (111u^2 |s|)^2 / (|x| + rho). Either way within u^2 88 (|x| + rho) + u
+//         d / 16 + 1.2e5 u^3 |s| (+ the u^4 term), about an ulp of d unless d is below
+//         ~2^-46 of |x| + rho. (A sign other than the classification's, possible only where
+//         it is uncertain, gives 0.)
 //       the witness on the sphere c + rho x/|x| (unit_dw, then along_dw): x's direction within
 //         27u^2 + 144u^2 |s| / |x|, then 4u^2 max(|on_b_i|, rho) before the rounding.
 //     Each is within 1.5 ulps of the truth unless the truth is below 2/u times that error.
@@ -216,6 +221,23 @@ SegSphSolved<F> seg_sph_solve(const SegSphLocal<F>& L) {
   return out;
 }
 
+// s_i - f r_i for double words s_i, f, r_i, f taken as exact: the ten parts of the exact
+// products and s_i summed as if in triple precision (sum_k, K = 3), then the residual the
+// same way: a double word within u^2 |l_i| + 3e4 u^3 (|s_i| + |f r_i|) of it (two SumK
+// bounds, the second on a residual of at most (u + 3 gamma_9^2)|l_i| + gamma_18^3 S).
+template <class F>
+Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
+  const Pair<F> a = two_prod_split(f.hi, r.hi), b = two_prod_split(f.hi, r.lo), c = two_prod_split(f.lo, r.hi),
+                d = two_prod_split(f.lo, r.lo);
+  F p[11] = {s.hi, s.lo, F(-a.hi), F(-a.lo), F(-b.hi), F(-b.lo), F(-c.hi), F(-c.lo), F(-d.hi), F(-d.lo), F(0)};
+  F q[11];
+  for (int i = 0; i < 11; ++i) q[i] = p[i];
+  const F hi = sum_k(p, 3);
+  q[10] = -hi;
+  const F lo = sum_k(q, 3);
+  return two_sum(hi, lo);
+}
+
 // The witness direction through the centre: y = r x e_i, i the axis of the smallest |r_i|
 // (exact comparison of the pairs; first on ties), e_x when r = 0.
 template <class F>
@@ -295,6 +317,20 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
     const auto Q = detail::quantities(D);
     for (int i = 0; i < 3; ++i) x[i] = Q.l[i];
     q = {F(-Q.D.hi), F(-Q.D.lo)};
+    // the foot's rounding (33u^2 |s| per component) moves q by up to 66u^2 |x||s|: where
+    // that could exceed u|q|/16 (at range, near tangency), the foot is formed again from the
+    // exact products (foot_exactly) and q from it
+    F sn = 0, xn = 0;
+    for (int i = 0; i < 3; ++i) {
+      sn = std::max(sn, std::fabs(D.s[i].hi));
+      xn = std::max(xn, std::fabs(x[i].hi));
+    }
+    const F u = detail::unit_roundoff<F>();
+    if (F(F(3168) * u) * F(xn * sn) >= std::fabs(q.hi)) {
+      for (int i = 0; i < 3; ++i) x[i] = detail::foot_exactly(D.s[i], Q.f, D.r[i]);
+      const Pair<F> d2 = detail::rho2_minus_norm2(D.rho, x);
+      q = {F(-d2.hi), F(-d2.lo)};
+    }
   } else {
     for (int i = 0; i < 3; ++i) x[i] = D.s[i];
     q = detail::c_dw(D);
