@@ -12,7 +12,8 @@
 //  2. Q = |v|^2 - s^2 = sum (v_i + lo_i)^2 - (s + s_lo)^2, expanded into 12 exact products,
 //     by dot2: |Q^ - Q| <= u|Q| + gamma_12^2 S, S = sum of the products' moduli
 //     <= (1+u)^2 (|v|^2 + s^2). intersect = Q^ <= 0.
-//  3. |v| = sqrt(dot2 of the 9 products of |v|^2): relative error <= 1.5u + O(u^2).
+//  3. |v| as a double word (norm_dw: the pairs scaled by their largest high, |v|^2 a double
+//     word, one Newton step for the root): relative error <= 18u^2.
 //  4. distance = Q / (|v| + s) when Q > 0, depth = -Q / (|v| + s) when Q < 0 (the book's
 //     |v| - s and s - |v|, whose cancellation is gone), with Q within (1 + 1/16)u|Q|: step 2's
 //     value where dot2_cert's bound shows its gamma^2 S term below u|Q|/16, else the 24 parts
