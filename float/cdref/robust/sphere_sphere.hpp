@@ -140,23 +140,29 @@ Pair<F> norm2_dw(const F (&h)[3], const F (&l)[3]) {
   return fast_two_sum(s2.hi, F(F(F(p0.lo + p1.lo) + F(p2.lo + s1.lo)) + F(s2.lo + F(2) * x)));
 }
 
-// x/|x| for a nonzero x = h + l (normalized pairs), each component a double word, x scaled
-// first by the exponent of its largest high so that neither a tiny nor a huge x under- or
+// scale_to_top: x 2^-e for x = h + l, e the exponent of its largest high (returned).
+// unit_dw: x/|x| for a nonzero x = h + l (normalized pairs), each component a double word, x
+// scaled first by scale_to_top so that neither a tiny nor a huge x under- or
 // overflows: |x| = sqrt_pair(norm2_dw) (14u^2 + 4u^2), n_i = div_pair(x_i, |x|) (+ 8u^2):
 // relative error <= 27u^2 per component (a component whose square falls below the normal
 // range after scaling is below 2^(emin/2) of the largest: its absolute error is of that size).
 template <class F>
-void unit_dw(const F (&h)[3], const F (&l)[3], Pair<F> (&n)[3]) {
+int scale_to_top(const F (&h)[3], const F (&l)[3], F (&hs)[3], F (&ls)[3]) {
   const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
   // (a zero or non-finite top -- x underflowed, or overflowed upstream -- is not scaled:
   // ilogb would return INT_MIN or INT_MAX there)
   const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
   const Pow2<F> down(e);
-  F hs[3], ls[3];
   for (int i = 0; i < 3; ++i) {
     hs[i] = down(h[i]);
     ls[i] = down(l[i]);
   }
+  return e;
+}
+template <class F>
+void unit_dw(const F (&h)[3], const F (&l)[3], Pair<F> (&n)[3]) {
+  F hs[3], ls[3];
+  scale_to_top(h, l, hs, ls);
   const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
   for (int i = 0; i < 3; ++i) n[i] = len.hi > F(0) ? div_pair(Pair<F>{hs[i], ls[i]}, len) : Pair<F>{F(0), F(0)};
 }
@@ -170,14 +176,8 @@ void unit_dw(const Pair<F> (&x)[3], Pair<F> (&n)[3]) {
 // back: relative error <= 18u^2 (14u^2 from norm2_dw, 4u^2 sqrt_pair).
 template <class F>
 Pair<F> norm_dw(const F (&h)[3], const F (&l)[3]) {
-  const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
-  const int e = top > F(0) && std::isfinite(top) ? std::ilogb(top) : 0;
-  const Pow2<F> down(e), up(-e);
   F hs[3], ls[3];
-  for (int i = 0; i < 3; ++i) {
-    hs[i] = down(h[i]);
-    ls[i] = down(l[i]);
-  }
+  const Pow2<F> up(-scale_to_top(h, l, hs, ls));
   const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
   return {up(len.hi), up(len.lo)};
 }
