@@ -41,10 +41,10 @@ const char* usage = R"(usage:
       --query Q        a query (repeatable; default: all; see `cdref describe`)
       --family F       a family (repeatable; default: all of each query)
       --scale K        a scale of the family (repeatable; default: all)
-      --impl I         book-float, book-double, book-long-double; stable-float, stable-double
-                       (queries with a stable tier); robust-float, robust-double,
-                       robust-long-double; a query's own variants (book-exact, book-double-eps, ...:
-                       see `cdref describe`) (repeatable; default: all)
+      --impl I         book-float, book-double, book-long-double; stable-float, stable-double;
+                       robust-float, robust-double, robust-long-double; a query's own variants
+                       (book-exact, book-double-eps, ...: see `cdref describe`) (repeatable;
+                       default: all)
       --n N            cases per (query, family, scale) cell (default 1000)
       --seed S         the campaign seed (default 1)
       --threads T      worker threads (default: hardware threads)

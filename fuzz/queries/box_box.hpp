@@ -5,6 +5,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/robust/box_box.hpp>
+#include <cdref/stable/box_box.hpp>
 #include <cmath>
 
 namespace cdref::fuzz::queries {
@@ -31,6 +32,13 @@ struct BoxBox {
   }
   template <class T>
   static bool book(const Box<T>& a, const Box<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the stable tier (float/cdref/stable/box_box.hpp: the book's centre-extent test)
+  template <class F>
+  static bool stable(const Box<F>& a, const Box<F>& b, unsigned) { return cdref::stable::intersect(a, b); }
+  template <class F>
+  static bool stable_pred(const Box<F>& a, const Box<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Box<T>& a, const Box<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Box<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }

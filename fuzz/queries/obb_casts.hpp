@@ -7,6 +7,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <cdref/stable/obb.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -40,6 +41,13 @@ struct ObbCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const OrientedBox<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the stable tier (float/cdref/stable/obb.hpp: the slab test in the box's frame)
+  template <class F>
+  static auto stable(const Shot<F>& a, const OrientedBox<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const OrientedBox<F>& b) { return cdref::stable::hit(a, b); }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const OrientedBox<T>& b) { return cdref::stable::unchecked::hit(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::hit(a, b); }

@@ -12,6 +12,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/polygon.hpp>
 #include <cdref/robust/polygon.hpp>
+#include <cdref/stable/polygon.hpp>
 
 #include "triangle_triangle.hpp"
 
@@ -79,6 +80,13 @@ struct PolygonCast {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Polygon<T>& b, unsigned w) { return cdref::book::cast(a, b, w); }
+  // the stable tier (float/cdref/stable/polygon.hpp: the watertight cast on each fan triangle)
+  template <class F>
+  static auto stable(const Shot<F>& a, const Polygon<F>& b, unsigned w) { return cdref::stable::cast(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const Polygon<F>& b) { return cdref::stable::hit(a, b); }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const Polygon<T>& b) { return cdref::stable::unchecked::hit(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::hit(a, b); }
@@ -120,6 +128,13 @@ struct PolygonPolygon {
   }
   template <class T>
   static bool book(const Polygon<T>& a, const Polygon<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the stable tier (float/cdref/stable/polygon.hpp: the book's, triangle-triangle over the fan pairs)
+  template <class F>
+  static bool stable(const Polygon<F>& a, const Polygon<F>& b, unsigned) { return cdref::stable::intersect(a, b); }
+  template <class F>
+  static bool stable_pred(const Polygon<F>& a, const Polygon<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Polygon<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Polygon<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
@@ -174,6 +189,13 @@ struct PolygonBox {
   }
   template <class T>
   static bool book(const Polygon<T>& a, const Box<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the stable tier (float/cdref/stable/polygon.hpp: the book's, triangle-box over the fan)
+  template <class F>
+  static bool stable(const Polygon<F>& a, const Box<F>& b, unsigned) { return cdref::stable::intersect(a, b); }
+  template <class F>
+  static bool stable_pred(const Polygon<F>& a, const Box<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Polygon<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Polygon<T>& a, const Box<T>& b) { return cdref::book::unchecked::intersect(a, b); }
@@ -241,6 +263,13 @@ struct PolygonSphere {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const Polygon<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the stable tier (float/cdref/stable/polygon.hpp: the book's, the nearest fan triangle)
+  template <class F>
+  static auto stable(const Sphere<F>& a, const Polygon<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Sphere<F>& a, const Polygon<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }

@@ -7,6 +7,7 @@
 #include <cdref/oracle/classify.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <cdref/stable/segment_box.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -37,6 +38,13 @@ struct SegmentBox {
   }
   template <class T>
   static auto book(const Shot<T>& a, const Box<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the stable tier (float/cdref/stable/segment_box.hpp: the book's separating axes)
+  template <class F>
+  static auto stable(const Shot<F>& a, const Box<F>& b, unsigned) { return cdref::stable::separate(a, b); }
+  template <class F>
+  static bool stable_pred(const Shot<F>& a, const Box<F>& b) { return cdref::stable::separate(a, b).intersect; }
+  template <class T>
+  static bool stable_bare(const Shot<T>& a, const Box<T>& b) { return cdref::stable::unchecked::separate(a, b).intersect; }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shot<T>& a, const Box<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }

@@ -6,6 +6,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <cdref/stable/obb.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -49,6 +50,15 @@ struct ShapeObb {
   }
   template <class T>
   static auto book(const Shape<T>& a, const OrientedBox<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the stable tier (float/cdref/stable/obb.hpp: the book's separating axes in the box's frame)
+  template <class F>
+  static auto stable(const Shape<F>& a, const OrientedBox<F>& b, unsigned) { return cdref::stable::separate(a, b); }
+  template <class F>
+  static bool stable_pred(const Shape<F>& a, const OrientedBox<F>& b) { return cdref::stable::separate(a, b).intersect; }
+  template <class T>
+  static bool stable_bare(const Shape<T>& a, const OrientedBox<T>& b) {
+    return cdref::book::unchecked::separate(a, b).intersect;
+  }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Shape<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }

@@ -7,6 +7,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <cdref/stable/obb.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -32,6 +33,13 @@ struct SphereObb {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const OrientedBox<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the stable tier (float/cdref/stable/obb.hpp: the book's Section 3.2.2 in the box's frame)
+  template <class F>
+  static auto stable(const Sphere<F>& a, const OrientedBox<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Sphere<F>& a, const OrientedBox<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Sphere<T>& a, const OrientedBox<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const OrientedBox<T>& b) { return cdref::book::unchecked::intersect(a, b); }

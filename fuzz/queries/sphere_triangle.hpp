@@ -7,6 +7,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/sphere_triangle.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
+#include <cdref/stable/sphere_triangle.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -32,6 +33,13 @@ struct SphereTriangle {
   }
   template <class T>
   static auto book(const Sphere<T>& a, const Triangle<T>& b, unsigned w) { return cdref::book::proximity(a, b, w); }
+  // the stable tier (float/cdref/stable/sphere_triangle.hpp: the book's Voronoi regions)
+  template <class F>
+  static auto stable(const Sphere<F>& a, const Triangle<F>& b, unsigned w) { return cdref::stable::proximity(a, b, w); }
+  template <class F>
+  static bool stable_pred(const Sphere<F>& a, const Triangle<F>& b) { return cdref::stable::intersect(a, b); }
+  template <class T>
+  static bool stable_bare(const Sphere<T>& a, const Triangle<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const Triangle<T>& b) { return cdref::book::unchecked::intersect(a, b); }

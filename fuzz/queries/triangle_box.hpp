@@ -6,6 +6,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <cdref/stable/triangle_box.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -33,6 +34,13 @@ struct TriangleBox {
   }
   template <class T>
   static auto book(const Triangle<T>& a, const Box<T>& b, unsigned) { return cdref::book::separate(a, b); }
+  // the stable tier (float/cdref/stable/triangle_box.hpp: the book's 13 axes)
+  template <class F>
+  static auto stable(const Triangle<F>& a, const Box<F>& b, unsigned) { return cdref::stable::separate(a, b); }
+  template <class F>
+  static bool stable_pred(const Triangle<F>& a, const Box<F>& b) { return cdref::stable::separate(a, b).intersect; }
+  template <class T>
+  static bool stable_bare(const Triangle<T>& a, const Box<T>& b) { return cdref::stable::unchecked::separate(a, b).intersect; }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Triangle<T>& a, const Box<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }

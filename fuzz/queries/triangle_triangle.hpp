@@ -11,6 +11,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/triangle_triangle.hpp>
 #include <cdref/robust/triangle_triangle.hpp>
+#include <cdref/stable/triangle_triangle.hpp>
 
 namespace cdref::fuzz::queries {
 
@@ -42,6 +43,13 @@ struct TriangleTriangle {
   }
   template <class T>
   static auto book(const Triangle<T>& a, const Triangle<T>& b, unsigned) { return cdref::book::intersect(a, b); }
+  // the stable tier (float/cdref/stable/triangle_triangle.hpp: the book's, no epsilon)
+  template <class F>
+  static auto stable(const Triangle<F>& a, const Triangle<F>& b, unsigned) { return cdref::stable::intersect(a, b); }
+  template <class F>
+  static bool stable_pred(const Triangle<F>& a, const Triangle<F>& b) { return cdref::stable::separate(a, b).intersect; }
+  template <class T>
+  static bool stable_bare(const Triangle<T>& a, const Triangle<T>& b) { return cdref::stable::unchecked::separate(a, b).intersect; }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Triangle<T>& a, const Triangle<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
