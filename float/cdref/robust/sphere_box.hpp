@@ -34,7 +34,18 @@
 //     c + delta sign e_i equals it exactly): half an ulp; on the sphere c - rho sign e_i:
 //     half an ulp. sign(0) = +1 as in the book.
 //
-// decide(): outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
+// decide() and intersect() first try a filter on the stable tier's arithmetic (the book's, in
+// F): c_i = fl(centre_i - box centre_i), v_i = fl(-+h_i - c_i) where c_i is clamped (else 0),
+// q = fl(fl(v.v) - fl(rho^2)). With round to nearest c_i is off by at most u |c_i|, and the
+// clamp's offset is 1-Lipschitz in c, so the exact v_i differs from the computed one by at
+// most delta_i = u (|c_i| + |v_i|) (the rounding of v_i included; a coordinate clamped on one
+// side of the face and not on the other counts too). Hence |Q - (v.v - rho^2)| <= sum_i
+// (2 |v_i| delta_i + delta_i^2) + gamma_3 v.v + u rho^2 (+ eta/2 per product below the normal
+// range) <= 5.02u W + 1.01u rho^2 + 1.01u^2 C, with W = sum_i |v_i| (|c_i| + |v_i|) and C =
+// c.c. Where m = W + rho^2 + C lies in [2^emin / u, max / 4] the sign of q is the sign of Q
+// whenever |q| > 8u (W + rho^2) + 16u^2 C (computed in F: the slack covers its roundings
+// and the eta terms, 10u^2 m). Then the answer is certain without the expansions below.
+// decide() otherwise: outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
 // low terms scaled below the normal range; inside, intersect = true exactly. Never certain
 // when the first scaling lost bits (inputs 2^(emax+emin) apart). Exact touching (Q = 0 with
 // v != 0) is always uncertain.
@@ -115,12 +126,34 @@ Bounded<F> sph_box_q(const SphBoxLocal<F>& L) {
                    128);
 }
 
+// The filter of the header: +1 (Q > 0: apart) or -1 (Q < 0: meeting) where the sign of Q is
+// certain from the stable tier's arithmetic, 0 where it is not.
+template <class F>
+int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
+  F vv(0), w(0), cc(0);
+  for (int i = 0; i < 3; ++i) {
+    const F c = sp.center[i] - box.center[i], h = box.extent[i];
+    const F v = std::max(F(-h - c), F(0)) + std::min(F(h - c), F(0));  // the clamp's offset, branch-free
+    const F ac = std::fabs(c), av = std::fabs(v);
+    vv += v * v;
+    w += av * (ac + av);
+    cc += c * c;
+  }
+  const F ss = sp.radius * sp.radius;
+  const F q = vv - ss, m = w + ss + cc;
+  constexpr F u = unit_roundoff<F>();
+  if (!(m <= std::numeric_limits<F>::max() / F(4) && m >= std::numeric_limits<F>::min() / u)) return 0;
+  const F e = F(8) * u * (w + ss) + F(16) * u * u * cc;
+  return int(q > e) - int(q < -e);
+}
+
 }  // namespace detail
 
 template <class F>
 bool intersect(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
+  if (const int f = detail::sphere_box_filter(sp, box)) return f < 0;
   const auto L = detail::sph_box_local(sp, box);
   return !L.outside || detail::sph_box_q(L).value <= F(0);
 }
@@ -129,6 +162,7 @@ template <class F>
 Decision decide(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
+  if (const int f = detail::sphere_box_filter(sp, box)) return Decision{f < 0, true};
   const auto L = detail::sph_box_local(sp, box);
   if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
   const detail::Bounded<F> q = detail::sph_box_q(L);

@@ -33,7 +33,18 @@
 //     Concentric (v = 0 exactly): n = e_x as in the book; pA_x = fl(cA_x - rhoA), 0.5 ulp.
 //  6. Distances are scaled back by 2^(e1+e2), exactly unless the result leaves the range.
 //
-// decide(): the sign of Q from dot2_cert (ray_sphere.hpp) with the scaling's absolute term:
+// decide() and intersect() first try a filter on the stable tier's arithmetic (Box2D's, in F):
+// v_i = fl(cA_i - cB_i), s = fl(rhoA + rhoB), vv = fl(v.v), ss = fl(s s), q = fl(vv - ss). With
+// round to nearest each difference is off by at most u of its rounded value, so the exact
+// |v|^2 and s^2 differ from v.v and s^2 (of the rounded values) by at most (2u + u^2) of
+// them, fl(v.v) from v.v by gamma_3 v.v and fl(s s) from s^2 by u s^2, plus eta/2 per product
+// below the normal range: |Q - (vv - ss)| <= (5u + O(u^2)) vv + (3u + O(u^2)) ss + 2 eta, and
+// q is (vv - ss) rounded once. Where m = fl(vv + ss) lies in [2^emin / u, max / 4] (no sum
+// overflows; 2 eta = 4u 2^emin <= 4u^2 m) the sign of q is the sign of Q whenever
+// |q| > fl(8u m), which covers (1 + u)(5.01u m + 4u^2 m) with the rounding of m and of the
+// product. Then the answer is certain without the scaled pairs below: every case but those
+// within about 8u (|v|^2 + s^2) of touching, at every range where the squares stay finite.
+// decide() otherwise: the sign of Q from dot2_cert (ray_sphere.hpp) with the scaling's absolute term:
 // certain iff |Q^| > 2u|Q^| + 288 u^2 S^ + K eta (K covers the subnormal low parts); if the
 // first scaling lost bits (inputs 2^(emax+emin) apart) it is never certain. When all of v
 // and s are zero Q = 0 exactly and intersect is certain. Exact touching (Q = 0 with S > 0)
@@ -224,12 +235,27 @@ int exact_sign_of_sum(const F (&x)[N]) {
   return m == 0 ? 0 : (e[m - 1] > F(0) ? 1 : -1);
 }
 
+// The filter of the header: +1 (Q > 0: apart) or -1 (Q < 0: overlapping) where the sign of
+// Q is certain from the stable tier's arithmetic, 0 where it is not.
+template <class F>
+int sphere_sphere_filter(const Sphere<F>& a, const Sphere<F>& b) {
+  const F v0 = a.center[0] - b.center[0], v1 = a.center[1] - b.center[1], v2 = a.center[2] - b.center[2];
+  const F s = a.radius + b.radius;
+  const F vv = v0 * v0 + v1 * v1 + v2 * v2, ss = s * s;
+  const F q = vv - ss, m = vv + ss;
+  constexpr F u = unit_roundoff<F>();
+  if (!(m <= std::numeric_limits<F>::max() / F(4) && m >= std::numeric_limits<F>::min() / u)) return 0;
+  const F e = F(8) * u * m;
+  return int(q > e) - int(q < -e);
+}
+
 }  // namespace detail
 
 template <class F>
 bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
+  if (const int f = detail::sphere_sphere_filter(a, b)) return f < 0;
   const auto L = detail::sphere_sphere_local(a, b);
   return L.all_zero || detail::sphere_sphere_q(L).value <= F(0);
 }
@@ -238,6 +264,7 @@ template <class F>
 Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
+  if (const int f = detail::sphere_sphere_filter(a, b)) return Decision{f < 0, true};
   const auto L = detail::sphere_sphere_local(a, b);
   if (L.all_zero) return within_range(Decision{true, L.exact}, a, b);
   const detail::Bounded<F> q = detail::sphere_sphere_q(L);

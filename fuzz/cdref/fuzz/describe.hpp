@@ -114,8 +114,8 @@ TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
 // (book::unchecked, the loop a tight engine runs: the honest baseline); the book at float,
 // double (all outputs, and the classification alone), long double, MPFR-128 and MPFR-256; the
 // stable tier at float and double (all outputs, the classification alone, and that without
-// input checks, beside `bare`) where the query has one; robust at float, double and long
-// double; the oracle (the classification alone, and every output correctly rounded), on the
+// input checks, beside `bare`) where the query has one; robust at float, double (all outputs,
+// and robust::decide: the classification with its certificate) and long double; the oracle (the classification alone, and every output correctly rounded), on the
 // uniform cases and on
 // the hard ones; the book at CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr (the query and its
 // first output rounded correctly to double); CGAL's own do_intersect in its filtered (Epick)
@@ -159,6 +159,9 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   }
   rows.push_back({"robust float", "robust-float", "", robust_row<Spec, float>(cases)});
   rows.push_back({"robust double", "robust-double", "", robust_row<Spec, double>(cases)});
+  rows.push_back({"robust double, certified classification", "", "as above",
+                  batch_over(prepare<Spec, double>(cases),
+                             [](const auto& ab) { return Spec::robust_decide(ab.first, ab.second).value; })});
   rows.push_back({"robust long double", "robust-long-double", "", robust_row<Spec, long double>(cases)});
   auto uni = std::make_shared<std::vector<Inputs>>(cases);
   auto hc = std::make_shared<std::vector<Inputs>>(hard);
