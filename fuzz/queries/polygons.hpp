@@ -269,7 +269,7 @@ struct PolygonSphere {
   template <class F>
   static bool stable_pred(const Sphere<F>& a, const Polygon<F>& b) { return cdref::stable::intersect(a, b); }
   template <class T>
-  static bool stable_bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }
+  static bool stable_bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Sphere<T>& a, const Polygon<T>& b) { return cdref::book::unchecked::intersect(a, b); }

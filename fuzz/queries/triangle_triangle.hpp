@@ -47,9 +47,9 @@ struct TriangleTriangle {
   template <class F>
   static auto stable(const Triangle<F>& a, const Triangle<F>& b, unsigned) { return cdref::stable::intersect(a, b); }
   template <class F>
-  static bool stable_pred(const Triangle<F>& a, const Triangle<F>& b) { return cdref::stable::separate(a, b).intersect; }
+  static bool stable_pred(const Triangle<F>& a, const Triangle<F>& b) { return cdref::stable::intersect(a, b).intersect; }
   template <class T>
-  static bool stable_bare(const Triangle<T>& a, const Triangle<T>& b) { return cdref::stable::unchecked::separate(a, b).intersect; }
+  static bool stable_bare(const Triangle<T>& a, const Triangle<T>& b) { return cdref::stable::unchecked::intersect(a, b); }
   // the book's classification without its input checks (the `bare` row: see book/common.hpp)
   template <class T>
   static bool bare(const Triangle<T>& a, const Triangle<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }

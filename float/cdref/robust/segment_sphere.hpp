@@ -50,7 +50,11 @@
 //     y = r x e_i with e_i the axis of the smallest |r_i| (compared exactly on the pairs; e_x
 //     when r = 0), as in the book; y's components are r's pairs, so n has 27u^2.
 //
-// decide_closest(): the book's intersect() at an exact type decides the sign of |x|^2 - rho^2
+// decide_closest() and intersect() first try the sphere casts' filter (ray_sphere.hpp,
+// cast_filter on the segment): the segment meets the closed ball exactly when Algorithm 3.1's
+// segment cast hits, so where the filter decides, its answer is this query's exact answer too
+// (and the double words below, u^2 accurate, give the same value).
+// decide_closest() otherwise: the book's intersect() at an exact type decides the sign of |x|^2 - rho^2
 // for the exact branch. It is certain iff the branch tests are certain (dot2_cert on s.r
 // and t.r, ray_sphere.hpp; r = 0 exactly is branch s) and the final sign is -- or, when the
 // branch is not certain, if an endpoint is certainly inside the sphere (then so is the
@@ -270,6 +274,7 @@ template <class F>
 bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
   return detail::seg_sph_solve(detail::seg_sph_local(seg, sp)).q.value <= F(0);
 }
 
@@ -278,6 +283,7 @@ template <class F>
 Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
   const bool exact_zero = R.q.value == F(0) && R.q.err == F(0);

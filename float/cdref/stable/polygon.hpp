@@ -12,8 +12,10 @@
 //                                 the polygon's interior hits some triangle as rounded, where the
 //                                 book's per-triangle tests can miss both triangles at a
 //                                 diagonal.
-//   proximity / intersect(sphere, polygon)   book's (stable/sphere_triangle.hpp is the book's):
-//                                 the nearest fan triangle by the triangles' closest points.
+//   proximity / intersect(sphere, polygon)   book::proximity (stable/sphere_triangle.hpp is the
+//                                 book's): the nearest fan triangle by the triangles' closest
+//                                 points, and intersect() that triangle's test (the book's
+//                                 intersect() asks every triangle, which in F can disagree).
 //   intersect(polygon, box)       book's (stable/triangle_box.hpp) over the fan.
 //   intersect(polygon, polygon)   book's (stable/triangle_triangle.hpp) over the fan pairs.
 // Error bounds: each triangle's (the headers named above); a union is decided right wherever
@@ -47,6 +49,10 @@ Cast<F> cast(const Ray<F>& r, const Polygon<F>& p, unsigned w = want_all) {
 }
 
 namespace unchecked {
+template <class F>
+bool intersect(const Sphere<F>& s, const Polygon<F>& p) {
+  return book::detail::sphere_triangle_intersect(s, p.triangle(book::detail::nearest_triangle(p, s.center)));
+}
 template <class Shot, class F>
 bool hit(const Shot& s, const Polygon<F>& p) {
   for (int k = 0; k < p.triangles(); ++k)
@@ -72,9 +78,11 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const Polygon<F>& p, unsigned w = want_proximity) {
   return book::proximity(s, p, w);
 }
+// The classification of proximity(): the nearest fan triangle's (not the book's "any
+// triangle meets", which at float can disagree with the nearest triangle's own test).
 template <class F>
 bool intersect(const Sphere<F>& s, const Polygon<F>& p) {
-  return book::intersect(s, p);
+  return book::proximity(s, p, 0u).intersect;
 }
 template <class F>
 bool intersect(const Polygon<F>& p, const Box<F>& b) {

@@ -1,7 +1,7 @@
 // cdref/stable/triangle_triangle.hpp - two triangles as careful float code writes them:
-// Moller's interval test for the intersection segment (book::intersect with eps = 0: no
-// snapping of small plane distances to 0) and the division-free separating-axis test for the
-// classification alone (book::separate, 17 axes). F = float, double, long double; same
+// Moller's interval test for the intersection segment and the classification (book::intersect
+// with eps = 0: no snapping of small plane distances to 0); separate() is the book's
+// division-free separating-axis test (17 axes), another formulation, not the tier's. F = float, double, long double; same
 // signatures and results as cdref::book.
 //
 // The chapter's formulations are already these, so the stable tier is the book's; what it
@@ -40,11 +40,13 @@ Separation<F> separate(const Triangle<F>& a, const Triangle<F>& b) {
   return book::separate(a, b);
 }
 
-// The classification without the input checks (see book/common.hpp).
+// The classification without the input checks (see book/common.hpp): the interval test's, as
+// intersect() decides it (the separating axes decide the same exact question, but in F the
+// two formulations can disagree, and the tier's classification is its full query's).
 namespace unchecked {
 template <class F>
-Separation<F> separate(const Triangle<F>& a, const Triangle<F>& b) {
-  return book::unchecked::separate(a, b);
+bool intersect(const Triangle<F>& a, const Triangle<F>& b) {
+  return book::detail::intersect_triangles(a, b, F(0)).intersect;
 }
 }  // namespace unchecked
 
