@@ -60,10 +60,9 @@ namespace detail {
 // The largest and the smallest nonzero magnitude among the inputs.
 template <class F>
 void span_of(F x, F& hi, F& lo) {
-  const F a = std::fabs(x);
-  if (a == F(0)) return;
+  const F a = std::fabs(x);  // branch-free: the filters of the sphere queries call this on every case
   hi = std::max(hi, a);
-  lo = std::min(lo, a);
+  lo = std::min(lo, a == F(0) ? std::numeric_limits<F>::infinity() : a);
 }
 template <class F>
 void span_of(const Vec3<F>& v, F& hi, F& lo) {
@@ -79,15 +78,42 @@ template <class F> void span_of(const Ray<F>& r, F& hi, F& lo) { span_of(r.sourc
 // inputs span more than a quarter of it (2^((emax - emin)/4): 2^511 for double): after
 // scaling, squares of the smallest would leave the normal range (the fuzz targets found a
 // certain-but-wrong double answer mixing 1 and 2^753).
+namespace detail {
+// 2^e as a constant expression (std::ldexp is a library call at run time).
+template <class F>
+constexpr F pow2c(int e) {
+  F x(1);
+  for (; e > 0; --e) x *= F(2);
+  for (; e < 0; ++e) x /= F(2);
+  return x;
+}
+}  // namespace detail
+
+// Whether the inputs lie where the certificates are derived: no nonzero input within 2^p of
+// either end of the exponent range, and the inputs spanning at most a quarter of it
+// (2^((emax - emin)/4): 2^511 for double): after scaling, squares of the smallest would leave
+// the normal range (the fuzz targets found a certain-but-wrong double answer mixing 1 and
+// 2^753). The filters on the stable arithmetic answer only here too, so that where they
+// answer, the robust query's own value (in range, within u^2) is the same.
 template <class A, class B>
-Decision within_range(Decision d, const A& a, const B& b) {
-  if (detail::near_range_end(a) || detail::near_range_end(b)) d.certain = false;
+bool in_certified_range(const A& a, const B& b) {
   using F = std::decay_t<decltype(detail::scalar_of(a))>;
   F hi = F(0), lo = std::numeric_limits<F>::infinity();
   detail::span_of(a, hi, lo);
   detail::span_of(b, hi, lo);
-  constexpr int quarter = (std::numeric_limits<F>::max_exponent - std::numeric_limits<F>::min_exponent) / 4;
-  if (hi > F(0) && hi > std::ldexp(lo, quarter)) d.certain = false;
+  constexpr int p = std::numeric_limits<F>::digits;
+  constexpr F low = detail::pow2c<F>(std::numeric_limits<F>::min_exponent + p);
+  constexpr F high = detail::pow2c<F>(std::numeric_limits<F>::max_exponent - p);
+  constexpr F quarter =
+      detail::pow2c<F>((std::numeric_limits<F>::max_exponent - std::numeric_limits<F>::min_exponent) / 4);
+  if (lo < low || hi > high) return false;  // (lo is infinite when every input is 0)
+  return !(hi > F(0) && hi > lo * quarter);
+}
+
+// d, made uncertain outside in_certified_range.
+template <class A, class B>
+Decision within_range(Decision d, const A& a, const B& b) {
+  if (!in_certified_range(a, b)) d.certain = false;
   return d;
 }
 

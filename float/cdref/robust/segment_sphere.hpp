@@ -274,7 +274,7 @@ template <class F>
 bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
+  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return f > 0;
   return detail::seg_sph_solve(detail::seg_sph_local(seg, sp)).q.value <= F(0);
 }
 
@@ -283,7 +283,7 @@ template <class F>
 Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
+  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
   const bool exact_zero = R.q.value == F(0) && R.q.err == F(0);
