@@ -41,34 +41,23 @@ namespace cdref::stable {
 
 namespace detail {
 
+// The axis-aligned slab cast (ray_box.hpp) on the shot in the frame and the box [-h, h] about
+// the origin (f - 0 and 0 -+ h are exact, so the entry point's face coordinate is -+h_i), its
+// point and normal then moved back to world coordinates, as book::detail::cast_in_frame does.
 template <class F>
 Cast<F> cast_in_frame(const Vec3<F>& s_world, const Vec3<F>& r_world, const OrientedBox<F>& b, bool bounded,
                       unsigned w) {
-  const Vec3<F> f = book::detail::frame_point(b, s_world);
-  const Vec3<F> r = book::detail::frame_vector(b, r_world);
-  const Slab<F> k = slab(f, r, b.extent, bounded);
-  Cast<F> res;
-  if (!k.hit) return res;
-  res.hit = true;
-  res.enters = k.face >= 0;
-  res.lambda_enter = k.enter;
-  res.lambda_exit = k.exit;
-  if (w & want_point) {
-    if (k.face < 0) {
-      res.point = s_world;
-    } else {
-      const int a = k.face / 2;
-      Vec3<F> p;
-      for (int j = 0; j < 3; ++j)
-        p[j] = j == a ? F(k.face % 2 == 0 ? -b.extent[j] : b.extent[j]) : F(f[j] + k.enter * r[j]);
-      res.point = book::detail::world_point(b, p);
-    }
+  Cast<F> c = cast_slab(book::detail::frame_point(b, s_world), book::detail::frame_vector(b, r_world),
+                        book::detail::frame_box(b), bounded, w | want_normal);
+  if (!c.hit) return c;
+  if (w & want_point) c.point = c.enters ? book::detail::world_point(b, c.point) : s_world;
+  if (c.enters) {
+    int axis = 0;
+    while (c.normal[axis] == F(0)) ++axis;
+    const Vec3<F>& ax = b.axis[axis];
+    c.normal = !(w & want_normal) ? zero_vec<F>() : c.normal[axis] > F(0) ? ax : Vec3<F>(-ax);
   }
-  if ((w & want_normal) && k.face >= 0) {
-    const Vec3<F>& ax = b.axis[k.face / 2];
-    res.normal = k.face % 2 == 0 ? Vec3<F>(-ax) : ax;
-  }
-  return res;
+  return c;
 }
 
 }  // namespace detail

@@ -7,11 +7,12 @@
 // stable tier's separation is book::separate, and its classification is the same test. The
 // same question without cross products is the slab test of the box casts (stable::hit of
 // stable/ray_box.hpp, Algorithm 3.3's question); it does not give a separating axis. Measured
-// on this query's families (`cdref campaign --query segment-box --query ray-box --impl
-// stable-double --n 1000`, against the slab's predicate in the same run): the separating axes
-// misclassify 1,362 of 59,000 segments and 3,459 of 59,000 rays at double, 1,245 and 3,332 of
-// them on the magnitude family (products of coordinates near 10^+-300 overflow and
-// underflow), where the slab misclassifies 148 and 143, none of them there.
+// on this query's families at double: the separating axes misclassify 1,362 of 59,000 segments
+// and 3,459 of 59,000 rays (`cdref campaign --query segment-box --query ray-box --impl
+// stable-double --n 1000`), 1,245 and 3,332 of them on the magnitude family, where products of
+// coordinates near 10^+-300 overflow and underflow; the slab test, on a smaller draw of the same
+// families (`CDREF_TEST_REPORT=1 build/release/tests/cdref_tests "stable box casts*"`), 9 and 7
+// of 5,576 (Algorithm 3.3's cross-multiplied hit() 85 and 175 of the same cases).
 //
 // Error bound of separate() (first order in u, the unit roundoff of F). m = (s + t)/2 - c is
 // off by at most u (|s + t|/2 + |m|) per component, w = (t - s)/2 by u |w| (a ray: m = s - c
