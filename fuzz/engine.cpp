@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <new>
+#include <type_traits>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -166,6 +168,7 @@ struct Cell {
   Query q;
   const Family* family;
   int scale;
+  std::uint64_t key;  // cell_key(seed, q, *family, scale)
 };
 
 std::vector<Cell> cells_of(const Spec& spec) {
@@ -184,7 +187,7 @@ std::vector<Cell> cells_of(const Spec& spec) {
       for (int k : f->scales) {
         bool wanted = spec.scales.empty();
         for (int s : spec.scales) wanted = wanted || s == k;
-        if (wanted) cells.push_back({q, f, k});
+        if (wanted) cells.push_back({q, f, k, cell_key(spec.seed, q, *f, k)});
       }
   }
   // a family named for none of the queries is a mistake, not a filter (one that only some of
@@ -206,10 +209,10 @@ bool all_finite(const Inputs& in, std::size_t n) {
 }
 
 // stats[j]: the cell's statistics of impls[j] (null when it does not implement the query).
-void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::vector<const Implementation*>& impls,
+void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Implementation*>& impls,
               const Spec& spec, const std::vector<CellStats*>& stats) {
   const QueryInfo& qi = info(cell.q);
-  const Inputs in = make_case(seed, cell.q, *cell.family, cell.scale, i);
+  const Inputs in = make_case_of(cell.key, *cell.family, cell.scale, i);
   // The truth on the double inputs (rounded to double or long double), and on their
   // float rounding (rounded to float). Inputs outside a query's domain in a type (overflow
   // to infinity, a ray direction that underflows to zero in float) are refused for the
@@ -218,8 +221,17 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
   auto slot = [](int precision) { return precision == 24 ? 0 : (precision == 53 ? 1 : 2); };
   for (std::size_t j = 0; j < impls.size(); ++j)
     if (stats[j]) need[slot(impls[j]->precision)] = true;
-  const Inputs in_f = need[0] ? float_inputs(cell.q, in) : in;  // the float rounding, when a float implementation runs
-  Answer truths[3];
+  Inputs rounded;  // the float rounding, when a float implementation runs (no copy of `in` otherwise)
+  if (need[0]) rounded = float_inputs(cell.q, in);
+  const Inputs& in_f = need[0] ? rounded : in;
+  // The truths in raw storage, each constructed in place by its call (an Answer zeroes its
+  // values on construction; in a campaign grading the classification alone that zeroing and
+  // a copy were a tenth of a case's time). Answer is trivially destructible.
+  struct Slot {
+    alignas(Answer) unsigned char bytes[sizeof(Answer)];
+    const Answer& get() const { return *std::launder(reinterpret_cast<const Answer*>(bytes)); }
+  } truths[3];
+  static_assert(std::is_trivially_destructible_v<Answer>);
   bool valid[3] = {need[0] && all_finite(in_f, qi.inputs.size()), need[1], need[2]};
   for (int k = 0; k < 3; ++k) {
     try {
@@ -227,9 +239,9 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
         const Inputs& x = k == 0 ? in_f : in;
         const int p = k == 0 ? 24 : (k == 1 ? 53 : 64);
         // the classification alone needs no rounded outputs: the classification oracle
-        truths[k] = spec.exact_truth             ? truth(cell.q, x, p)
-                    : spec.classification_only ? oracle_classify(cell.q, x)
-                                               : oracle_truth(cell.q, x, p);
+        ::new (truths[k].bytes) Answer(spec.exact_truth             ? truth(cell.q, x, p)
+                                       : spec.classification_only ? oracle_classify(cell.q, x)
+                                                                  : oracle_truth(cell.q, x, p));
       }
     } catch (const invalid_input&) {
       valid[k] = false;
@@ -247,14 +259,20 @@ void run_case(const Cell& cell, std::uint64_t seed, std::uint64_t i, const std::
       continue;
     }
     const Inputs& seen = f24 ? in_f : in;
-    Answer a;
-    try {
-      a = im->run(cell.q, seen);
-    } catch (const invalid_input&) {
+    bool refused = false;
+    const Answer a = [&]() -> Answer {  // (returned in place)
+      try {
+        return spec.classification_only && im->classify ? im->classify(cell.q, seen) : im->run(cell.q, seen);
+      } catch (const invalid_input&) {
+        refused = true;
+        return Answer{};
+      }
+    }();
+    if (refused) {
       ++st.refused;
       continue;
     }
-    const Answer& t = truths[slot(im->precision)];
+    const Answer& t = truths[slot(im->precision)].get();
     if (a.cls != t.cls) {
       ++(a.cls ? st.cls_fp : st.cls_fn);
       st.cls_example.offer(0, i, seen, a.cls, t.cls);
@@ -397,7 +415,7 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
             for (const Implementation* im : impls)
               stats.push_back(im->supports(cell.q) ? &local[t].cells[{cell.q, im->name, cell.family->name, cell.scale}]
                                                    : nullptr);
-          run_case(cell, spec.seed, i, impls, spec, stats);
+          run_case(cell, i, impls, spec, stats);
         }
       }
     } catch (...) {

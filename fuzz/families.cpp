@@ -365,23 +365,21 @@ const Family& family_by_name(Query q, const std::string& name) {
   throw std::invalid_argument("no family '" + name + "' for query " + info(q).name + " (families: " + names + ")");
 }
 
-// SplitMix64: the mixing function of a counter-based generator.
-static std::uint64_t mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
+std::uint64_t cell_key(std::uint64_t seed, Query q, const Family& f, int scale) {
+  using M = CaseStream;
+  std::uint64_t key = M::mix(seed);
+  key = M::mix(key ^ std::uint64_t(q.id));
+  for (char ch : f.name) key = M::mix(key ^ std::uint64_t(static_cast<unsigned char>(ch)));
+  return M::mix(key ^ std::uint64_t(std::int64_t(scale)));
+}
+
+Inputs make_case_of(std::uint64_t key, const Family& f, int scale, std::uint64_t i) {
+  CaseStream next{CaseStream::mix(key ^ i)};
+  return f.make(next, scale);
 }
 
 Inputs make_case(std::uint64_t seed, Query q, const Family& f, int scale, std::uint64_t i) {
-  std::uint64_t key = mix(seed);
-  key = mix(key ^ std::uint64_t(q.id));
-  for (char ch : f.name) key = mix(key ^ std::uint64_t(static_cast<unsigned char>(ch)));
-  key = mix(key ^ std::uint64_t(std::int64_t(scale)));
-  key = mix(key ^ i);
-  std::uint64_t counter = 0;
-  std::function<std::uint64_t()> next = [&]() { return mix(key + 0x632be59bd9b4e019ull * ++counter); };
-  return f.make(next, scale);
+  return make_case_of(cell_key(seed, q, f, scale), f, scale, i);
 }
 
 }  // namespace cdref::fuzz

@@ -9,7 +9,7 @@
 
 namespace cdref::fuzz::family {
 
-using Next = std::function<std::uint64_t()>;
+using Next = CaseStream;
 
 struct V {
   double x, y, z;

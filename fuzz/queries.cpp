@@ -70,9 +70,12 @@ Inputs float_inputs(Query q, const Inputs& in) {
 const std::vector<Implementation>& builtin_implementations() {
   static const std::vector<Implementation> impls = [] {
     std::vector<Implementation> v = {
-        {"book-float", 24, [](Query q, const Inputs& in) { return info(q).book(24, in); }},
-        {"book-double", 53, [](Query q, const Inputs& in) { return info(q).book(53, in); }},
-        {"book-long-double", 64, [](Query q, const Inputs& in) { return info(q).book(64, in); }},
+        {"book-float", 24, [](Query q, const Inputs& in) { return info(q).book(24, in); }, {},
+         [](Query q, const Inputs& in) { return info(q).book_classification(24, in); }},
+        {"book-double", 53, [](Query q, const Inputs& in) { return info(q).book(53, in); }, {},
+         [](Query q, const Inputs& in) { return info(q).book_classification(53, in); }},
+        {"book-long-double", 64, [](Query q, const Inputs& in) { return info(q).book(64, in); }, {},
+         [](Query q, const Inputs& in) { return info(q).book_classification(64, in); }},
         {"robust-float", 24, [](Query q, const Inputs& in) { return info(q).robust(24, in); }},
         {"robust-double", 53, [](Query q, const Inputs& in) { return info(q).robust(53, in); }},
         {"robust-long-double", 64, [](Query q, const Inputs& in) { return info(q).robust(64, in); }},
@@ -81,7 +84,8 @@ const std::vector<Implementation>& builtin_implementations() {
     for (const auto& tier : {std::pair<const char*, int>{"stable-float", 24}, {"stable-double", 53}}) {
       const int precision = tier.second;  // (clang 14 cannot capture a structured binding)
       Implementation im{tier.first, precision,
-                        [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }};
+                        [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }, {},
+                        [precision](Query q, const Inputs& in) { return info(q).stable_classification(precision, in); }};
       for (Query q : all_queries())
         if (info(q).stable) im.queries.push_back(q);
       if (!im.queries.empty()) v.push_back(std::move(im));

@@ -62,12 +62,27 @@ struct Answer {
 };
 
 // ---- families ----
+// The stream of random words a case is made from: word n of case key k is SplitMix64's
+// mixing function of k + n * 0x632be59bd9b4e019 (a counter-based generator: no state but the
+// counter, so a case is a pure function of its key).
+struct CaseStream {
+  std::uint64_t key = 0;
+  std::uint64_t counter = 0;
+  static constexpr std::uint64_t mix(std::uint64_t z) {
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  std::uint64_t operator()() { return mix(key + 0x632be59bd9b4e019ull * ++counter); }
+};
+
 struct Family {
   std::string name;
   std::string describe;
   std::vector<int> scales;  // the scale parameter k; its meaning is in `describe`
   // Makes case inputs from a stream of 64-bit random words.
-  std::function<Inputs(std::function<std::uint64_t()>& next, int scale)> make;
+  std::function<Inputs(CaseStream& next, int scale)> make;
 };
 
 // An output group of a query: 1 or 3 components (`name`, or `name_x`, `name_y`, `name_z`).
@@ -97,6 +112,9 @@ struct Implementation {
   int precision;       // 24 (float), 53 (double) or 64 (long double): the type whose ulps measure its error
   std::function<Answer(Query, const Inputs&)> run;  // gets double inputs, rounds them itself
   std::vector<Query> queries{};  // the queries it implements (empty: all)
+  // The classification and predicate alone, no values (a campaign with --outputs cls calls
+  // it); empty: run.
+  std::function<Answer(Query, const Inputs&)> classify{};
   bool supports(Query q) const {
     return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
   }
@@ -125,6 +143,10 @@ struct QueryInfo {
   // 53; empty for a query without one.
   std::function<Answer(int precision, const Inputs&)> stable;
   std::function<Answer(Exact, const Inputs&)> book_exact;  // the book at an exact type, values rounded to double
+  // The book's and the stable tier's full query asked for no outputs (its classification) and
+  // the predicate, no values: what a campaign grading the classification alone runs.
+  std::function<Answer(int precision, const Inputs&)> book_classification;
+  std::function<Answer(int precision, const Inputs&)> stable_classification;  // empty without a stable tier
   // The exact answer, each value rounded correctly to the precision.
   std::function<Answer(const Inputs&, int precision)> truth;
   // The same from the fast oracle (a filter with a rigorous error bound, the exact path when
@@ -177,6 +199,10 @@ const Family& family_by_name(Query q, const std::string& name);
 
 // Case i of cell (query, family, scale): a pure function of its arguments.
 Inputs make_case(std::uint64_t seed, Query q, const Family& f, int scale, std::uint64_t i);
+// The same in two steps, the cell's key computed once: make_case(seed, q, f, scale, i) ==
+// make_case_of(cell_key(seed, q, f, scale), f, scale, i).
+std::uint64_t cell_key(std::uint64_t seed, Query q, const Family& f, int scale);
+Inputs make_case_of(std::uint64_t key, const Family& f, int scale, std::uint64_t i);
 
 // ---- statistics ----
 // Errors are distances in ulps between a value and the correctly rounded truth: the

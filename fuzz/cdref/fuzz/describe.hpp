@@ -206,6 +206,11 @@ QueryInfo describe() {
     if (precision == 64) return book_at<Spec, long double, long double>(in, true);
     return book_at<Spec, double, double>(in, true);
   };
+  qi.book_classification = [](int precision, const Inputs& in) {
+    if (precision == 24) return book_at<Spec, float, float>(in, false);
+    if (precision == 64) return book_at<Spec, long double, long double>(in, false);
+    return book_at<Spec, double, double>(in, false);
+  };
   qi.robust = [](int precision, const Inputs& in) {
     if (precision == 24) return robust_at<Spec, float>(in);
     if (precision == 64) return robust_at<Spec, long double>(in);
@@ -214,6 +219,10 @@ QueryInfo describe() {
   if constexpr (has_stable<Spec>)
     qi.stable = [](int precision, const Inputs& in) {
       return precision == 24 ? stable_at<Spec, float>(in) : stable_at<Spec, double>(in);
+    };
+  if constexpr (has_stable<Spec>)
+    qi.stable_classification = [](int precision, const Inputs& in) {
+      return precision == 24 ? stable_at<Spec, float>(in, false) : stable_at<Spec, double>(in, false);
     };
   qi.book_exact = [](Exact t, const Inputs& in) {
     return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)

@@ -361,10 +361,10 @@ Answer robust_at(const Inputs& in) {
 
 // The stable tier (float/cdref/stable): the full query and its classification alone.
 template <class Spec, class F>
-Answer stable_at(const Inputs& in) {
+Answer stable_at(const Inputs& in, bool values = true) {
   const auto [a, b] = Spec::template make<F>(in);
   Answer r;
-  put<F>(r, Spec::stable(a, b, unsigned(want_all)), true);
+  put<F>(r, Spec::stable(a, b, values ? unsigned(want_all) : 0u), values);
   r.pred = Spec::stable_pred(a, b);
   return r;
 }
