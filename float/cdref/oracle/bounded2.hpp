@@ -78,8 +78,8 @@ class Bounded2 {
   double bound() const { return e_; }
   bool finite() const { return std::isfinite(hi_) && std::isfinite(lo_) && std::isfinite(e_); }
 
-  friend Bounded2 operator-(const Bounded2& a) { return make(-a.hi_, -a.lo_, a.e_); }
-  friend Bounded2 operator+(const Bounded2& a, const Bounded2& b) {
+  [[gnu::always_inline]] friend Bounded2 operator-(const Bounded2& a) { return make(-a.hi_, -a.lo_, a.e_); }
+  [[gnu::always_inline]] friend Bounded2 operator+(const Bounded2& a, const Bounded2& b) {
     double s, t, w1, r1, w, r2;
     two_sum(a.hi_, b.hi_, s, t);
     two_sum(t, a.lo_, w1, r1);  // the two roundings, each with its exact error
@@ -90,8 +90,8 @@ class Bounded2 {
     r.e_ = err == 0 ? 0 : err * grow;
     return r;
   }
-  friend Bounded2 operator-(const Bounded2& a, const Bounded2& b) { return a + (-b); }
-  friend Bounded2 operator*(const Bounded2& a, const Bounded2& b) {
+  [[gnu::always_inline]] friend Bounded2 operator-(const Bounded2& a, const Bounded2& b) { return a + (-b); }
+  [[gnu::always_inline]] friend Bounded2 operator*(const Bounded2& a, const Bounded2& b) {
     if (a.exact_zero() || b.exact_zero()) return Bounded2(0.0);  // exactly 0, whatever the other
     const double p = a.hi_ * b.hi_;
     const double pe = std::fma(a.hi_, b.hi_, -p);

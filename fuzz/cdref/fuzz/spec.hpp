@@ -25,6 +25,8 @@
 // checks and the cost report need and returns the type-erased QueryInfo.
 #pragma once
 
+#include <bit>
+
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
 #include <cdref/fuzz/campaign.hpp>
@@ -299,34 +301,43 @@ template <class Spec, class T>
 void require_finite(const Inputs& in) {
   if constexpr (!std::is_floating_point_v<T>) {
     static const std::size_t n = Spec::inputs().size();
-    for (std::size_t k = 0; k < n; ++k)
-      if (!std::isfinite(in[k]))
-        throw invalid_input(Spec::inputs()[k] + " is not finite (" +
-                            (std::isnan(in[k]) ? "nan" : (in[k] > 0 ? "inf" : "-inf")) + ")");
+    // one branch for all of them (an exponent field of all ones: infinite or NaN), the
+    // message built only when one is
+    constexpr std::uint64_t exponent = 0x7ffull << 52;
+    std::uint64_t bad = 0;
+    for (std::size_t k = 0; k < n; ++k) bad |= std::uint64_t((std::bit_cast<std::uint64_t>(in[k]) & exponent) == exponent);
+    if (bad) [[unlikely]]
+      for (std::size_t k = 0; k < n; ++k)
+        if (!std::isfinite(in[k]))
+          throw invalid_input(Spec::inputs()[k] + " is not finite (" +
+                              (std::isnan(in[k]) ? "nan" : (in[k] > 0 ? "inf" : "-inf")) + ")");
   }
 }
 
+// certified: T is exact or certifies every decision it takes (oracle::Bounded2 throws
+// oracle::uncertain rather than decide a sign it cannot), so the predicate is the full
+// query's classification (the two formulations agree exactly: tested) and is not evaluated again.
 template <class Spec, class T, class F>
-Answer book_at(const Inputs& in, bool values) {
+Answer book_at(const Inputs& in, bool values, bool certified = false) {
   require_finite<Spec, T>(in);
   const auto [a, b] = Spec::template make<T>(in);
   Answer r;
   put<F>(r, Spec::book(a, b, values ? unsigned(want_all) : 0u), values);
-  r.pred = Spec::book_pred(a, b);
+  r.pred = certified ? r.cls : bool(Spec::book_pred(a, b));
   return r;
 }
 
 // The truth's formulation at T (the book, unless the spec says otherwise).
 template <class Spec, class T, class F>
-Answer truth_at(const Inputs& in, bool values) {
+Answer truth_at(const Inputs& in, bool values, bool certified = false) {
   if constexpr (Spec::book_is_truth) {
-    return book_at<Spec, T, F>(in, values);
+    return book_at<Spec, T, F>(in, values, certified);
   } else {
     require_finite<Spec, T>(in);
     const auto [a, b] = Spec::template make<T>(in);
     Answer r;
     put<F>(r, Spec::truth(a, b, values ? unsigned(want_all) : 0u), values);
-    r.pred = Spec::truth_pred(a, b);
+    r.pred = certified ? r.cls : bool(Spec::truth_pred(a, b));
     return r;
   }
 }
@@ -390,8 +401,8 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   if (exact_used) *exact_used = false;
   if (precision != 64) {
     try {
-      return precision == 24 ? truth_at<Spec, oracle::Bounded2, float>(in, true)
-                             : truth_at<Spec, oracle::Bounded2, double>(in, true);
+      return precision == 24 ? truth_at<Spec, oracle::Bounded2, float>(in, true, true)
+                             : truth_at<Spec, oracle::Bounded2, double>(in, true, true);
     } catch (const oracle::uncertain&) {
     }
   }
