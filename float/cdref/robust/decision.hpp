@@ -93,8 +93,12 @@ constexpr F pow2c(int e) {
 // either end of the exponent range, and the inputs spanning at most a quarter of it
 // (2^((emax - emin)/4): 2^511 for double): after scaling, squares of the smallest would leave
 // the normal range (the fuzz targets found a certain-but-wrong double answer mixing 1 and
-// 2^753). The filters on the stable arithmetic answer only here too, so that where they
-// answer, the robust query's own value (in range, within u^2) is the same.
+// 2^753). The filters on the stable arithmetic (sphere-sphere, sphere-box, the sphere casts,
+// Algorithm 3.2) are rigorous wherever their own range tests pass and need no such test: every
+// entry point of those queries (the predicate, decide() and the full query) takes the filter's
+// answer where it decides, so they classify alike everywhere (a fuzz target found the filter
+// right and the double words wrong outside this range: decide() and the full query then
+// disagreed, when only decide() took the filter).
 template <class A, class B>
 bool in_certified_range(const A& a, const B& b) {
   using F = std::decay_t<decltype(detail::scalar_of(a))>;

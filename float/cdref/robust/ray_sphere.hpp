@@ -144,8 +144,9 @@
 //       and the subtraction by 8u |s| + u |l^| as in stable/ray_sphere.hpp; El doubles their
 //       sum for the second-order terms), so D is off by (2 |l^| + El) El + 4u |l^|^2 + 2u rho^2
 //       + 2u |D^| + 8 eta.
-// It answers only within in_certified_range (decision.hpp: where the double words' own value
-// is certified too, so that the two agree) and where S and A lie in [2^emin / u, max / 64] and T, rho^2 below max / 64 (then
+// decide(), hit() and cast() all take its answer where it decides, so the three classify alike
+// everywhere (the double words' own value is certified only within in_certified_range,
+// decision.hpp). It answers where S and A lie in [2^emin / u, max / 64] and T, rho^2 below max / 64 (then
 // the products below the normal range add the eta terms, and the quotient's underflow,
 // 1.5 eta / |r| <= 2u^2 |s|, hides in El), and only where those signs decide the formula; then
 // the answer is certain (the double words, u^2 accurate, give the same). Its band near tangency
@@ -597,7 +598,9 @@ Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast)
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
-  return detail::cast_local(s, r, sp, true, w);
+  Cast<F> c = detail::cast_local(s, r, sp, true, w);
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) c.hit = f > 0;  // as decide() and hit()
+  return c;
 }
 
 template <class F>
@@ -607,7 +610,9 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
-  return detail::cast_local(s, r, sp, false, w);
+  Cast<F> c = detail::cast_local(s, r, sp, false, w);
+  if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) c.hit = f > 0;  // as decide() and hit()
+  return c;
 }
 
 // The decision alone: the same computation as cast() (the range tests need the roots),
@@ -616,7 +621,7 @@ template <class F>
 bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return f > 0;
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
   return cast(seg, sp, 0).hit;
 }
 
@@ -624,7 +629,7 @@ template <class F>
 bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
-  if (const int f = in_certified_range(ray, sp) ? detail::cast_filter(ray.source, ray.direction, sp, false) : 0) return f > 0;
+  if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return f > 0;
   return cast(ray, sp, 0).hit;
 }
 
@@ -634,7 +639,7 @@ template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return Decision{f > 0, true};
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
@@ -645,7 +650,7 @@ template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
-  if (const int f = in_certified_range(ray, sp) ? detail::cast_filter(ray.source, ray.direction, sp, false) : 0) return Decision{f > 0, true};
+  if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return Decision{f > 0, true};
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};

@@ -50,8 +50,8 @@
 //     y = r x e_i with e_i the axis of the smallest |r_i| (compared exactly on the pairs; e_x
 //     when r = 0), as in the book; y's components are r's pairs, so n has 27u^2.
 //
-// decide_closest() and intersect() first try the sphere casts' filter (ray_sphere.hpp,
-// cast_filter on the segment): the segment meets the closed ball exactly when Algorithm 3.1's
+// decide_closest(), intersect() and proximity() first try the sphere casts' filter
+// (ray_sphere.hpp, cast_filter on the segment): the segment meets the closed ball exactly when Algorithm 3.1's
 // segment cast hits, so where the filter decides, its answer is this query's exact answer too
 // (and the double words below, u^2 accurate, give the same value).
 // decide_closest() otherwise: the book's intersect() at an exact type decides the sign of |x|^2 - rho^2
@@ -274,7 +274,7 @@ template <class F>
 bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return f > 0;
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
   return detail::seg_sph_solve(detail::seg_sph_local(seg, sp)).q.value <= F(0);
 }
 
@@ -283,7 +283,7 @@ template <class F>
 Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if (const int f = in_certified_range(seg, sp) ? detail::cast_filter(seg.source, seg.target, sp, true) : 0) return Decision{f > 0, true};
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
   const bool exact_zero = R.q.value == F(0) && R.q.err == F(0);
@@ -304,6 +304,7 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
   res.intersect = R.q.value <= F(0);
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) res.intersect = f > 0;  // as decide_closest()
   if (!(w & (want_closest | want_distance | want_depth | want_witnesses))) return res;
   // x, the closest point relative to the centre (scaled), as double words, and q = |x|^2 -
   // rho^2 (steps 3-5): an endpoint's exact pair and c_dw; the line's foot l and -D from

@@ -44,7 +44,9 @@
 // range) <= 5.02u W + 1.01u rho^2 + 1.01u^2 C, with W = sum_i |v_i| (|c_i| + |v_i|) and C =
 // c.c. Where m = W + rho^2 + C lies in [2^emin / u, max / 4] the sign of q is the sign of Q
 // whenever |q| > 8u (W + rho^2) + 16u^2 C (computed in F: the slack covers its roundings
-// and the eta terms, 10u^2 m), within in_certified_range (decision.hpp). Then the answer is certain without the expansions below.
+// and the eta terms, 10u^2 m). Then the answer is certain without the expansions below; decide(),
+// intersect() and proximity() all take it where it decides, so the three classify alike
+// (the expansions' own value is certified only within in_certified_range, decision.hpp).
 // decide() otherwise: outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
 // low terms scaled below the normal range; inside, intersect = true exactly. Never certain
 // when the first scaling lost bits (inputs 2^(emax+emin) apart). Exact touching (Q = 0 with
@@ -153,7 +155,7 @@ template <class F>
 bool intersect(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
-  if (const int f = in_certified_range(sp, box) ? detail::sphere_box_filter(sp, box) : 0) return f < 0;
+  if (const int f = detail::sphere_box_filter(sp, box)) return f < 0;
   const auto L = detail::sph_box_local(sp, box);
   return !L.outside || detail::sph_box_q(L).value <= F(0);
 }
@@ -162,7 +164,7 @@ template <class F>
 Decision decide(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
-  if (const int f = in_certified_range(sp, box) ? detail::sphere_box_filter(sp, box) : 0) return Decision{f < 0, true};
+  if (const int f = detail::sphere_box_filter(sp, box)) return Decision{f < 0, true};
   const auto L = detail::sph_box_local(sp, box);
   if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
   const detail::Bounded<F> q = detail::sph_box_q(L);
@@ -177,6 +179,7 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
   const auto L = detail::sph_box_local(sp, box);
   const F q = L.outside ? detail::sph_box_q(L).value : F(0);
   res.intersect = !L.outside || q <= F(0);
+  if (const int f = detail::sphere_box_filter(sp, box)) res.intersect = f < 0;  // as decide() and intersect()
   Vec3<F> x = sp.center;  // the closest point of the box, world coordinates
   for (int i = 0; i < 3; ++i)
     if (L.clamp[i] != 0) x[i] = box.center[i] + (L.clamp[i] > 0 ? box.extent[i] : F(-box.extent[i]));

@@ -42,8 +42,9 @@
 // q is (vv - ss) rounded once. Where m = fl(vv + ss) lies in [2^emin / u, max / 4] (no sum
 // overflows; 2 eta = 4u 2^emin <= 4u^2 m) the sign of q is the sign of Q whenever
 // |q| > fl(8u m), which covers (1 + u)(5.01u m + 4u^2 m) with the rounding of m and of the
-// product. It answers only within in_certified_range (decision.hpp), where the pairs' value
-// is certified too. Then the answer is certain without the scaled pairs below: every case but those
+// product. Then the answer is certain without the scaled pairs below (decide(), intersect()
+// and proximity() all take it where it decides, so the three classify alike everywhere: the
+// pairs' own value is certified only within in_certified_range, decision.hpp): every case but those
 // within about 8u (|v|^2 + s^2) of touching, at every range where the squares stay finite.
 // decide() otherwise: the sign of Q from dot2_cert (ray_sphere.hpp) with the scaling's absolute term:
 // certain iff |Q^| > 2u|Q^| + 288 u^2 S^ + K eta (K covers the subnormal low parts); if the
@@ -256,7 +257,7 @@ template <class F>
 bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
-  if (const int f = in_certified_range(a, b) ? detail::sphere_sphere_filter(a, b) : 0) return f < 0;
+  if (const int f = detail::sphere_sphere_filter(a, b)) return f < 0;
   const auto L = detail::sphere_sphere_local(a, b);
   return L.all_zero || detail::sphere_sphere_q(L).value <= F(0);
 }
@@ -265,7 +266,7 @@ template <class F>
 Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
-  if (const int f = in_certified_range(a, b) ? detail::sphere_sphere_filter(a, b) : 0) return Decision{f < 0, true};
+  if (const int f = detail::sphere_sphere_filter(a, b)) return Decision{f < 0, true};
   const auto L = detail::sphere_sphere_local(a, b);
   if (L.all_zero) return within_range(Decision{true, L.exact}, a, b);
   const detail::Bounded<F> q = detail::sphere_sphere_q(L);
@@ -281,6 +282,9 @@ Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want
   const detail::Bounded<F> qb = L.all_zero ? detail::Bounded<F>{F(0), F(0)} : detail::sphere_sphere_q(L);
   const F q = qb.value;
   res.intersect = q <= F(0);
+  // the classification of decide() and intersect(): the filter's where it decides (the same
+  // in the certified range; outside it, the filter's is the exact one)
+  if (const int f = detail::sphere_sphere_filter(a, b)) res.intersect = f < 0;
   if (!(w & (want_distance | want_depth | want_witnesses))) return res;
   if ((w & (want_distance | want_depth)) && q != F(0)) {
     // Q within (1 + 1/16)u of itself: dot2's where its bound says so (E <= 2.125u|Q^|, i.e.
