@@ -139,7 +139,7 @@
 //   a + b (segment):          10u (A + P) + 8 eta, A = fl(r.r);
 //   |t|^2 - rho^2 (segment):  8u (T + rho^2) + 8 eta, from t_i = fl(target_i - centre_i);
 //   D = rho^2 - |l^|^2, l^ = s - fl(b / a) r in F: the exact foot of the exact inputs is within
-//       El = 26u |s| + 2u |l^| + 4 eta of l^ (the projector on r's normal plane moves by
+//       El = 26u |s| + 2u |l^| + 4 eta of l^ (|s| and |l^| bounded above by sqrt(3) max_i |.|) (the projector on r's normal plane moves by
 //       sin(angle) <= u with r, so the inputs' rounding moves the foot by 2u |s|; the quotient
 //       and the subtraction by 8u |s| + u |l^| as in stable/ray_sphere.hpp; El doubles their
 //       sum for the second-order terms), so D is off by (2 |l^| + El) El + 4u |l^|^2 + 2u rho^2
@@ -567,26 +567,40 @@ int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, boo
   const F rho2 = sp.radius * sp.radius;
   const F big = std::numeric_limits<F>::max() / F(64), small = std::numeric_limits<F>::min() / u;
   if (!(S <= big && A <= big && T <= big && rho2 <= big && S >= small && A >= small)) return 0;
-  Tri t = tri_or(le0(Bounded<F>{B, F(8) * u * P + F(8) * eta}),
-                 le0(Bounded<F>{F(S - rho2), F(8) * u * (S + rho2) + F(8) * eta}));
-  if (t == Tri::no) return -1;
+  // Every quantity is computed and the signs combined without branches (the hit-or-miss
+  // outcome follows the data, and mispredicted early exits cost more than the few operations
+  // they saved). A condition "x >= 0" with bound e is certainly true where x > e and certainly
+  // false where x < -e; the cast hits iff (b <= 0 or |s|^2 <= rho^2) [and, for a segment,
+  // (a + b >= 0 or |t|^2 <= rho^2)] and D >= 0: yes = every conjunct certainly true, no = one
+  // certainly false (Tri's and/or, the same answers as the three-valued logic before).
+  const F eB = F(8) * u * P + F(8) * eta;
+  const F Sr = S - rho2, eS = F(8) * u * (S + rho2) + F(8) * eta;
+  int yes = int(B < -eB) | int(Sr < -eS);
+  int no = int(B > eB) & int(Sr > eS);
   if (bounded) {
-    t = tri_and(t, tri_or(ge0(Bounded<F>{F(A + B), F(10) * u * (A + P) + F(8) * eta}),
-                          le0(Bounded<F>{F(T - rho2), F(8) * u * (T + rho2) + F(8) * eta})));
-    if (t == Tri::no) return -1;
+    const F AB = A + B, eAB = F(10) * u * (A + P) + F(8) * eta;
+    const F Tr = T - rho2, eT = F(8) * u * (T + rho2) + F(8) * eta;
+    yes &= int(AB > eAB) | int(Tr < -eT);
+    no |= int(AB < -eAB) & int(Tr > eT);
   }
   const F k = B / A;
-  F L2(0);
+  F L2(0), lm(0), sm(0);
   for (int i = 0; i < 3; ++i) {
     const F l = s[i] - k * r[i];
     L2 += l * l;
+    lm = std::max(lm, fabs(l));
+    sm = std::max(sm, fabs(s[i]));
   }
   const F D = rho2 - L2;
-  const F nl = std::sqrt(L2);
-  const F El = F(26) * u * std::sqrt(S) + F(2) * u * nl + F(4) * eta;
+  // |l^| and |s| enter the bound only through upper bounds: sqrt(3) times the largest
+  // component (1.7321 > sqrt(3) after its rounding) instead of two square roots, a bound at
+  // most sqrt(3) wider
+  const F nl = F(1.7321) * lm;
+  const F El = F(26) * u * (F(1.7321) * sm) + F(2) * u * nl + F(4) * eta;
   const F ED = (F(2) * nl + El) * El + F(4) * u * L2 + F(2) * u * rho2 + F(2) * u * fabs(D) + F(8) * eta;
-  t = tri_and(t, ge0(Bounded<F>{D, ED}));
-  return t == Tri::yes ? 1 : (t == Tri::no ? -1 : 0);
+  yes &= int(D > ED);
+  no |= int(D < -ED);
+  return yes - no;  // (never both: yes needs every conjunct certainly true)
 }
 
 }  // namespace detail
