@@ -362,7 +362,8 @@ struct ExactData {
     add(N[q], D[p / 2], true);
     const int sd = D[p / 2].sign() * D[q / 2].sign();
     if (inexact == 0) return S.sign() * sd;
-    const W margin = W(inexact) * std::numeric_limits<W>::denorm_min();
+    constexpr W tiny = std::numeric_limits<W>::denorm_min();  // (constexpr: see abs_term below)
+    const W margin = W(inexact) * tiny;
     Expansion<W, 26> up = S, down = S;
     up.grow(-margin);
     down.grow(margin);
@@ -398,7 +399,7 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
   }
   // Step 5b: sign(lambda_p - lambda_q), by the filter on q0, else exactly.
   const F eight_u = std::numeric_limits<F>::epsilon() * F(4);
-  const F abs_term = F(4) * std::numeric_limits<F>::denorm_min();
+  constexpr F abs_term = F(4) * std::numeric_limits<F>::denorm_min();  // constexpr: g++ with -frounding-math loads it at run time otherwise
   std::optional<ExactData<F>> exact;  // built on the first comparison the filter leaves open
   bool certain = true;
   auto compare = [&](int p, int q) {

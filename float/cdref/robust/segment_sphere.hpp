@@ -220,7 +220,8 @@ SegSphSolved<F> seg_sph_solve(const SegSphLocal<F>& L) {
   }
   const Bounded<F> q = dot2_cert({out.x[0], out.x[1], out.x[2], L.rho}, {out.x[0], out.x[1], out.x[2], F(-L.rho)});
   const F u = unit_roundoff<F>();
-  const F ex = F(4.1) * u * nx + F(512) * u * u + F(16) * std::numeric_limits<F>::denorm_min();
+  constexpr F eta16 = F(16) * std::numeric_limits<F>::denorm_min();  // constexpr: not loaded at run time
+  const F ex = F(4.1) * u * nx + F(512) * u * u + eta16;
   out.q = {q.value, F(2) * (q.err + ex * (F(2) * nx + ex))};
   return out;
 }
