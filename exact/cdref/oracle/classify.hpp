@@ -561,36 +561,11 @@ int segment_sphere_logic(const P& p) {
   return ge0(p.sigma());
 }
 
-// The filter stage of the same decision without branches on the data (whether a case hits
-// follows the data, and a mispredicted early exit costs more than the signs it skips): every
-// sign is computed and the three-valued logic assembled from "certainly true" and "certainly
-// false" bits. hit = sigma >= 0 and (s.r <= 0 or |s|^2 <= rho^2) [and (t.r >= 0 or |t|^2 <=
-// rho^2)], or |s|^2 <= rho^2 for a segment of length 0: a conjunction, so one conjunct certainly
-// false decides it (hit_sphere_logic stops at an unknown sigma instead; both are exact where
-// they decide).
-inline int hit_sphere_filter(const SphereFilter& p, bool bounded) {
-  // for a sign g (-1, 0, 1 or unknown = 2): "g <= 0" is certainly true for g <= 0 and
-  // certainly false for g = 1; "g >= 0" certainly true for g in {0, 1}, false for g = -1
-  const auto le_yes = [](int g) { return int(g <= 0); };
-  const auto le_no = [](int g) { return int(g == 1); };
-  const auto ge_yes = [](int g) { return int(unsigned(g) <= 1u); };
-  const auto ge_no = [](int g) { return int(g == -1); };
-  const int sig = p.sigma(), sr = p.sr(), sin = p.ss_rho2();
-  int yes = ge_yes(sig) & (le_yes(sr) | le_yes(sin));
-  int no = ge_no(sig) | (le_no(sr) & le_no(sin));
-  if (bounded) {
-    const int tr = p.tr(), tin = p.tt_rho2();
-    yes &= ge_yes(tr) | le_yes(tin);
-    no |= ge_no(tr) & le_no(tin);
-  }
-  if (p.rzero) yes = le_yes(sin), no = le_no(sin);
-  return 2 - 2 * no - yes;  // 1 (hit), 0 (miss) or unknown (2); never both bits
-}
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
-  return hit_sphere_filter(SphereFilter(seg.source, seg.target, sp, true), true);
+  return hit_sphere_logic(SphereFilter(seg.source, seg.target, sp, true), true);
 }
 inline int filter(const Ray<double>& ray, const Sphere<double>& sp) {
-  return hit_sphere_filter(SphereFilter(ray.source, ray.direction, sp, false), false);
+  return hit_sphere_logic(SphereFilter(ray.source, ray.direction, sp, false), false);
 }
 struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp, alg32) {
