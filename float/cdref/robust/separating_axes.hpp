@@ -12,7 +12,10 @@
 // crossing parameters, a squared distance against rho^2) is certain when the double word's
 // sign is certain; |x|, min and max need no decision (they are 1-Lipschitz).
 //
-// Certificate: decide_separation() (decide(), where the pair has no other; decide_cast() for
+// Certificate: at double every entry point first runs the oracle's first stage
+// (oracle/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
+// solid's at an exact type; decide_separation(), the predicate and the full query all take it.
+// Otherwise decide_separation() (decide(), where the pair has no other; decide_cast() for
 // the casts, which classify as cast() does) is certain when the double-word evaluation completed, every
 // decision certain: then the classification (and the first separating axis, the entering
 // face) equals the solid's at an exact type. When a comparison is too close to call, the same
@@ -27,7 +30,9 @@
 // the full query's values come from F and its classification is the certain one.
 #pragma once
 
+#include <cdref/oracle/sat_filter.hpp>
 #include <cdref/solid/obb.hpp>
+#include <type_traits>
 
 #include "words.hpp"
 
@@ -50,13 +55,33 @@ std::pair<Separation<F>, bool> separation(const A& a, const B& b) {
 
 }  // namespace detail
 
+namespace detail {
+// At double, the oracle's first stage (oracle/sat_filter.hpp: every candidate axis in double
+// against one static bound; for a sphere, two certificates from a point of the box) before the
+// double words: 1 (they meet), 0 (disjoint) or 2 (undecided; always at float and long double).
+// Where it decides, its answer is the solid's at an exact type, so every entry point takes it
+// (decide(), the predicate and the full query's classification stay alike).
+template <class F, class A, class B>
+int first_stage(const A& a, const B& b) {
+  if constexpr (std::is_same_v<F, double>) return oracle::sat::filter(a, b);
+  else return oracle::sat::unknown;
+}
+template <class F>
+int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
+  if constexpr (std::is_same_v<F, double>) return oracle::sphere_obb::filter(s, b);
+  else return oracle::sat::unknown;
+}
+}  // namespace detail
+
 // ---- separating axes ----
 #define CDREF_ROBUST_SEPARATE(A, B, NA, NB)                                                 \
   template <class F>                                                                        \
   Separation<F> separate(const A<F>& a, const B<F>& b) {                                    \
     check(a, NA);                                                                           \
     check(b, NB);                                                                           \
-    return detail::separation<F>(a, b).first;                                               \
+    Separation<F> s = detail::separation<F>(a, b).first;                                    \
+    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) s.intersect = f != 0; \
+    return s;                                                                               \
   }                                                                                         \
   template <class F>                                                                        \
   bool intersect(const A<F>& a, const B<F>& b) {                                            \
@@ -66,6 +91,7 @@ std::pair<Separation<F>, bool> separation(const A& a, const B& b) {
   Decision decide_separation(const A<F>& a, const B<F>& b) {                                \
     check(a, NA);                                                                           \
     check(b, NB);                                                                           \
+    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
     const auto [s, certain] = detail::separation<F>(a, b);                                  \
     return {s.intersect, certain};                                                          \
   }
@@ -120,12 +146,16 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
   Cast<F> cast(const A<F>& a, const OrientedBox<F>& b, unsigned w = want_cast) { \
     check(a, NA);                                                             \
     check(b, "oriented box");                                                 \
-    return detail::cast_eval(a, b, w).first;                                  \
+    Cast<F> c = detail::cast_eval(a, b, w).first;                             \
+    /* the cast hits exactly when the segment or ray meets the solid */       \
+    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
+    return c;                                                                 \
   }                                                                           \
   template <class F>                                                          \
   Decision decide_cast(const A<F>& a, const OrientedBox<F>& b) {              \
     check(a, NA);                                                             \
     check(b, "oriented box");                                                 \
+    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
     return detail::cast_eval(a, b, want_cast).second;                         \
   }                                                                           \
   template <class F>                                                          \
@@ -140,12 +170,15 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w = want_proximity) {
   check(s, "sphere");
   check(b, "oriented box");
-  return detail::proximity_eval(s, b, w).first;
+  Proximity<F> p = detail::proximity_eval(s, b, w).first;
+  if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
+  return p;
 }
 template <class F>
 Decision decide(const Sphere<F>& s, const OrientedBox<F>& b) {
   check(s, "sphere");
   check(b, "oriented box");
+  if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) return {f != 0, true};
   return detail::proximity_eval(s, b, want_proximity).second;
 }
 template <class F>

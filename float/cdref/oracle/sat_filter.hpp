@@ -1,0 +1,352 @@
+// cdref/oracle/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
+// every candidate separating axis of Theorem 3.1 evaluated in double against one static error
+// bound for the whole query, and for a sphere and an oriented box two certificates from one
+// point of the box. Plain double arithmetic on the query's inputs, so that both the oracle
+// (exact/cdref/oracle/separating_axes.hpp: then the double words, then CGAL::Gmpq) and the
+// robust tier's certified decisions (robust/separating_axes.hpp, at double) run it first:
+// where it decides, its answer is the solid's at an exact type.
+//
+// ---- Stage 1 for separating axes: one static bound ----------------------------------------
+// Coordinates are taken relative to the box B's centre: X = fl(p - c_B) for every point of A
+// (one rounding, |X - X~| <= u |X~| / (1 - u)). Candidate axes L, in the book's order (A's
+// faces, B's faces, A's edges x B's edges), are polynomials in exact inputs (box axes, e_i) and
+// in such leaves: an oriented box's face normal a_j x a_k (2 roundings a component), a
+// triangle's normal e_0 x (X_2 - X_0) and an edge cross e x g with e a difference of leaves
+// (at most 4 roundings a component, counted along the evaluation tree as in classify.hpp:
+// K(leaf) <= 1, K(a +- b) = max + 1, K(a b) = K(a) + K(b) + 1). On each axis the test is
+//   s = lo_A - r_B > 0  or  s' = -r_B - hi_A > 0   (B projects onto [-r_B, r_B]),
+// with lo_A, hi_A the extremes of X . L (points), X_A . L -+ r_A (a box A), r = sum_k
+// h_k |g_k . L|. Every s is then a sum of monomials each carrying at most K = 12 factors
+// (1 + delta) (point term: 1 + 4 + 1 + 2 + 2; radius term: 4 + 1 + 2 + 1 + 2 + 2), so with
+// s+ the sum of the monomials' absolute values |s~ - s| <= gamma_12 s+ (Higham 3.1, 3.3;
+// min, max and |.| are 1-Lipschitz). And s+ <= (M_X + G_A + G_B) Lambda, where
+//   Lambda >= max over candidate axes and components of L+_c (the component's own absolute
+//            expansion): 1 for e_i; 2 m_A^2 for a_j x a_k (m_A = the largest |a_k,c|), and so
+//            on for each kind below, with |e_c| <= 2 m_X for a difference of two points;
+//   M_X    =  the largest |X|_1 over A's points (A's centre for a box A);
+//   G      =  sum_k h_k |g_k|_1 over a box's generators (0 for points).
+// The bound itself is computed in double from nonnegative terms (a few roundings each), so
+// 13u (1 + 32u) (M_X + G_A + G_B) Lambda >= gamma_12 s+. Underflow: each of the at most 96
+// operations of one s that underflows is off by at most 2^-1075: 96 * 2^-1074 more. No
+// intermediate exceeds s+ (up to a factor 1 + 32u), so (M_X + G_A + G_B) Lambda <= 2^1000
+// rules out overflow (a NaN or infinite input, or a magnitude beyond it, leaves the query to
+// stage 2); a non-finite projection is never dropped by a min or a max.
+// An axis that is exactly zero has s = 0: never certain to separate, as it should be (the
+// book skips it); stage 1 proves an edge cross exactly zero when the edge and the box axis are
+// exact inputs (or exact differences: their Two-Sum errors vanish) and both products of each
+// component agree exactly (Two-Product by fma), and then skips it as certain.
+// The ray's projection is half-infinite on the side where d . L > 0; d . L is exact 0 on the
+// ray's own edge crosses (L = d x g); on a face of B its sign is certain when |d.L~| exceeds
+// 7u |d|_1 Lambda (d exact, L with <= 2 roundings, dot product 3 more).
+// A result is certain when an axis certainly separates and every earlier axis certainly does
+// not (then its index is certain too), or when no axis can separate.
+#pragma once
+
+#include <algorithm>
+#include <cdref/cdref.hpp>
+#include <cmath>
+
+namespace cdref::oracle {
+
+namespace sat {
+
+inline constexpr int unknown = 2;
+inline constexpr double u = 0x1p-53;
+
+// A in coordinates relative to B's centre.
+struct Shape {
+  enum Kind { points, zonotope, ray };
+  Kind kind = points;
+  int n = 0;
+  double X[3][3] = {};  // points, or the zonotope's centre, or the ray's source
+  double g[3][3] = {};  // zonotope generators (exact inputs), or the ray's direction
+  double h[3] = {};
+  int faces = 0, edges = 0;
+  double face[3][3] = {};
+  double edge[3][3] = {};
+  bool edge_exact[3] = {};  // the edge equals the exact difference of inputs (or is an input)
+  double mx = 0;            // M_X
+  double G = 0;
+  double lambda_face = 0;   // bound on L+_c over A's faces
+  double medge = 0;         // bound on |e_c| over A's edges (the leaves' expansion)
+};
+struct BoxB {
+  double g[3][3] = {};
+  double h[3] = {};
+  double face[3][3] = {};
+  double G = 0, mb = 0, lambda_face = 0;
+};
+
+inline void cross(const double* a, const double* b, double* r) {
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+inline double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm1(const double* a) { return std::fabs(a[0]) + std::fabs(a[1]) + std::fabs(a[2]); }
+inline double maxabs(const double* a) { return std::max(std::fabs(a[0]), std::max(std::fabs(a[1]), std::fabs(a[2]))); }
+// x - y, and whether it is exact (its Two-Sum error is zero)
+inline double diff(double x, double y, bool& exact) {
+  const double s = x - y, bv = s - x, av = s - bv;
+  exact = exact && ((x - av) + (-y - bv)) == 0;
+  return s;
+}
+// a x b is exactly zero (a, b exact values)
+inline bool cross_exactly_zero(const double* a, const double* b) {
+  for (int c = 0; c < 3; ++c) {
+    const int i = (c + 1) % 3, j = (c + 2) % 3;
+    const double p = a[i] * b[j], q = a[j] * b[i];
+    if (p != q || std::fma(a[i], b[j], -p) != std::fma(a[j], b[i], -q)) return false;
+  }
+  return true;
+}
+
+inline BoxB box_b(const Box<double>& b) {
+  BoxB r;
+  for (int k = 0; k < 3; ++k) {
+    r.g[k][k] = r.face[k][k] = 1;
+    r.h[k] = b.extent[k];
+    r.G += b.extent[k];
+  }
+  r.mb = 1;
+  r.lambda_face = 1;
+  return r;
+}
+inline BoxB box_b(const OrientedBox<double>& b) {
+  BoxB r;
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 3; ++c) r.g[k][c] = b.axis[k][c];
+    r.h[k] = b.extent[k];
+    r.G += b.extent[k] * norm1(r.g[k]);
+    r.mb = std::max(r.mb, maxabs(r.g[k]));
+  }
+  for (int k = 0; k < 3; ++k) cross(r.g[(k + 1) % 3], r.g[(k + 2) % 3], r.face[k]);
+  r.lambda_face = 2 * r.mb * r.mb;
+  return r;
+}
+
+inline void rel(const Vec3<double>& p, const Vec3<double>& c, double* X, bool& exact) {
+  for (int i = 0; i < 3; ++i) X[i] = diff(p[i], c[i], exact);
+}
+
+inline Shape shape_a(const Segment<double>& s, const Vec3<double>& c) {
+  Shape a;
+  a.kind = Shape::points;
+  a.n = 2;
+  bool ex = true;
+  rel(s.source, c, a.X[0], ex);
+  rel(s.target, c, a.X[1], ex);
+  a.edges = 1;
+  for (int i = 0; i < 3; ++i) a.edge[0][i] = diff(a.X[1][i], a.X[0][i], ex);
+  a.edge_exact[0] = ex;
+  a.mx = std::max(norm1(a.X[0]), norm1(a.X[1]));
+  a.medge = 2 * std::max(maxabs(a.X[0]), maxabs(a.X[1]));
+  return a;
+}
+inline Shape shape_a(const Ray<double>& r, const Vec3<double>& c) {
+  Shape a;
+  a.kind = Shape::ray;
+  a.n = 1;
+  bool ex = true;
+  rel(r.source, c, a.X[0], ex);
+  for (int i = 0; i < 3; ++i) a.g[0][i] = a.edge[0][i] = r.direction[i];
+  a.edges = 1;
+  a.edge_exact[0] = true;
+  a.mx = norm1(a.X[0]);
+  a.medge = maxabs(a.g[0]);
+  return a;
+}
+inline Shape shape_a(const Triangle<double>& t, const Vec3<double>& c) {
+  Shape a;
+  a.kind = Shape::points;
+  a.n = 3;
+  bool ex = true;
+  for (int k = 0; k < 3; ++k) rel(t.vertex[k], c, a.X[k], ex);
+  a.edges = 3;
+  for (int k = 0; k < 3; ++k) {
+    bool e = ex;
+    for (int i = 0; i < 3; ++i) a.edge[k][i] = diff(a.X[(k + 1) % 3][i], a.X[k][i], e);
+    a.edge_exact[k] = e;
+  }
+  double e2[3];
+  for (int i = 0; i < 3; ++i) e2[i] = a.X[2][i] - a.X[0][i];
+  a.faces = 1;
+  cross(a.edge[0], e2, a.face[0]);
+  double m = 0;
+  for (int k = 0; k < 3; ++k) {
+    a.mx = std::max(a.mx, norm1(a.X[k]));
+    m = std::max(m, maxabs(a.X[k]));
+  }
+  a.medge = 2 * m;
+  a.lambda_face = 2 * a.medge * a.medge;
+  return a;
+}
+inline Shape shape_a(const OrientedBox<double>& b, const Vec3<double>& c) {
+  Shape a;
+  a.kind = Shape::zonotope;
+  a.n = 3;
+  bool ex = true;
+  rel(b.center, c, a.X[0], ex);
+  double m = 0;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) a.g[k][i] = a.edge[k][i] = b.axis[k][i];
+    a.h[k] = b.extent[k];
+    a.G += b.extent[k] * norm1(a.g[k]);
+    a.edge_exact[k] = true;
+    m = std::max(m, maxabs(a.g[k]));
+  }
+  a.faces = a.edges = 3;
+  for (int k = 0; k < 3; ++k) cross(a.g[(k + 1) % 3], a.g[(k + 2) % 3], a.face[k]);
+  a.mx = norm1(a.X[0]);
+  a.medge = m;
+  a.lambda_face = 2 * m * m;
+  return a;
+}
+
+// 1: separated on L, 0: not, unknown. dir_bound: the bound on the ray's d . L (negative on
+// the ray's own edge crosses, where d . L = 0 exactly).
+inline int axis_test(const Shape& a, const BoxB& b, const double* L, double bound, double dir_bound) {
+  double rb = 0;
+  for (int k = 0; k < 3; ++k) rb += b.h[k] * std::fabs(dot(b.g[k], L));
+  double lo, hi;
+  bool lo_inf = false, hi_inf = false;
+  switch (a.kind) {
+    case Shape::points: {
+      lo = hi = dot(a.X[0], L);
+      for (int k = 1; k < a.n; ++k) {
+        const double x = dot(a.X[k], L);
+        if (!std::isfinite(x)) return unknown;  // std::min and std::max would drop a NaN
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+      break;
+    }
+    case Shape::zonotope: {
+      double ra = 0;
+      for (int k = 0; k < 3; ++k) ra += a.h[k] * std::fabs(dot(a.g[k], L));
+      const double c = dot(a.X[0], L);
+      lo = c - ra;
+      hi = c + ra;
+      break;
+    }
+    default: {  // ray: half-infinite where d . L > 0
+      lo = hi = dot(a.X[0], L);
+      if (dir_bound >= 0) {
+        const double d = dot(a.g[0], L);
+        if (d != 0 && !(std::fabs(d) > dir_bound)) return unknown;  // d . L = 0 is exact only for d~ = 0 and exact L
+        if (d > 0) hi_inf = true;
+        if (d < 0) lo_inf = true;
+      }
+      break;
+    }
+  }
+  if (!std::isfinite(rb) || !std::isfinite(lo) || !std::isfinite(hi)) return unknown;
+  if ((!lo_inf && lo - rb > bound) || (!hi_inf && -rb - hi > bound)) return 1;
+  if ((lo_inf || lo - rb < -bound) && (hi_inf || -rb - hi < -bound)) return 0;
+  return unknown;
+}
+
+// Stage 1: 1 intersect, 0 disjoint, or unknown; *axis the first separating axis when it is
+// certain too (else -2), -1 when they intersect.
+template <class A, class B>
+int filter(const A& a0, const B& b0, int* axis = nullptr) {
+  const BoxB b = box_b(b0);
+  const Shape a = shape_a(a0, b0.center);
+  const double lambda = std::max({a.lambda_face, b.lambda_face, 2 * a.medge * b.mb});
+  const double mag = (a.mx + a.G + b.G) * lambda;  // >= s+ for every axis, up to (1 + 32u)
+  const double bound = 13 * u * (1 + 32 * u) * mag + 96 * 0x1p-1074;
+  if (axis) *axis = -2;
+  if (!(mag <= 0x1p1000)) return unknown;  // every intermediate is below s+: no overflow
+  // the ray's d . L on B's faces: d exact, L with at most 2 roundings, the dot product 3 more
+  const double dir_bound =
+      a.kind == Shape::ray ? 6 * u * (1 + 32 * u) * (norm1(a.g[0]) * b.lambda_face) + 16 * 0x1p-1074 : -1;
+  int index = 0;
+  bool known_so_far = true, any_unknown = false;
+  auto visit = [&](int t) {
+    const int at = index++;
+    if (t == 1) {
+      if (axis && known_so_far) *axis = at;
+      return true;
+    }
+    if (t == unknown) known_so_far = false, any_unknown = true;
+    return false;
+  };
+  for (int k = 0; k < a.faces; ++k)
+    if (visit(axis_test(a, b, a.face[k], bound, dir_bound))) return 0;
+  for (int k = 0; k < 3; ++k)
+    if (visit(axis_test(a, b, b.face[k], bound, dir_bound))) return 0;
+  for (int i = 0; i < a.edges; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double L[3];
+      cross(a.edge[i], b.g[j], L);
+      if (L[0] == 0 && L[1] == 0 && L[2] == 0 && a.edge_exact[i] && cross_exactly_zero(a.edge[i], b.g[j])) {
+        visit(0);  // exactly zero: never separates
+        continue;
+      }
+      if (visit(axis_test(a, b, L, bound, a.kind == Shape::ray ? -1 : dir_bound))) return 0;
+    }
+  if (any_unknown) return unknown;
+  if (axis) *axis = -1;
+  return 1;
+}
+
+}  // namespace sat
+
+namespace sphere_obb {
+inline constexpr int unknown = sat::unknown;
+// Stage 1: two certificates from one candidate point of the box, with static error bounds.
+// With d = fl(q - c) (one rounding), p_i = a_i . d~ and g_i = clamp(p_i, -h_i, h_i) (exact
+// doubles with |g_i| <= h_i), the point x = c + sum_i g_i a_i lies in the box exactly (its
+// coordinates are g_i / h_i in [-1, 1]); for a box orthonormal to rounding it is the book's
+// closest point. Let w = q - x = d - sum_i g_i a_i, computed as w~ (K = 4 roundings a
+// component against W+_c = |d_c| + sum_i |g_i a_ic|: |w~_c - w_c| <= gamma_4 W+_c <= e_c =
+// 5u W+~_c (1 + 16u), W+~ its computed value).
+//   intersect  |w|^2 <= rho^2 certainly: |w|^2 <= |w~|^2 + sum_c e_c (2 |w~_c| + e_c), and
+//              fl(|w~|^2) carries gamma_3 of its nonnegative sum; rho^2 >= fl(rho rho)(1 - u).
+//   disjoint   v = w~ (any vector is an axis): the sphere lies beyond the box along v when
+//              G = v . d - sum_i h_i |v . a_i| > rho |v| (v . p <= v . c + sum_i h_i |v . a_i|
+//              for every p of the box, v . (q + rho s) >= v . q - rho |v| for |s| <= 1).
+//              G~ carries at most 7 roundings on each monomial (v exact, d a leaf), so
+//              |G~ - G| <= gamma_7 G+ with G+ = |v| . |d| + sum_i h_i |v| . |a_i|; then
+//              G >= G_lo = G~ - 8u G+ > 0 and G_lo^2 > rho^2 |v|^2 decide it (the squares
+//              compared with 8u of margin on each side).
+// Every bound is grown by (1 + 16u) for its own rounding, and 64 * 2^-1074 covers roundings
+// that underflow; a non-finite value anywhere leaves the case to stage 2.
+inline int filter(const Sphere<double>& s, const OrientedBox<double>& b) {
+  constexpr double u = sat::u, grow = 1 + 16 * sat::u, eta = 64 * 0x1p-1074;
+  double d[3], w[3], e2 = 0, ww = 0, Wd = 0;
+  for (int c = 0; c < 3; ++c) d[c] = s.center[c] - b.center[c];
+  double g[3];
+  for (int i = 0; i < 3; ++i) {
+    const double p = b.axis[i][0] * d[0] + b.axis[i][1] * d[1] + b.axis[i][2] * d[2];
+    g[i] = std::max(-b.extent[i], std::min(b.extent[i], p));
+    if (!std::isfinite(p)) return unknown;
+  }
+  for (int c = 0; c < 3; ++c) {
+    w[c] = d[c] - (g[0] * b.axis[0][c] + g[1] * b.axis[1][c] + g[2] * b.axis[2][c]);
+    const double Wp = std::fabs(d[c]) + std::fabs(g[0] * b.axis[0][c]) + std::fabs(g[1] * b.axis[1][c]) +
+                      std::fabs(g[2] * b.axis[2][c]);
+    const double e = 5 * u * grow * Wp;  // gamma_4 W+ with room for its own rounding
+    e2 += e * (2 * std::fabs(w[c]) + e);
+    ww += w[c] * w[c];
+    Wd = std::max(Wd, Wp);
+  }
+  const double rr = s.radius * s.radius;
+  if (!std::isfinite(ww) || !std::isfinite(e2) || !std::isfinite(rr)) return unknown;
+  if ((ww * (1 + 4 * u) + e2 * grow + eta) * grow < rr * (1 - 2 * u)) return 1;
+  // disjoint along v = w~
+  double G = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+  double Gp = std::fabs(w[0] * d[0]) + std::fabs(w[1] * d[1]) + std::fabs(w[2] * d[2]);
+  for (int i = 0; i < 3; ++i) {
+    const double va = w[0] * b.axis[i][0] + w[1] * b.axis[i][1] + w[2] * b.axis[i][2];
+    G -= b.extent[i] * std::fabs(va);
+    Gp += b.extent[i] * (std::fabs(w[0] * b.axis[i][0]) + std::fabs(w[1] * b.axis[i][1]) + std::fabs(w[2] * b.axis[i][2]));
+  }
+  const double Glo = G - (8 * u * Gp * grow + eta);  // gamma_7 G+ with room
+  if (!std::isfinite(Glo)) return unknown;
+  if (Glo > 0 && Glo * Glo * (1 - 8 * u) > (rr * ww) * (1 + 8 * u) + eta) return 0;
+  return unknown;
+}
+}  // namespace sphere_obb
+
+}  // namespace cdref::oracle
