@@ -9,8 +9,13 @@
 //                        one more and the dot product's two sums two more: |d~ - d| <=
 //                        gamma_6 p <= 7u p~ (the rounding of p~ itself is within the margin)
 //                        while nothing overflows; an underflowing product is off by at most
-//                        the smallest subnormal, and there are at most 12 such roundings. So
-//                        |d~| > 8u p~ + 16 denorm_min decides the sign. Otherwise (near a
+//                        half the smallest subnormal eta. The three final products' are off by
+//                        that much; the cross product's six are multiplied afterwards by a
+//                        component of a, so their error reaches |a_i| eta for component i (the
+//                        fuzz target found a frame with two equal axes of size 2^1020 and a
+//                        subnormal third, whose determinant 0 the bound 16 eta alone called
+//                        negative). So |d~| > 8u p~ + 16 eta + 2 eta (|a_0| + |a_1| + |a_2|)
+//                        decides the sign (each eta |a_i| is exact or rounds below eta). Otherwise (near a
 //                        degenerate frame, or p~ not finite) the inputs are converted exactly
 //                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
 //                        exactly;
@@ -84,7 +89,9 @@ int det3_sign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
       p += aa[i] * (bb[j] * cc[k] + bb[k] * cc[j]);
     }
     if (number_traits<T>::is_finite(p) && number_traits<T>::is_finite(d)) {
-      const T bound = number_traits<T>::unit_roundoff() * T(8) * p + number_traits<T>::denorm_min() * T(16);
+      const T eta = number_traits<T>::denorm_min();
+      const T bound = number_traits<T>::unit_roundoff() * T(8) * p + eta * T(16) +
+                      T(2) * (eta * aa[0] + eta * aa[1] + eta * aa[2]);
       if (d > bound) return 1;
       if (d < T(-bound)) return -1;
     }
