@@ -873,28 +873,16 @@ int at_stage(Stage st, const A& a, const B& b, Tag... tag) {
 // the exact answer). Where it is certain its answer is exact, and it decides every case but
 // those within about u^2 of the boundary (2^-52 from tangency costs it 0.17 us where the
 // expansions took 1.1 us); it reports as the expansion stage, the second.
-inline int double_word(const Sphere<double>& a, const Sphere<double>& b) {
-  const robust::Decision d = robust::decide(a, b);
-  return d.certain ? int(d.value) : unknown;
-}
-inline int double_word(const Segment<double>& s, const Sphere<double>& b) {
-  const robust::Decision d = robust::decide(s, b);
-  return d.certain ? int(d.value) : unknown;
-}
-inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
-  const robust::Decision d = robust::decide(s, b);
-  return d.certain ? int(d.value) : unknown;
-}
+inline int certain_or_unknown(robust::Decision d) { return d.certain ? int(d.value) : unknown; }
+inline int double_word(const Sphere<double>& a, const Sphere<double>& b) { return certain_or_unknown(robust::decide(a, b)); }
+inline int double_word(const Segment<double>& s, const Sphere<double>& b) { return certain_or_unknown(robust::decide(s, b)); }
+inline int double_word(const Ray<double>& s, const Sphere<double>& b) { return certain_or_unknown(robust::decide(s, b)); }
+inline int double_word(const Sphere<double>& a, const Box<double>& b) { return certain_or_unknown(robust::decide(a, b)); }
 // Algorithm 3.2's answer is the segment cast's (a segment meets the closed ball exactly when
 // Algorithm 3.1's cast hits), whose double words leave a band u^2 wide (decide_closest's, on
 // the closest point, is u wide: it decided few cases 2^-52 from tangency)
 inline int double_word(const Segment<double>& s, const Sphere<double>& b, alg32) {
-  const robust::Decision d = robust::decide(s, b);
-  return d.certain ? int(d.value) : unknown;
-}
-inline int double_word(const Sphere<double>& a, const Box<double>& b) {
-  const robust::Decision d = robust::decide(a, b);
-  return d.certain ? int(d.value) : unknown;
+  return certain_or_unknown(robust::decide(s, b));
 }
 
 // All the stages in order.

@@ -60,7 +60,7 @@ namespace detail {
 // The largest and the smallest nonzero magnitude among the inputs.
 template <class F>
 void span_of(F x, F& hi, F& lo) {
-  const F a = std::fabs(x);  // branch-free: the filters of the sphere queries call this on every case
+  const F a = std::fabs(x);
   hi = std::max(hi, a);
   lo = std::min(lo, a == F(0) ? std::numeric_limits<F>::infinity() : a);
 }

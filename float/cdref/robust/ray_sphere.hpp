@@ -139,7 +139,8 @@
 //   a + b (segment):          10u (A + P) + 8 eta, A = fl(r.r);
 //   |t|^2 - rho^2 (segment):  8u (T + rho^2) + 8 eta, from t_i = fl(target_i - centre_i);
 //   D = rho^2 - |l^|^2, l^ = s - fl(b / a) r in F: the exact foot of the exact inputs is within
-//       El = 26u |s| + 2u |l^| + 4 eta of l^ (|s| and |l^| bounded above by sqrt(3) max_i |.|) (the projector on r's normal plane moves by
+//       El = 26u |s| + 2u |l^| + 4 eta of l^, |s| and |l^| bounded above by sqrt(3) max_i |.|
+//       (the projector on r's normal plane moves by
 //       sin(angle) <= u with r, so the inputs' rounding moves the foot by 2u |s|; the quotient
 //       and the subtraction by 8u |s| + u |l^| as in stable/ray_sphere.hpp; El doubles their
 //       sum for the second-order terms), so D is off by (2 |l^| + El) El + 4u |l^|^2 + 2u rho^2

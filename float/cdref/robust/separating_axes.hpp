@@ -79,13 +79,10 @@ int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
   Separation<F> separate(const A<F>& a, const B<F>& b) {                                    \
     check(a, NA);                                                                           \
     check(b, NB);                                                                           \
+    const int f = detail::first_stage<F>(a, b);                                             \
     Separation<F> s = detail::separation<F>(a, b).first;                                    \
-    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) s.intersect = f != 0; \
+    if (f != oracle::sat::unknown) s.intersect = f != 0;                                    \
     return s;                                                                               \
-  }                                                                                         \
-  template <class F>                                                                        \
-  bool intersect(const A<F>& a, const B<F>& b) {                                            \
-    return separate(a, b).intersect;                                                        \
   }                                                                                         \
   template <class F>                                                                        \
   Decision decide_separation(const A<F>& a, const B<F>& b) {                                \
@@ -94,6 +91,10 @@ int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
     if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
     const auto [s, certain] = detail::separation<F>(a, b);                                  \
     return {s.intersect, certain};                                                          \
+  }                                                                                         \
+  template <class F>                                                                        \
+  bool intersect(const A<F>& a, const B<F>& b) {                                            \
+    return decide_separation(a, b).value; /* the first stage first, as separate() */        \
   }
 CDREF_ROBUST_SEPARATE(Segment, Box, "segment", "box")
 CDREF_ROBUST_SEPARATE(Ray, Box, "ray", "box")
