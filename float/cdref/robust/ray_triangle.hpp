@@ -14,13 +14,16 @@
 // barycentric weights b_k = e_k/det, point = b0 v0 + b1 v1 + b2 v2 (pbrt's), the normal
 // (v1 - v0) x (v2 - v0) normalised and turned to face the source.
 //
-// Classification and certificate. WBW's signs are exact only for the rounded sheared
-// coordinates, not for the inputs: on a shot in the triangle's plane it reports a miss (the
-// sheared triangle is not exactly flat), and near an edge it may differ from the exact answer.
-// So the classification is taken from the inputs themselves: the book's cast run on double
-// words (robust/words.hpp: exact inputs, rigorous bounds) is exact when it completes (certain,
-// values from the double words rounded to F, not claimed correctly rounded). Otherwise the
-// signs of the orientation form (w_k = d . (B x C), ..., Ns, Nt of oracle/ray_triangle.hpp) are
+// Classification and certificate. At double the oracle's first stage runs first (the
+// orientation form below in double against static error bounds, oracle/triangle_filter.hpp):
+// where it decides, the answer is exact and certain, and a miss returns at once. WBW's signs
+// are exact only for the rounded sheared coordinates, not for the inputs: on a shot in the
+// triangle's plane it reports a miss (the sheared triangle is not exactly flat), and near an
+// edge it may differ from the exact answer. So the classification is taken from the inputs
+// themselves: the book's cast (or its hit(), which decide() tries first) run on double words
+// (robust/words.hpp: exact inputs, rigorous bounds) is exact when it completes (certain, values
+// from the double words rounded to F, not claimed correctly rounded). Otherwise the signs of
+// the orientation form (w_k = d . (B x C), ..., Ns, Nt of oracle/triangle_filter.hpp) are
 // taken on double words one by one, and a sign too close to call counts as met: two certain
 // opposite signs (or lambda certainly out of range) prove a miss (certain), and anything else
 // is reported as a hit, uncertain, with WBW's values in F. A false miss is therefore
@@ -31,6 +34,7 @@
 #pragma once
 
 #include <cdref/book/ray_triangle.hpp>
+#include <cdref/oracle/triangle_filter.hpp>
 #include <cdref/stable/ray_triangle.hpp>
 
 #include "words.hpp"
@@ -46,6 +50,22 @@ TriangleCast<F> triangle_cast_value(const TriangleCast<W>& c) {
   r.u = value<F>(c.u);
   r.v = value<F>(c.v);
   return r;
+}
+
+// At double, the oracle's first stage (oracle/triangle_filter.hpp: the orientation form in
+// double against static bounds) before the double words: 1 (a hit), 0 (a miss) or 2
+// (undecided; always at float and long double). Where it decides, its answer is the book's at
+// an exact type, so every entry point takes it (decide(), the predicate and the cast classify
+// alike); a miss has no values, so the cast then returns at once.
+template <class F>
+int triangle_first_stage(const Segment<F>& s, const Triangle<F>& t) {
+  if constexpr (std::is_same_v<F, double>) return oracle::ray_triangle::filter(s.source, &s.target, s.target, t);
+  else return oracle::ray_triangle::unknown;
+}
+template <class F>
+int triangle_first_stage(const Ray<F>& r, const Triangle<F>& t) {
+  if constexpr (std::is_same_v<F, double>) return oracle::ray_triangle::filter(r.source, nullptr, r.direction, t);
+  else return oracle::ray_triangle::unknown;
 }
 
 // A sign on double words, or 2 when it is too close to call.
@@ -89,8 +109,20 @@ int orientation_hit(const ShotW& shot, const Triangle<W>& tri, bool bounded) {
   return ns != 2 && nt != 2 ? 1 : 2;
 }
 
+// Where the book's cast on double words did not complete: its hit() on double words (0 or 1,
+// exact), else the orientation form (0 a proven miss, 1 a proven hit, 2 unknown).
 template <class Shot, class F>
-std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const Triangle<F>& tri, bool bounded) {
+int words_hit_or_orientation(const Shot& shot, const Triangle<F>& tri, bool bounded) {
+  if (const auto h = on_words(shot, tri, [](const auto& a, const auto& b) { return book::hit(a, b); })) return int(*h);
+  const auto w = on_words(shot, tri, [bounded](const auto& a, const auto& b) { return orientation_hit(a, b, bounded); });
+  return w ? *w : 2;
+}
+
+// The cast after the first stage's answer `first` (1, 0 or 2 as triangle_first_stage gives it).
+template <class Shot, class F>
+std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const Triangle<F>& tri, bool bounded,
+                                                        int first) {
+  if (first == 0) return {TriangleCast<F>{}, {false, true}};
   Scale used;
   const auto words = on_words(shot, tri, [](const auto& a, const auto& b) { return book::cast(a, b, want_all); }, &used);
   if (words) {
@@ -98,8 +130,9 @@ std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const 
     r.point = Scale{-used.k}.len(r.point);
     return {r, {r.hit, true}};
   }
-  const auto o = on_words(shot, tri, [bounded](const auto& a, const auto& b) { return orientation_hit(a, b, bounded); });
-  if (o && *o == 0) return {TriangleCast<F>{}, {false, true}};
+  int o = first;  // 1: a proven hit
+  if (o != 1) o = words_hit_or_orientation(shot, tri, bounded);
+  if (o == 0) return {TriangleCast<F>{}, {false, true}};
   // WBW's values in F, the shot and the triangle scaled
   const Scale sc = scale_of(shot, tri);
   const Shot ss = scaled(shot, sc);
@@ -112,7 +145,21 @@ std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const 
   TriangleCast<F> r = stable::detail::watertight(ss.source, d, scaled(tri, sc), bounded, unsigned(want_all), true);
   r.hit = true;
   r.point = Scale{-sc.k}.len(r.point);
-  return {r, {true, o && *o == 1}};
+  return {r, {true, o == 1}};
+}
+
+// decide() without the first stage: the double words alone. The book's hit() on double words
+// first (cheaper than its cast, which computes the values), then its cast, then the orientation
+// form: the same classification and certificate as triangle_cast_eval, which tries them in the
+// other order (wherever either of the book's evaluations completes it is exact).
+template <class Shot, class F>
+Decision triangle_cast_decide_words(const Shot& shot, const Triangle<F>& tri, bool bounded) {
+  if (const auto h = on_words(shot, tri, [](const auto& a, const auto& b) { return book::hit(a, b); })) return {*h, true};
+  if (const auto c = on_words(shot, tri, [](const auto& a, const auto& b) { return book::cast(a, b, want_all).hit; }))
+    return {*c, true};
+  const auto w = on_words(shot, tri, [bounded](const auto& a, const auto& b) { return orientation_hit(a, b, bounded); });
+  if (w && *w == 0) return {false, true};
+  return {true, w && *w == 1};
 }
 
 }  // namespace detail
@@ -121,25 +168,27 @@ template <class F>
 TriangleCast<F> cast(const Segment<F>& seg, const Triangle<F>& tri) {
   check(seg, "segment");
   check(tri, "triangle");
-  return detail::triangle_cast_eval(seg, tri, true).first;
+  return detail::triangle_cast_eval(seg, tri, true, detail::triangle_first_stage(seg, tri)).first;
 }
 template <class F>
 TriangleCast<F> cast(const Ray<F>& ray, const Triangle<F>& tri) {
   check(ray, "ray");
   check(tri, "triangle");
-  return detail::triangle_cast_eval(ray, tri, false).first;
+  return detail::triangle_cast_eval(ray, tri, false, detail::triangle_first_stage(ray, tri)).first;
 }
 template <class F>
 Decision decide(const Segment<F>& seg, const Triangle<F>& tri) {
   check(seg, "segment");
   check(tri, "triangle");
-  return detail::triangle_cast_eval(seg, tri, true).second;
+  if (const int f = detail::triangle_first_stage(seg, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
+  return detail::triangle_cast_decide_words(seg, tri, true);
 }
 template <class F>
 Decision decide(const Ray<F>& ray, const Triangle<F>& tri) {
   check(ray, "ray");
   check(tri, "triangle");
-  return detail::triangle_cast_eval(ray, tri, false).second;
+  if (const int f = detail::triangle_first_stage(ray, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
+  return detail::triangle_cast_decide_words(ray, tri, false);
 }
 template <class F>
 bool hit(const Segment<F>& seg, const Triangle<F>& tri) {

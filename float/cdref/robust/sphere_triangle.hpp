@@ -1,6 +1,10 @@
 // cdref/robust/sphere_triangle.hpp - the robust sphere-triangle query (Section 3.4) at float,
 // double and long double: proximity, intersect and decide.
 //
+// At double the oracle's first stage runs first (oracle/triangle_filter.hpp: two certificates
+// from one point of the triangle, static error bounds): where it decides, the classification
+// is exact and certain, and decide() returns at once.
+//
 // Formulation: the book's (book/sphere_triangle.hpp: the closest point region by region, a
 // zero-area triangle as its segment) evaluated on double words (robust/words.hpp: exact inputs,
 // every length scaled by a power of two, a rigorous running error bound). The region tests
@@ -21,6 +25,7 @@
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
+#include <cdref/oracle/triangle_filter.hpp>
 
 #include "words.hpp"
 
@@ -28,11 +33,33 @@ namespace cdref::robust {
 
 namespace detail {
 
+// At double, the oracle's first stage (oracle/triangle_filter.hpp: two certificates from one
+// point of the triangle) before the double words: 1 (they meet), 0 (disjoint) or 2 (undecided;
+// always at float and long double). Where it decides, its answer is the book's at an exact
+// type, so every entry point takes it (decide(), the predicate and proximity's classification).
 template <class F>
-std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
+int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
+  if constexpr (std::is_same_v<F, double>) return oracle::sphere_triangle::filter(s, t);
+  else return oracle::sphere_triangle::unknown;
+}
+
+// The double words alone (the oracle's second stage).
+template <class F>
+std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
   return proximity_on_words(
       s, t, [w](const auto& x, const auto& y) { return book::proximity(x, y, w); },
       [](const auto& x, const auto& y) { return book::intersect(x, y); });
+}
+// Proximity's values from the double words, its classification from the first stage where it
+// decides (the values lie on the first stage's side wherever the double words complete).
+template <class F>
+std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
+  auto r = sphere_triangle_words(s, t, w);
+  if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
+    r.first.intersect = f != 0;
+    r.second = {f != 0, true};
+  }
+  return r;
 }
 
 }  // namespace detail
@@ -47,7 +74,9 @@ template <class F>
 Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
   check(s, "sphere");
   check(t, "triangle");
-  return detail::sphere_triangle_eval(s, t, want_proximity).second;
+  if (const int f = detail::sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown)
+    return {f != 0, true};
+  return detail::sphere_triangle_words(s, t, want_proximity).second;
 }
 template <class F>
 bool intersect(const Sphere<F>& s, const Triangle<F>& t) {

@@ -1,6 +1,10 @@
 // cdref/robust/triangle_triangle.hpp - the robust triangle-triangle test (Section 3.4) at float,
 // double and long double: intersect, the intersection segment, and decide.
 //
+// At double the oracle's first stage runs first (oracle/triangle_filter.hpp: a separating
+// plane, then the six edge-triangle casts, static error bounds): where it decides, the
+// classification is exact and certain, and disjoint triangles return at once.
+//
 // Formulation: the book's (book/triangle_triangle.hpp: Moller's interval test with exact zero
 // tests, Theorem 3.1 with the side normals for coplanar pairs, zero-area triangles as their
 // spans) evaluated on double words (robust/words.hpp: exact inputs, every length scaled by a
@@ -15,6 +19,7 @@
 #pragma once
 
 #include <cdref/book/triangle_triangle.hpp>
+#include <cdref/oracle/triangle_filter.hpp>
 
 #include "words.hpp"
 
@@ -22,8 +27,22 @@ namespace cdref::robust {
 
 namespace detail {
 
+// At double, the oracle's first stage (oracle/triangle_filter.hpp: a separating plane, then the
+// six edge-triangle casts) before the double words: 1 (they meet), 0 (disjoint) or 2
+// (undecided; always at float and long double). Where it decides, its answer is the book's at
+// an exact type, so every entry point takes it; disjoint triangles have no values (coplanar is
+// false, p = q = 0), so intersect() then returns at once.
 template <class F>
-std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triangle<F>& a, const Triangle<F>& b) {
+int triangle_triangle_first_stage(const Triangle<F>& a, const Triangle<F>& b) {
+  if constexpr (std::is_same_v<F, double>) return oracle::triangle_triangle::filter(a, b);
+  else return oracle::triangle_triangle::unknown;
+}
+
+// The evaluation after the first stage's answer `first` (2: undecided).
+template <class F>
+std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triangle<F>& a, const Triangle<F>& b,
+                                                                    int first) {
+  if (first == 0) return {TriangleIntersection<F>{}, {false, true}};
   Scale used;
   const auto w = on_words(a, b, [](const auto& x, const auto& y) {
     return book::detail::intersect_triangles(x, y, W(0.0));
@@ -37,8 +56,9 @@ std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triang
     r.q = back.len(value<F>(w->q));
     return {r, {r.intersect, true}};
   }
-  const TriangleIntersection<F> r = book::detail::intersect_triangles(a, b, F(0));
-  return {r, {r.intersect, false}};
+  TriangleIntersection<F> r = book::detail::intersect_triangles(a, b, F(0));
+  if (first == 1) r.intersect = true;
+  return {r, {r.intersect, first == 1}};
 }
 
 }  // namespace detail
@@ -47,13 +67,15 @@ template <class F>
 TriangleIntersection<F> intersect(const Triangle<F>& a, const Triangle<F>& b) {
   check(a, "triangle A");
   check(b, "triangle B");
-  return detail::triangle_triangle_eval(a, b).first;
+  return detail::triangle_triangle_eval(a, b, detail::triangle_triangle_first_stage(a, b)).first;
 }
 template <class F>
 Decision decide(const Triangle<F>& a, const Triangle<F>& b) {
   check(a, "triangle A");
   check(b, "triangle B");
-  return detail::triangle_triangle_eval(a, b).second;
+  if (const int f = detail::triangle_triangle_first_stage(a, b); f != oracle::triangle_triangle::unknown)
+    return {f != 0, true};
+  return detail::triangle_triangle_eval(a, b, 2).second;
 }
 
 }  // namespace cdref::robust

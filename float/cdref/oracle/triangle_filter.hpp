@@ -1,0 +1,237 @@
+// cdref/oracle/triangle_filter.hpp - the first stage of the Section 3.4 classification oracles:
+// the orientation form of a ray or segment cast on a triangle, two certificates from one point
+// of a triangle for a sphere, and a plane and six edge casts for two triangles, each evaluated in
+// double against static error bounds. Plain double arithmetic on the query's inputs, so that both
+// the oracles (exact/cdref/oracle/ray_triangle.hpp, sphere_triangle.hpp, triangle_triangle.hpp,
+// polygon.hpp: then the double words, then CGAL::Gmpq) and the robust tier's certified decisions
+// (robust/ray_triangle.hpp, sphere_triangle.hpp, triangle_triangle.hpp, at double) run it first:
+// where it decides (1 meets, 0 apart; `unknown` leaves the case to the next stage), its answer
+// is the book's at an exact type.
+//
+// ---- Ray and segment casts on a triangle (book/ray_triangle.hpp) ---------------------------
+// The orientation form of the test. With A, B, C the vertices relative to the
+// source s, d the direction (t - s for a segment) and n = (v1 - v0) x (v2 - v0):
+//   w0 = d . (B x C), w1 = d . (C x A), w2 = d . (A x B)   (sum D = d . n),
+//   Ns = (v0 - s) . n, and for the segment Nt = (v0 - t) . n.
+// The line meets the triangle iff the w_k do not have opposite signs; with D > 0
+// the ray then hits iff Ns >= 0, the segment iff moreover Nt <= 0 (D < 0: the
+// signs turn). Each of these is a sum of six monomials of degree 3 in rounded
+// differences of inputs; evaluated in double each monomial carries at most 7
+// roundings (two differences, two products, a difference in the cross product,
+// two sums in the dot product), so |computed - exact| <= gamma_7 P, P the same
+// expression on absolute values; the filter takes 10u (1 + 16u) P~ (P~ computed in
+// double: at most 7 more roundings upward of P) plus 64 * 2^-1074 (1 + |a|_1) for
+// underflow: a rounding that underflows errs by up to 2^-1075 absolute, and one
+// inside the cross product b x c is then multiplied by a's coordinate (found by the
+// fuzz target: a subnormal product scaled by 2^1009). It decides a miss when two
+// w_k have opposite certain signs, and a hit or a miss when all three w_k have the
+// same certain sign and Ns (and Nt) certainly have theirs. A non-finite value leaves the case to the next stage.
+//
+// ---- A sphere and a triangle (book/sphere_triangle.hpp) -------------------------------------
+// Two certificates from one point of the triangle, with static error bounds:
+// X_k = fl(v_k - c) (the vertices relative to the centre, one rounding each);
+// (u, v) the barycentric coordinates of the book's closest point computed in
+// double, clamped so that u, v >= 0 and u + v <= 1 hold exactly; the point
+// x = v0 + u (v1 - v0) + v (v2 - v0) then lies in the triangle exactly, and
+// w = x - c = X0 + u (X1 - X0) + v (X2 - X0) is computed with at most 5 roundings
+// a monomial against W+_c = |X0_c| + u (|X1_c| + |X0_c|) + v (|X2_c| + |X0_c|):
+// |w~_c - w_c| <= gamma_5 W+_c <= e_c = 6u W+~_c (1 + 16u).
+//   intersect  |w|^2 <= |w~|^2 (1 + 4u) + sum_c e_c (2 |w~_c| + e_c) < rho^2;
+//   disjoint   along v = w~: every point t of the triangle has
+//              v . (t - c) >= G = min_k v . X_k (a linear function's minimum over
+//              a triangle is at a vertex), and the sphere lies within rho |v| of c
+//              along v, so G > rho |v| separates them; G~ carries 4 roundings a
+//              monomial (v exact, X a leaf): G_lo = G~ - 5u (1 + 16u) max_k |v|.|X_k|,
+//              and G_lo > 0 with G_lo^2 (1 - 8u) > rho^2 |v|^2 (1 + 8u) decides.
+// Roundings that underflow are covered by 64 * 2^-1074; a non-finite value leaves
+// the case to the next stage.
+//
+// ---- Two triangles (book/triangle_triangle.hpp) ---------------------------------------------
+// (a) A plane: the signs of dB_k = (b_k - a0) . ((a1 - a0) x (a2 - a0)), and of
+// dA_k the other way, each a triple product of rounded differences with the
+// static bound above; three certain signs alike separate.
+// (b) The edges: two closed triangles meet iff an edge of one meets the other
+// (non-coplanar: an end of their common segment lies on an edge of one of them;
+// coplanar: edges cross, or one triangle holds the other and with it its edges;
+// a zero-area triangle's edges cover its span). Each of the six edge-triangle
+// pairs is the segment-triangle filter above: one certain hit proves the triangles
+// meet, six certain misses that they do not.
+#pragma once
+
+#include <algorithm>
+#include <cdref/cdref.hpp>
+#include <cmath>
+
+namespace cdref::oracle {
+
+namespace ray_triangle {
+
+inline constexpr int unknown = 2;
+
+// The sign of a . (b x c) with its bound: +1, -1, or 0 when the bound does not decide.
+inline int triple_sign(const double (&a)[3], const double (&b)[3], const double (&c)[3], bool& finite) {
+  constexpr double u_ = 0x1p-53, grow = 1 + 16 * u_, eta = 64 * 0x1p-1074;
+  const double x0 = b[1] * c[2] - b[2] * c[1], x1 = b[2] * c[0] - b[0] * c[2], x2 = b[0] * c[1] - b[1] * c[0];
+  const double v = a[0] * x0 + a[1] * x1 + a[2] * x2;
+  const double p0 = std::fabs(b[1] * c[2]) + std::fabs(b[2] * c[1]);
+  const double p1 = std::fabs(b[2] * c[0]) + std::fabs(b[0] * c[2]);
+  const double p2 = std::fabs(b[0] * c[1]) + std::fabs(b[1] * c[0]);
+  const double P = std::fabs(a[0]) * p0 + std::fabs(a[1]) * p1 + std::fabs(a[2]) * p2;
+  // a rounding that underflows errs by at most 2^-1075 absolute; in a cross product component
+  // that error is then multiplied by a's coordinate, so it enters scaled by |a|
+  const double sa = std::fabs(a[0]) + std::fabs(a[1]) + std::fabs(a[2]);
+  const double e = 10 * u_ * grow * P + eta * (1 + sa);
+  if (!std::isfinite(v) || !std::isfinite(e)) finite = false;
+  return v > e ? 1 : v < -e ? -1 : 0;
+}
+
+inline int filter(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir, const Triangle<double>& tri) {
+  double A[3][3], d[3], e1[3], e2[3];
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) A[k][i] = tri.vertex[k][i] - s[i];
+    d[i] = t ? (*t)[i] - s[i] : dir[i];
+    e1[i] = tri.vertex[1][i] - tri.vertex[0][i];
+    e2[i] = tri.vertex[2][i] - tri.vertex[0][i];
+  }
+  bool finite = true;
+  const int w0 = triple_sign(d, A[1], A[2], finite), w1 = triple_sign(d, A[2], A[0], finite),
+            w2 = triple_sign(d, A[0], A[1], finite);
+  if (!finite) return unknown;
+  if ((w0 < 0 || w1 < 0 || w2 < 0) && (w0 > 0 || w1 > 0 || w2 > 0)) return 0;
+  if (w0 == 0 || w0 != w1 || w0 != w2) return unknown;
+  const int sD = w0;
+  // Ns = (v0 - s) . (e1 x e2): the sign of lambda's numerator
+  const int ns = triple_sign(A[0], e1, e2, finite);
+  if (!finite) return unknown;
+  if (ns == -sD) return 0;  // lambda < 0
+  int nt = -sD;
+  if (t) {
+    double T0[3];
+    for (int i = 0; i < 3; ++i) T0[i] = tri.vertex[0][i] - (*t)[i];
+    nt = triple_sign(T0, e1, e2, finite);
+    if (!finite) return unknown;
+    if (nt == sD) return 0;  // lambda > 1
+  }
+  return ns == sD && nt == -sD ? 1 : unknown;
+}
+
+}  // namespace ray_triangle
+
+namespace sphere_triangle {
+
+inline constexpr int unknown = 2;
+
+// Barycentric (u, v) of the book's closest point to the origin, in double (any values do: they
+// are clamped into the triangle exactly).
+inline void closest_barycentric(const double (&X)[3][3], double& u, double& v) {
+  // plain scalars: building Eigen vectors from them costs store-forwarding stalls here
+  double ab[3], ac[3];
+  for (int i = 0; i < 3; ++i) ab[i] = X[1][i] - X[0][i], ac[i] = X[2][i] - X[0][i];
+  const auto dot = [](const double (&p)[3], const double (&q)[3]) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
+  const double d1 = -dot(ab, X[0]), d2 = -dot(ac, X[0]);  // ab . (0 - a), ac . (0 - a)
+  u = v = 0;
+  if (d1 <= 0 && d2 <= 0) return;
+  const double d3 = -dot(ab, X[1]), d4 = -dot(ac, X[1]);
+  if (d3 >= 0 && d4 <= d3) { u = 1; return; }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) { u = d1 / (d1 - d3); return; }
+  const double d5 = -dot(ab, X[2]), d6 = -dot(ac, X[2]);
+  if (d6 >= 0 && d5 <= d6) { v = 1; return; }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) { v = d2 / (d2 - d6); return; }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+    v = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    u = 1 - v;
+    return;
+  }
+  const double denom = va + vb + vc;
+  u = vb / denom;
+  v = vc / denom;
+}
+
+inline int filter(const Sphere<double>& s, const Triangle<double>& t) {
+  constexpr double u_ = 0x1p-53, grow = 1 + 16 * u_, eta = 64 * 0x1p-1074;
+  double X[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) X[k][i] = t.vertex[k][i] - s.center[i];
+  double u, v;
+  closest_barycentric(X, u, v);
+  // clamp: u in [0, 1], v in [0, 1 - u] with u + v <= 1 exactly
+  if (!(u >= 0)) u = 0;  // NaN included
+  if (!(u <= 1)) u = 1;
+  double room = 1 - u;  // rounded: step it down until u + room <= 1 holds exactly (Two-Sum)
+  for (;;) {
+    const double sum = u + room, bv = sum - u, err = (u - (sum - bv)) + (room - bv);
+    if (sum < 1 || (sum == 1 && err <= 0)) break;
+    room = std::nextafter(room, 0.0);
+  }
+  if (!(v >= 0)) v = 0;
+  if (!(v <= room)) v = room;
+  double w[3], ww = 0, e2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double e1 = X[1][i] - X[0][i], e2v = X[2][i] - X[0][i];
+    w[i] = X[0][i] + u * e1 + v * e2v;
+    const double Wp = std::fabs(X[0][i]) + u * (std::fabs(X[1][i]) + std::fabs(X[0][i])) +
+                      v * (std::fabs(X[2][i]) + std::fabs(X[0][i]));
+    const double e = 6 * u_ * grow * Wp;
+    e2 += e * (2 * std::fabs(w[i]) + e);
+    ww += w[i] * w[i];
+  }
+  const double rr = s.radius * s.radius;
+  if (!std::isfinite(ww) || !std::isfinite(e2) || !std::isfinite(rr)) return unknown;
+  if ((ww * (1 + 4 * u_) + e2 * grow + eta) * grow < rr * (1 - 2 * u_)) return 1;
+  double G = 0, Gp = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double g = w[0] * X[k][0] + w[1] * X[k][1] + w[2] * X[k][2];
+    const double gp = std::fabs(w[0] * X[k][0]) + std::fabs(w[1] * X[k][1]) + std::fabs(w[2] * X[k][2]);
+    G = k == 0 ? g : std::min(G, g);
+    Gp = std::max(Gp, gp);
+  }
+  const double Glo = G - (5 * u_ * grow * Gp + eta);
+  if (!std::isfinite(Glo)) return unknown;
+  if (Glo > 0 && Glo * Glo * (1 - 8 * u_) > (rr * ww) * (1 + 8 * u_) + eta) return 0;
+  return unknown;
+}
+}  // namespace sphere_triangle
+
+namespace triangle_triangle {
+
+inline constexpr int unknown = 2;
+
+// The signs of t's vertices against the plane of p, certain or 0.
+inline bool plane_separates(const Triangle<double>& p, const Triangle<double>& t, bool& finite) {
+  double e1[3], e2[3], x[3];
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = p.vertex[1][i] - p.vertex[0][i];
+    e2[i] = p.vertex[2][i] - p.vertex[0][i];
+  }
+  int s[3];
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) x[i] = t.vertex[k][i] - p.vertex[0][i];
+    s[k] = ray_triangle::triple_sign(x, e1, e2, finite);
+  }
+  return s[0] != 0 && s[0] == s[1] && s[0] == s[2];
+}
+
+inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
+  bool finite = true;
+  if (plane_separates(a, b, finite) || plane_separates(b, a, finite)) return finite ? 0 : unknown;
+  if (!finite) return unknown;
+  int misses = 0;
+  for (const auto* pair : {&a, &b}) {
+    const Triangle<double>& from = *pair;
+    const Triangle<double>& other = pair == &a ? b : a;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3<double>& s = from.vertex[k];
+      const Vec3<double>& t = from.vertex[(k + 1) % 3];
+      const int r = ray_triangle::filter(s, &t, t, other);
+      if (r == 1) return 1;
+      misses += r == 0;
+    }
+  }
+  return misses == 6 ? 0 : unknown;
+}
+}  // namespace triangle_triangle
+
+}  // namespace cdref::oracle
