@@ -42,6 +42,10 @@
 // grow = 1 + 16u covers its own rounding. A non-finite part makes every use uncertain.
 //
 // Signs: certain when |hi| > |lo| + e (then sign = sign(hi)), or when hi = lo = e = 0.
+// Lenient signs (the robust tier's values only, robust/words.hpp): while a Bounded2::Lenient
+// guard lives on the thread, a sign too close to call is answered by the double word's own
+// sign (that of hi) instead of throwing. The flag is read on that path alone, so certain signs
+// cost nothing more; the oracle never sets it, and its answers stay certain or uncertain.
 // Rounding to double: hi is the double nearest to hi + lo; the exact value rounds to hi
 // when [v - e, v + e] lies strictly inside hi's rounding interval (the midpoints to both
 // neighbours), checked with the differences to the midpoints computed exactly; an exact
@@ -166,8 +170,20 @@ class Bounded2 {
     if (hi_ == 0 && lo_ == 0 && e_ == 0) return 0;
     // |hi + lo| >= |hi| - |lo| exactly; the comparison is safe with a margin of 2u
     if (std::fabs(hi_) * (1 - 2 * u) > (std::fabs(lo_) + e_) * grow) return hi_ > 0 ? 1 : -1;
+    if (lenient_flag()) return hi_ > 0 ? 1 : hi_ < 0 ? -1 : 0;  // (hi = 0 implies lo = 0)
     throw uncertain();
   }
+  // While one lives, signs too close to call take the double word's own sign (header).
+  class Lenient {
+   public:
+    Lenient() : was_(lenient_flag()) { lenient_flag() = true; }
+    ~Lenient() { lenient_flag() = was_; }
+    Lenient(const Lenient&) = delete;
+    Lenient& operator=(const Lenient&) = delete;
+
+   private:
+    bool was_;
+  };
   friend bool operator<(const Bounded2& a, const Bounded2& b) { return (a - b).sign() < 0; }
   friend bool operator>(const Bounded2& a, const Bounded2& b) { return (a - b).sign() > 0; }
   friend bool operator<=(const Bounded2& a, const Bounded2& b) { return (a - b).sign() <= 0; }
@@ -246,6 +262,10 @@ class Bounded2 {
 
  private:
   bool exact_zero() const { return hi_ == 0 && lo_ == 0 && e_ == 0; }
+  static bool& lenient_flag() {
+    static thread_local bool on = false;
+    return on;
+  }
   static int sign_or_2(const Bounded2& x) {  // sign(), or 2 where it would throw
     try {
       return x.sign();

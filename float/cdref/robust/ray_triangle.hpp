@@ -3,9 +3,12 @@
 //
 // Two pieces: the classification (below, "Classification and certificate": exact where the
 // double words decide, never a false miss where they do not), and the values where the double
-// words cannot give them, from Woop, Benthin and Wald's watertight test run in F: the stable
-// tier's arithmetic (stable/ray_triangle.hpp derives it, and why no ray leaks between two
-// triangles that share an edge), on scaled inputs.
+// words cannot give them: the double words with lenient signs (words.hpp: a comparison too
+// close to call takes the double word's own sign; the entry point is continuous there) where
+// they complete with a hit, each value kept from Woop, Benthin and Wald's watertight test run
+// in F where that lies within the double word's enclosure, and WBW's values otherwise: the
+// stable tier's arithmetic (stable/ray_triangle.hpp derives it, and why no ray leaks between
+// two triangles that share an edge), on scaled inputs.
 //
 // Every length is first scaled by a power of two (robust/words.hpp), so that the shear's products
 // neither overflow nor underflow early. Two triangles of a mesh may get different scales; away
@@ -145,6 +148,13 @@ std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const 
   TriangleCast<F> r = stable::detail::watertight(ss.source, d, scaled(tri, sc), bounded, unsigned(want_all), true);
   r.hit = true;
   r.point = Scale{-sc.k}.len(r.point);
+  // then the double words with lenient signs where they complete with a hit (words.hpp: the
+  // entry point is continuous where the shot meets the triangle), WBW's value kept where it
+  // lies within their enclosure
+  if (const auto lw = on_words_lenient(shot, tri, [](const auto& a, const auto& b) { return book::cast(a, b, want_all); },
+                                       &used);
+      lw && lw->hit)
+    take_lenient_values<F>(r, *lw, used.k);
   return {r, {true, o == 1}};
 }
 

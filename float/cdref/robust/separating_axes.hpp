@@ -116,8 +116,9 @@ template <class F> Decision decide(const OrientedBox<F>& a, const OrientedBox<F>
 namespace detail {
 
 // The full query and its certificate from one evaluation, so that they always classify alike:
-// the double-word query; else the double-word classification with the query's values in F;
-// else both in F, uncertain.
+// the double-word query; else the double-word classification with the query's values from the
+// double words with lenient signs (or in F where those miss or do not complete); else the
+// classification in F too, uncertain.
 template <class F, class A>
 std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsigned w) {
   Scale sc;
@@ -126,7 +127,12 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
     c.point = Scale{-sc.k}.len(c.point);  // parameters and unit normals do not scale
     return {c, {r->hit, true}};
   }
+  // the values from the double words with lenient signs where they complete with a hit
+  // (words.hpp), else from F
+  // (F's own value kept where it lies within their enclosure: words.hpp)
   Cast<F> c = solid::cast(a, b, w);
+  const auto lw = on_words_lenient(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc);
+  if (lw && lw->hit) take_lenient_values<F>(c, *lw, sc.k);
   const auto h = on_words(a, b, [](const auto& x, const auto& y) { return solid::hit(x, y); });
   const Decision d = h ? Decision{*h, true} : Decision{solid::hit(a, b), false};
   c.hit = d.value;

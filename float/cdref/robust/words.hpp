@@ -179,6 +179,48 @@ auto on_words(const A& a, const B& b, Fn f, Scale* used = nullptr)
   }
 }
 
+// on_words with lenient signs (oracle/bounded2.hpp): a decision too close to call takes the
+// double word's own sign. For the values alone, where on_words did not complete: near such a
+// boundary every formulation here is continuous (the closest point of a triangle or a box, a
+// cast's entry point where the classification is known), so the branch taken moves the values
+// by about the undecided quantity's error, u^2 of its size, instead of carrying F's rounding.
+// Divisions by a divisor whose sign is not certain still end it (nothing then).
+template <class A, class B, class Fn>
+auto on_words_lenient(const A& a, const B& b, Fn f, Scale* used = nullptr) {
+  const W::Lenient lenient;
+  return on_words(a, b, f, used);
+}
+
+// A value of the lenient double words (in units scaled by 2^k: k = 0 for parameters and unit
+// normals), scaled back, or F's own value f of the same output where f lies within the double
+// word's enclosure [hi + lo - e, hi + lo + e]: both are then within the enclosure's width of
+// the value along the branch taken, and f keeps what F computes exactly (a coordinate of 0 at
+// a vertex, where the double word carries a residue of u^2 that is an error of 10^18 ulps).
+template <class F>
+F word_or_enclosed(const W& w, F f, int k) {
+  const long double fs = std::ldexp(static_cast<long double>(f), k);
+  const long double v = static_cast<long double>(w.hi()) + static_cast<long double>(w.lo());
+  if (std::isfinite(fs) && std::fabs(fs - v) <= static_cast<long double>(w.bound()) * 1.001L) return f;
+  return std::ldexp(value<F>(w), -k);
+}
+template <class F>
+Vec3<F> word_or_enclosed(const Vec3<W>& w, const Vec3<F>& f, int k) {
+  return Vec3<F>(word_or_enclosed(w[0], f[0], k), word_or_enclosed(w[1], f[1], k), word_or_enclosed(w[2], f[2], k));
+}
+// A cast's values from the lenient double words (scaled by 2^k), field by field as above; the
+// flags are the caller's.
+template <class F, class CW, class CF>
+void take_lenient_values(CF& out, const CW& w, int k) {
+  out.lambda_enter = word_or_enclosed(w.lambda_enter, out.lambda_enter, 0);
+  out.lambda_exit = word_or_enclosed(w.lambda_exit, out.lambda_exit, 0);
+  out.point = word_or_enclosed(w.point, out.point, k);
+  out.normal = word_or_enclosed(w.normal, out.normal, 0);
+  if constexpr (std::is_same_v<CF, TriangleCast<F>>) {
+    out.u = word_or_enclosed(w.u, out.u, 0);
+    out.v = word_or_enclosed(w.v, out.v, 0);
+  }
+}
+
 template <class F>
 Cast<F> cast_value(const Cast<W>& c) {
   Cast<F> r;
@@ -205,20 +247,30 @@ Proximity<F> proximity_value(const Proximity<W>& p) {
 
 // A proximity query and its certificate from one evaluation, so that they always classify
 // alike: the double-word query (values scaled back); else the double-word classification with
-// the query's values in F; else both in F, uncertain. prox(a, b) and meet(a, b) are the
-// formulation's proximity and intersection test, at any number type.
+// the query's values from the double words with lenient signs (on_words_lenient; F's own
+// where it lies within their enclosure, word_or_enclosed), or in F where those do not
+// complete either; else the classification in F too, uncertain. prox(a, b)
+// and meet(a, b) are the formulation's proximity and intersection test, at any number type.
 template <class A, class B, class Prox, class Meet>
 auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet) {
   using F = std::decay_t<decltype(scalar_of(a))>;
-  Scale sc;
-  if (const auto r = on_words(a, b, prox, &sc)) {
-    Proximity<F> p = proximity_value<F>(*r);
+  const auto from_words = [](const Proximity<W>& r, const Scale& sc) {
+    Proximity<F> p = proximity_value<F>(r);
     const Scale back{-sc.k};
     p.distance = back.len(p.distance), p.depth = back.len(p.depth);
     p.on_a = back.len(p.on_a), p.on_b = back.len(p.on_b), p.closest = back.len(p.closest);
-    return std::pair<Proximity<F>, Decision>{p, {r->intersect, true}};
-  }
+    return p;
+  };
+  Scale sc;
+  if (const auto r = on_words(a, b, prox, &sc)) return std::pair<Proximity<F>, Decision>{from_words(*r, sc), {r->intersect, true}};
   Proximity<F> p = prox(a, b);
+  if (const auto lr = on_words_lenient(a, b, prox, &sc)) {
+    p.distance = word_or_enclosed(lr->distance, p.distance, sc.k);
+    p.depth = word_or_enclosed(lr->depth, p.depth, sc.k);
+    p.on_a = word_or_enclosed(lr->on_a, p.on_a, sc.k);
+    p.on_b = word_or_enclosed(lr->on_b, p.on_b, sc.k);
+    p.closest = word_or_enclosed(lr->closest, p.closest, sc.k);
+  }
   const auto h = on_words(a, b, meet);
   const Decision d = h ? Decision{*h, true} : Decision{meet(a, b), false};
   p.intersect = d.value;
