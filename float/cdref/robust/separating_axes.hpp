@@ -141,8 +141,16 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
 
 template <class F>
 std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w) {
+  // (on the double words relative to the sphere's centre: words.hpp, about_centre)
   return proximity_on_words(
-      s, b, [w](const auto& x, const auto& y) { return solid::proximity(x, y, w); },
+      s, b,
+      [w](const auto& x, const auto& y) {
+        return about_centre(x, y, w, [w](const auto& a, const auto& c) { return solid::proximity(a, c, w); },
+                            [](auto box, const auto& c) {
+                              box.center = std::decay_t<decltype(c)>(box.center - c);
+                              return box;
+                            });
+      },
       [](const auto& x, const auto& y) { return solid::intersect(x, y); });
 }
 

@@ -46,8 +46,16 @@ int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
 // The double words alone (the oracle's second stage).
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
+  // (on the double words relative to the centre: words.hpp, about_centre)
   return proximity_on_words(
-      s, t, [w](const auto& x, const auto& y) { return book::proximity(x, y, w); },
+      s, t,
+      [w](const auto& x, const auto& y) {
+        return about_centre(x, y, w, [w](const auto& a, const auto& b) { return book::proximity(a, b, w); },
+                            [](auto tri, const auto& c) {
+                              for (auto& v : tri.vertex) v = std::decay_t<decltype(c)>(v - c);
+                              return tri;
+                            });
+      },
       [](const auto& x, const auto& y) { return book::intersect(x, y); });
 }
 // Proximity's values from the double words, its classification from the first stage where it

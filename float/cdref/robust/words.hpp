@@ -245,6 +245,27 @@ Proximity<F> proximity_value(const Proximity<W>& p) {
   return r;
 }
 
+// A sphere query's proximity on double words relative to the sphere's centre c: the other
+// primitive moved by -c (translate(b, c): its points' differences from c, exact double words
+// of exact inputs), the sphere to the origin, the witnesses moved back. A closest point 10^8
+// radii from the origin then carries u^2 of its distance from c instead of u^2 of its
+// coordinates, which is what the distance of a nearly touching pair is made of (the book's
+// own formulation, every decision the same: translation changes no exact comparison). At
+// other number types prox(s, b) as it is.
+template <class S, class B, class Prox, class Translate>
+auto about_centre(const S& s, const B& b, unsigned w, Prox prox, Translate translate) {
+  if constexpr (std::is_same_v<std::decay_t<decltype(s.radius)>, W>) {
+    S at_origin = s;
+    at_origin.center = Vec3<W>(W(0.0), W(0.0), W(0.0));
+    auto p = prox(at_origin, translate(b, s.center));
+    if (w & want_witnesses) p.on_a = Vec3<W>(p.on_a + s.center), p.on_b = Vec3<W>(p.on_b + s.center);
+    if (w & want_closest) p.closest = Vec3<W>(p.closest + s.center);
+    return p;
+  } else {
+    return prox(s, b);
+  }
+}
+
 // A proximity query and its certificate from one evaluation, so that they always classify
 // alike: the double-word query (values scaled back); else the double-word classification with
 // the query's values from the double words with lenient signs (on_words_lenient; F's own
