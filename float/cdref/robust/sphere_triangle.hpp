@@ -7,21 +7,27 @@
 //
 // Formulation: the book's (book/sphere_triangle.hpp: the closest point region by region, a
 // zero-area triangle as its segment) evaluated on double words (robust/words.hpp: exact inputs,
-// every length scaled by a power of two, a rigorous running error bound). The region tests
-// compare dot products of exact differences (degree 2) and va, vb, vc (degree 4), each held to
-// about u^2 of its size, and the classification compares |x - c|^2 with rho^2; each is certain
-// when its double word's sign is. The scaling keeps the degree-4 terms in range where the book
-// in double overflows or underflows (coordinates near 2^500 or 2^-500). decide() is certain when the double-word evaluation of
-// intersect completed: then the classification equals the book's at an exact type. Otherwise
-// the book runs in F and the answer is uncertain (a centre on a region boundary, a tangent
-// sphere, a triangle whose area is too small to call). proximity() takes its values from the
-// double words rounded to F when its own evaluation completes, else from F, and always
-// classifies as decide() does. The values are not claimed correctly rounded (that is the
-// oracle's job) and have two known losses, measured by `cdref campaign --query sphere-triangle
-// --impl robust-double`: the distance sqrt|x - c|^2 - rho cancels when it is far below the
-// radius (its error is about u^2 of the radius: 0-9 ulps at p99, 2.5e3 at worst on long range),
-// and where a region test cannot be called the values come from F, whose witness may lie on a
-// neighbouring edge or vertex (2.3e4 ulps of the case's scale at worst on the degenerate family).
+// every length scaled by a power of two, a rigorous running error bound), relative to the
+// sphere's centre (words.hpp, about_centre: the vertices' differences from it are exact double
+// words, so the closest point carries u^2 of its distance from the centre, not of its
+// coordinates). The region tests compare dot products of exact differences (degree 2) and va,
+// vb, vc (degree 4), each held to about u^2 of its size, and the classification compares
+// |x - c|^2 with rho^2; each is certain when its double word's sign is. The scaling keeps the
+// degree-4 terms in range where the book in double overflows or underflows (coordinates near
+// 2^500 or 2^-500). decide() is certain when the double-word evaluation of intersect
+// completed: then the classification equals the book's at an exact type. Otherwise the book
+// runs in F and the answer is uncertain (a centre on a region boundary, a tangent sphere, a
+// triangle whose area is too small to call). proximity() takes its values from the double
+// words rounded to F when its own evaluation completes, else from the double words with
+// lenient signs (a region test too close to call takes the double word's sign: the closest
+// point is continuous across region boundaries; F's value kept where it lies within the double
+// word's enclosure), else from F, and always classifies as decide() does. The values are not
+// claimed correctly rounded (that is the oracle's job); `cdref campaign --query sphere-triangle
+// --impl robust-double` measures them: the distance sqrt|x - c|^2 - rho cancels when it is far
+// below the radius (its error is about u^2 of the radius: 0 ulps on the long-range family to
+// 10^12, 2 at p99 and 4 at worst at 2^-52 of the radius from touching), and the sphere's witness
+// c + rho (x - c) / |x - c| has no direction when the centre lies on the triangle (2.3e4 ulps of
+// the case's scale at worst on the degenerate family).
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
