@@ -15,6 +15,9 @@
 // Certificate: at double every entry point first runs the oracle's first stage
 // (oracle/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
 // solid's at an exact type; decide_separation(), the predicate and the full query all take it.
+// A segment or a ray and an axis-aligned box take Algorithm 3.3's certificate instead
+// (ray_box.hpp; has_slab_certificate below): where it is certain the classification is exact,
+// and where neither it nor the double words are, its value is the answer of every entry point.
 // Otherwise decide_separation() (decide(), where the pair has no other; decide_cast() for
 // the casts, which classify as cast() does) is certain when the double-word evaluation completed, every
 // decision certain: then the classification (and the first separating axis, the entering
@@ -22,9 +25,10 @@
 // formulation runs in F and the answer is marked uncertain. Values come from the double word
 // rounded to F; they are not claimed correctly rounded (that is the oracle's job): a distance
 // far below the radius cancels (error about u^2 of the radius), and where the nearest face of
-// a centre inside cannot be called (two faces at nearly equal distance) the values come from F
-// and the witness may lie on the other face (1e15 ulps of the scale, measured on sphere-obb's
-// degenerate family by `cdref campaign --query sphere-obb --impl robust-double`). The full query and decide() always classify
+// a centre inside cannot be called (two faces at nearly equal distance) the values come from
+// the double words with lenient signs (words.hpp; the sphere's query relative to its centre:
+// about_centre), and the sphere's witness is 4 ulps off at worst on sphere-obb's degenerate
+// family (`cdref campaign --query sphere-obb --impl robust-double --n 500`). The full query and decide() always classify
 // alike: when the classification is certain but a later step of the double-word evaluation is
 // not (two faces entered at nearly the same parameter, a closest point on a face's border),
 // the full query's values come from F and its classification is the certain one.
@@ -34,6 +38,7 @@
 #include <cdref/solid/obb.hpp>
 #include <type_traits>
 
+#include "ray_box.hpp"
 #include "words.hpp"
 
 namespace cdref::robust {
@@ -71,6 +76,16 @@ int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
   if constexpr (std::is_same_v<F, double>) return oracle::sphere_obb::filter(s, b);
   else return oracle::sat::unknown;
 }
+// A segment or a ray and an axis-aligned box meet exactly when Algorithm 3.3 hits, and its
+// robust certificate (ray_box.hpp: exact outcodes, the slab parameters as accurate pairs, exact
+// ties) decides them at every F: on uniform cases for less than the static bounds, and where
+// those cannot decide (a shot touching the box 10^12 from the origin) in tens of nanoseconds
+// where the separating axes on double words take a microsecond. For those two pairs it takes
+// the first stage's place; the double words come second.
+template <class A, class B, class F>
+inline constexpr bool has_slab_certificate =
+    (std::is_same_v<A, Segment<F>> || std::is_same_v<A, Ray<F>>) && std::is_same_v<B, Box<F>>;
+
 }  // namespace detail
 
 // ---- separating axes ----
@@ -79,18 +94,28 @@ int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
   Separation<F> separate(const A<F>& a, const B<F>& b) {                                    \
     check(a, NA);                                                                           \
     check(b, NB);                                                                           \
-    const int f = detail::first_stage<F>(a, b);                                             \
-    Separation<F> s = detail::separation<F>(a, b).first;                                    \
-    if (f != oracle::sat::unknown) s.intersect = f != 0;                                    \
+    auto [s, certain] = detail::separation<F>(a, b);                                        \
+    if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
+      if (!certain) s.intersect = decide(a, b).value; /* as decide_separation */            \
+    } else if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) {     \
+      s.intersect = f != 0;                                                                 \
+    }                                                                                       \
     return s;                                                                               \
   }                                                                                         \
   template <class F>                                                                        \
   Decision decide_separation(const A<F>& a, const B<F>& b) {                                \
     check(a, NA);                                                                           \
     check(b, NB);                                                                           \
-    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
-    const auto [s, certain] = detail::separation<F>(a, b);                                  \
-    return {s.intersect, certain};                                                          \
+    if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
+      const Decision slab = decide(a, b); /* before the first stage: it costs less */       \
+      if (slab.certain) return slab;                                                        \
+      const auto [s, certain] = detail::separation<F>(a, b);                                \
+      return certain ? Decision{s.intersect, true} : slab;                                  \
+    } else {                                                                                \
+      if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
+      const auto [s, certain] = detail::separation<F>(a, b);                                \
+      return {s.intersect, certain};                                                        \
+    }                                                                                       \
   }                                                                                         \
   template <class F>                                                                        \
   bool intersect(const A<F>& a, const B<F>& b) {                                            \
