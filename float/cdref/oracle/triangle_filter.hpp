@@ -9,7 +9,10 @@
 // is the book's at an exact type.
 //
 // ---- Ray and segment casts on a triangle (book/ray_triangle.hpp) ---------------------------
-// The orientation form of the test. With A, B, C the vertices relative to the
+// First a coordinate plane, by exact comparisons of the inputs: the triangle's bounding box
+// apart from the segment's, or on the far side of the ray's source along an axis the ray does
+// not climb (d_i >= 0 and every v_k,i < s_i, or d_i <= 0 and every v_k,i > s_i): a miss.
+// Then the orientation form of the test. With A, B, C the vertices relative to the
 // source s, d the direction (t - s for a segment) and n = (v1 - v0) x (v2 - v0):
 //   w0 = d . (B x C), w1 = d . (C x A), w2 = d . (A x B)   (sum D = d . n),
 //   Ns = (v0 - s) . n, and for the segment Nt = (v0 - t) . n.
@@ -28,7 +31,11 @@
 // same certain sign and Ns (and Nt) certainly have theirs. A non-finite value leaves the case to the next stage.
 //
 // ---- A sphere and a triangle (book/sphere_triangle.hpp) -------------------------------------
-// Two certificates from one point of the triangle, with static error bounds:
+// First a plane x_i = c_i +- rho: with X = fl(v - c) (rounding is monotone and errs by at most
+// u |v_i - c_i|, none where it underflows), X_k,i > fl(rho (1 + 2u)) >= rho (1 + u) for the three
+// vertices proves v_k,i - c_i > rho: the triangle lies beyond the plane, the sphere on its
+// side (also when rho is subnormal: a normal X_k,i then exceeds rho by more than its error).
+// Then two certificates from one point of the triangle, with static error bounds:
 // X_k = fl(v_k - c) (the vertices relative to the centre, one rounding each);
 // (u, v) the barycentric coordinates of the book's closest point computed in
 // double, clamped so that u, v >= 0 and u + v <= 1 hold exactly; the point
@@ -47,6 +54,8 @@
 // the case to the next stage.
 //
 // ---- Two triangles (book/triangle_triangle.hpp) ---------------------------------------------
+// First the bounding boxes, by exact comparisons of the inputs: apart along an axis, the
+// triangles are apart.
 // (a) A plane: the signs of dB_k = (b_k - a0) . ((a1 - a0) x (a2 - a0)), and of
 // dA_k the other way, each a triple product of rounded differences with the
 // static bound above; three certain signs alike separate.
@@ -86,6 +95,17 @@ inline int triple_sign(const double (&a)[3], const double (&b)[3], const double 
 }
 
 inline int filter(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir, const Triangle<double>& tri) {
+  // a coordinate plane first (exact comparisons of inputs): the triangle beyond the segment's
+  // box, or behind the ray's source along an axis it does not climb
+  for (int i = 0; i < 3; ++i) {
+    const double lo = std::min(tri.vertex[0][i], std::min(tri.vertex[1][i], tri.vertex[2][i]));
+    const double hi = std::max(tri.vertex[0][i], std::max(tri.vertex[1][i], tri.vertex[2][i]));
+    if (t) {
+      if (hi < std::min(s[i], (*t)[i]) || lo > std::max(s[i], (*t)[i])) return 0;
+    } else if ((dir[i] >= 0 && hi < s[i]) || (dir[i] <= 0 && lo > s[i])) {
+      return 0;
+    }
+  }
   double A[3][3], d[3], e1[3], e2[3];
   for (int i = 0; i < 3; ++i) {
     for (int k = 0; k < 3; ++k) A[k][i] = tri.vertex[k][i] - s[i];
@@ -155,6 +175,12 @@ inline int filter(const Sphere<double>& s, const Triangle<double>& t) {
   double X[3][3];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) X[k][i] = t.vertex[k][i] - s.center[i];
+  // a coordinate plane first: every vertex beyond c_i + rho (or below c_i - rho)
+  const double r1 = s.radius * (1 + 2 * u_);
+  for (int i = 0; i < 3; ++i) {
+    const double lo = std::min(X[0][i], std::min(X[1][i], X[2][i])), hi = std::max(X[0][i], std::max(X[1][i], X[2][i]));
+    if (lo > r1 || hi < -r1) return 0;
+  }
   double u, v;
   closest_barycentric(X, u, v);
   // clamp: u in [0, 1], v in [0, 1 - u] with u + v <= 1 exactly
@@ -215,6 +241,14 @@ inline bool plane_separates(const Triangle<double>& p, const Triangle<double>& t
 }
 
 inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
+  // a coordinate plane first (exact comparisons of inputs): boxes apart along an axis
+  for (int i = 0; i < 3; ++i) {
+    const double alo = std::min(a.vertex[0][i], std::min(a.vertex[1][i], a.vertex[2][i]));
+    const double ahi = std::max(a.vertex[0][i], std::max(a.vertex[1][i], a.vertex[2][i]));
+    const double blo = std::min(b.vertex[0][i], std::min(b.vertex[1][i], b.vertex[2][i]));
+    const double bhi = std::max(b.vertex[0][i], std::max(b.vertex[1][i], b.vertex[2][i]));
+    if (ahi < blo || bhi < alo) return 0;
+  }
   bool finite = true;
   if (plane_separates(a, b, finite) || plane_separates(b, a, finite)) return finite ? 0 : unknown;
   if (!finite) return unknown;
