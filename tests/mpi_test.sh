@@ -46,7 +46,8 @@ done
 
 # a job whose ranks RANKS (r[,r...]) kill themselves with SIGKILL right after their first
 # checkpoint written while working (cdref-mpi's CDREF_MPI_TEST_KILL_RANKS): a rank lost mid-run,
-# whatever this machine's speed. The job must fail and leave FILE behind.
+# whatever this machine's speed (a rank that no work reached, the others having finished it
+# first, dies after its last checkpoint). The job must fail and leave FILE behind.
 mpi_killed() {  # mpi_killed NP RANKS FILE ARGS...
   local np=$1 ranks=$2 file=$3; shift 3
   if CDREF_MPI_TEST_KILL_RANKS=$ranks "$mpirun" --oversubscribe --mca odls_base_sigkill_timeout 0 \

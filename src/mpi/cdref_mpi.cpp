@@ -190,6 +190,12 @@ struct Part {
       if (die_after_checkpoint && !path.empty()) std::raise(SIGKILL);
     }
   }
+  // The last checkpoint, when no work is left for this rank (a rank to die that no work
+  // reached dies here: the job must still fail).
+  void finish() {
+    write();
+    if (die_after_checkpoint && !path.empty()) std::raise(SIGKILL);
+  }
 };
 
 // Rank 0 before any work: the generation of this run and what earlier ones finished.
@@ -335,7 +341,8 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   // Fault injection for tests/mpi_test.sh: CDREF_MPI_TEST_KILL_RANKS=r[,r...] makes those ranks
   // kill themselves (SIGKILL) right after their first checkpoint written while working, so that
   // the resume tests lose a rank mid-run whatever the machine's speed (killing it from outside
-  // raced with a rank that had already finished its share).
+  // raced with a rank that had already finished its share), or after their last one when no
+  // work reached them (the other ranks finished it first: the job still fails).
   if (const char* kill = std::getenv("CDREF_MPI_TEST_KILL_RANKS")) {
     std::string list = std::string(",") + kill + ",";
     part.die_after_checkpoint = list.find("," + std::to_string(rank) + ",") != std::string::npos;
@@ -351,7 +358,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
     std::thread local([&] {
       try {
         for (ItemSet::Range r; (r = disp.take(spec.threads)).first < r.second;) part.run(r);
-        part.write();
+        part.finish();
       } catch (...) {
         failed = std::current_exception();
         stop = true;
@@ -382,7 +389,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
       if (msg[0] == msg[1]) break;
       part.run({msg[0], msg[1]});
     }
-    part.write();
+    part.finish();
   }
   const auto t_work = Clock::now();
   {  // every rank done: the reduction timed alone
