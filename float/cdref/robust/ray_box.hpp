@@ -126,6 +126,11 @@
 //     enters = false, lambda_enter = 0) is returned exactly.
 //     The normal is the book's unit vector of the entering face.
 //
+// At double the oracle's first stage runs first (oracle/box_cast_filter.hpp: the outcodes and
+// the plane pairs in double against static bounds): where it decides, decide(), hit() and the
+// cast's classification take its answer, the book's at an exact type (the steps above give
+// the same wherever they are certain); the cast still computes its values by the steps above.
+//
 // decide(): value = the classification above; certain == false iff some comparison of
 // step 5 was left uncertain by (c), which (**) excludes: outside that (inputs mixing, at
 // double, magnitudes near 2^-1000 with ones near 2^+50) only where S is within k eta' of
@@ -135,6 +140,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cdref/oracle/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
@@ -467,6 +473,21 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
   return out;
 }
 
+// At double, the oracle's first stage (oracle/box_cast_filter.hpp: the outcodes and the plane
+// pairs in double against static bounds) before the steps above: 1 (a hit), 0 (a miss) or 2
+// (undecided; always at float and long double). Where it decides, its answer is the book's at
+// an exact type, so every entry point takes it (decide(), hit() and the cast classify alike).
+template <class F>
+int first_stage(const Segment<F>& seg, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(seg, box);
+  else return oracle::staged::unknown;
+}
+template <class F>
+int first_stage(const Ray<F>& ray, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(ray, box);
+  else return oracle::staged::unknown;
+}
+
 }  // namespace box_detail
 
 // Every mask bit is honoured as results.hpp says (a quantity not asked for stays 0); hit,
@@ -475,31 +496,25 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const Box<F>& box, unsigned w = want_cast) {
   check(seg, "segment");
   check(box, "box");
-  return box_detail::evaluate(seg.source, seg.target, box, true, w).cast;
+  Cast<F> c = box_detail::evaluate(seg.source, seg.target, box, true, w).cast;
+  if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) c.hit = f != 0;
+  return c;
 }
 
 template <class F>
 Cast<F> cast(const Ray<F>& ray, const Box<F>& box, unsigned w = want_cast) {
   check(ray, "ray");
   check(box, "box");
-  return box_detail::evaluate(ray.source, ray.direction, box, false, w).cast;
-}
-
-// The decision alone: the parameters are still needed (step 5), the outputs are not.
-template <class F>
-bool hit(const Segment<F>& seg, const Box<F>& box) {
-  return cast(seg, box, 0).hit;
-}
-
-template <class F>
-bool hit(const Ray<F>& ray, const Box<F>& box) {
-  return cast(ray, box, 0).hit;
+  Cast<F> c = box_detail::evaluate(ray.source, ray.direction, box, false, w).cast;
+  if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) c.hit = f != 0;
+  return c;
 }
 
 template <class F>
 Decision decide(const Segment<F>& seg, const Box<F>& box) {
   check(seg, "segment");
   check(box, "box");
+  if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(seg.source, seg.target, box, true, 0).decision;
 }
 
@@ -507,7 +522,19 @@ template <class F>
 Decision decide(const Ray<F>& ray, const Box<F>& box) {
   check(ray, "ray");
   check(box, "box");
+  if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(ray.source, ray.direction, box, false, 0).decision;
+}
+
+// The decision alone (the first stage, else the parameters of step 5; the outputs are not needed).
+template <class F>
+bool hit(const Segment<F>& seg, const Box<F>& box) {
+  return decide(seg, box).value;
+}
+
+template <class F>
+bool hit(const Ray<F>& ray, const Box<F>& box) {
+  return decide(ray, box).value;
 }
 
 }  // namespace cdref::robust
