@@ -199,7 +199,8 @@ auto on_words_lenient(const A& a, const B& b, Fn f, Scale* used = nullptr) -> de
 
 // A value of the lenient double words (in units scaled by 2^k: k = 0 for parameters and unit
 // normals), scaled back, or F's own value f of the same output where f lies within the double
-// word's enclosure [hi + lo - e, hi + lo + e]: both are then within the enclosure's width of
+// word's enclosure [hi + lo - e, hi + lo + e] (tested in long double, with a thousandth of e to
+// spare: a choice between two values, not a bound): both are then within the enclosure's width of
 // the value along the branch taken, and f keeps what F computes exactly (a coordinate of 0 at
 // a vertex, where the double word carries a residue of u^2 that is an error of 10^18 ulps).
 template <class F>
