@@ -496,18 +496,22 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const Box<F>& box, unsigned w = want_cast) {
   check(seg, "segment");
   check(box, "box");
-  Cast<F> c = box_detail::evaluate(seg.source, seg.target, box, true, w).cast;
-  if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) c.hit = f != 0;
-  return c;
+  auto e = box_detail::evaluate(seg.source, seg.target, box, true, w);
+  // where the steps above are certain their classification is exact already
+  if (!e.decision.certain)
+    if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) e.cast.hit = f != 0;
+  return e.cast;
 }
 
 template <class F>
 Cast<F> cast(const Ray<F>& ray, const Box<F>& box, unsigned w = want_cast) {
   check(ray, "ray");
   check(box, "box");
-  Cast<F> c = box_detail::evaluate(ray.source, ray.direction, box, false, w).cast;
-  if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) c.hit = f != 0;
-  return c;
+  auto e = box_detail::evaluate(ray.source, ray.direction, box, false, w);
+  // where the steps above are certain their classification is exact already
+  if (!e.decision.certain)
+    if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) e.cast.hit = f != 0;
+  return e.cast;
 }
 
 template <class F>

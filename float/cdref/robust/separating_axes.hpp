@@ -97,8 +97,8 @@ inline constexpr bool has_slab_certificate =
     auto [s, certain] = detail::separation<F>(a, b);                                        \
     if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
       if (!certain) s.intersect = decide(a, b).value; /* as decide_separation */            \
-    } else if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) {     \
-      s.intersect = f != 0;                                                                 \
+    } else if (!certain) { /* where the double words are certain they are exact already */ \
+      if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) s.intersect = f != 0; \
     }                                                                                       \
     return s;                                                                               \
   }                                                                                         \
@@ -152,9 +152,8 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
     c.point = Scale{-sc.k}.len(c.point);  // parameters and unit normals do not scale
     return {c, {r->hit, true}};
   }
-  // the values from the double words with lenient signs where they complete with a hit
-  // (words.hpp), else from F
-  // (F's own value kept where it lies within their enclosure: words.hpp)
+  // the values from the double words with lenient signs where they complete with a hit, F's
+  // own value kept where it lies within their enclosure (words.hpp); else from F
   Cast<F> c = solid::cast(a, b, w);
   const auto lw = on_words_lenient(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc);
   if (lw && lw->hit) take_lenient_values<F>(c, *lw, sc.k);
@@ -186,9 +185,11 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
   Cast<F> cast(const A<F>& a, const OrientedBox<F>& b, unsigned w = want_cast) { \
     check(a, NA);                                                             \
     check(b, "oriented box");                                                 \
-    Cast<F> c = detail::cast_eval(a, b, w).first;                             \
-    /* the cast hits exactly when the segment or ray meets the solid */       \
-    if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
+    auto [c, d] = detail::cast_eval(a, b, w);                                 \
+    /* the cast hits exactly when the segment or ray meets the solid; where */ \
+    /* the double words are certain they are exact already */                 \
+    if (!d.certain)                                                           \
+      if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
     return c;                                                                 \
   }                                                                           \
   template <class F>                                                          \
@@ -210,8 +211,9 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w = want_proximity) {
   check(s, "sphere");
   check(b, "oriented box");
-  Proximity<F> p = detail::proximity_eval(s, b, w).first;
-  if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
+  auto [p, d] = detail::proximity_eval(s, b, w);
+  if (!d.certain)  // (where the double words are certain they are exact already)
+    if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
   return p;
 }
 template <class F>

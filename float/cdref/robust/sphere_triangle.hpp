@@ -64,11 +64,12 @@ std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, cons
       },
       [](const auto& x, const auto& y) { return book::intersect(x, y); });
 }
-// Proximity's values from the double words, its classification from the first stage where it
-// decides (the values lie on the first stage's side wherever the double words complete).
+// Proximity's values from the double words, its classification from them where they are
+// certain, else from the first stage where it decides.
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
   auto r = sphere_triangle_words(s, t, w);
+  if (r.second.certain) return r;  // exact already
   if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
     r.first.intersect = f != 0;
     r.second = {f != 0, true};
