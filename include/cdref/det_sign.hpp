@@ -15,7 +15,9 @@
 //                        fuzz target found a frame with two equal axes of size 2^1020 and a
 //                        subnormal third, whose determinant 0 the bound 16 eta alone called
 //                        negative). So |d~| > 8u p~ + 16 eta + 2 eta (|a_0| + |a_1| + |a_2|)
-//                        decides the sign (each eta |a_i| is exact or rounds below eta). Otherwise (near a
+//                        decides the sign (each eta |a_i| is exact or rounds below eta); at
+//                        float, double and long double the bound takes 2^64 eta for eta, a
+//                        normal number (see below). Otherwise (near a
 //                        degenerate frame, or p~ not finite) the inputs are converted exactly
 //                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
 //                        exactly;
@@ -38,7 +40,7 @@ namespace detail {
 
 // det[a b c] over GMP rationals, from exact conversions of the entries.
 template <class T>
-int det3_sign_rational(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+[[gnu::noinline, gnu::cold]] int det3_sign_rational(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   mpq_t m[9], t, u, d;
   for (auto& q : m) mpq_init(q);
   mpq_init(t);
@@ -75,6 +77,26 @@ T abs_of(const T& x) {
 
 template <class T>
 int det3_sign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  if constexpr (std::is_floating_point_v<T>) {
+    // the filter below on plain scalars (every oriented box's input check runs it), its
+    // result taken without a branch on the sign (a frame's handedness is data, not a pattern)
+    using std::fabs;
+    const T b12 = b[1] * c[2], b21 = b[2] * c[1], b20 = b[2] * c[0], b02 = b[0] * c[2];
+    const T b01 = b[0] * c[1], b10 = b[1] * c[0];
+    const T d = a[0] * (b12 - b21) + a[1] * (b20 - b02) + a[2] * (b01 - b10);
+    const T a0 = fabs(a[0]), a1 = fabs(a[1]), a2 = fabs(a[2]);
+    // (|fl(x y)| = fl(|x| |y|): rounding to nearest is symmetric, so the products are shared)
+    const T p = a0 * (fabs(b12) + fabs(b21)) + a1 * (fabs(b20) + fabs(b02)) + a2 * (fabs(b01) + fabs(b10));
+    // eta (16 + 2 (|a_0| + |a_1| + |a_2|)) with eta replaced by the normal number tiny = 2^64 eta
+    // (arithmetic on subnormals is slow, and the larger bound only sends determinants below
+    // ~tiny to the exact path; it also covers the bound's own roundings)
+    constexpr T u = number_traits<T>::unit_roundoff();
+    constexpr T tiny = number_traits<T>::denorm_min() * T(0x1p64);  // 2^64 eta: 2^-1010 for double
+    const T bound = u * T(8) * p + tiny * (T(16) + T(2) * (a0 + a1 + a2));
+    if (fabs(d) > bound && std::isfinite(p) && std::isfinite(d)) [[likely]]
+      return int(d > 0) - int(d < 0);
+    return detail::det3_sign_rational(a, b, c);
+  }
   const T d = a.dot(b.cross(c));
   if constexpr (number_traits<T>::is_exact) {
     return d > T(0) ? 1 : (d < T(0) ? -1 : 0);

@@ -50,8 +50,9 @@ struct ieee_traits {
   // -> float are one IEEE conversion, which rounds to nearest, ties to even.
   static double to_double(const F& x) { return static_cast<double>(x); }
   static float to_float(const F& x) { return static_cast<float>(x); }
-  static F unit_roundoff() { return std::ldexp(F(1), -std::numeric_limits<F>::digits); }
-  static F denorm_min() { return std::numeric_limits<F>::denorm_min(); }
+  // u = 2^-p = epsilon / 2 (epsilon = 2^(1-p)), exact and a compile-time constant
+  static constexpr F unit_roundoff() { return std::numeric_limits<F>::epsilon() / 2; }
+  static constexpr F denorm_min() { return std::numeric_limits<F>::denorm_min(); }
   // Exact: a float, double or x87 long double has at most 64 significant bits.
   static void to_rational(mpq_t q, const F& x) {
     mpfr_t m;

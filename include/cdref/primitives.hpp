@@ -148,6 +148,20 @@ template <class T>
 [[noreturn, gnu::cold, gnu::noinline]] void negative(const T& x, const char* name, const char* what) {
   throw invalid_input(std::string(name) + " " + what + " (" + show(x) + ")");
 }
+// "<name> <what> <where> (<x>)", e.g. "box extent is negative along y (-1)"
+template <class T>
+[[noreturn, gnu::cold, gnu::noinline]] void negative_along(const T& x, const char* name, const char* what,
+                                                          const std::string& where) {
+  throw invalid_input(std::string(name) + " " + what + " " + where + " (" + show(x) + ")");
+}
+template <class T>
+[[noreturn, gnu::cold, gnu::noinline]] void inverted(const T& lo, const T& hi, const char* name, int i) {
+  throw invalid_input(std::string(name) + " is inverted along " + axis_name(i) + " (min " + show(lo) + " > max " +
+                      show(hi) + ")");
+}
+[[noreturn, gnu::cold, gnu::noinline]] inline void fail(const char* name, const char* what) {
+  throw invalid_input(std::string(name) + " " + what);
+}
 
 template <class T>
 void check_finite(const T& x, const char* name, const char* field) {
@@ -182,9 +196,8 @@ void check(const Box<T>& b, const char* name = "box") {
   detail::check_finite(b.center, name, "centre");
   detail::check_finite(b.extent, name, "extent");
   for (int i = 0; i < 3; ++i)
-    if (b.extent[i] < T(0))
-      throw invalid_input(std::string(name) + " extent is negative along " + detail::axis_name(i) + " (" +
-                          detail::show(b.extent[i]) + ")");
+    if (b.extent[i] < T(0)) [[unlikely]]
+      detail::negative_along(b.extent[i], name, "extent is negative along", detail::axis_name(i));
 }
 
 template <class T>
@@ -192,9 +205,8 @@ void check(const MinMaxBox<T>& b, const char* name = "box") {
   detail::check_finite(b.min, name, "min corner");
   detail::check_finite(b.max, name, "max corner");
   for (int i = 0; i < 3; ++i)
-    if (b.max[i] < b.min[i])
-      throw invalid_input(std::string(name) + " is inverted along " + detail::axis_name(i) + " (min " +
-                          detail::show(b.min[i]) + " > max " + detail::show(b.max[i]) + ")");
+    if (b.max[i] < b.min[i]) [[unlikely]]
+      detail::inverted(b.min[i], b.max[i], name, i);
 }
 
 template <class T>
@@ -207,8 +219,8 @@ template <class T>
 void check(const Ray<T>& r, const char* name = "ray") {
   detail::check_finite(r.source, name, "source");
   detail::check_finite(r.direction, name, "direction");
-  if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0))
-    throw invalid_input(std::string(name) + " direction is the zero vector");
+  if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0)) [[unlikely]]
+    detail::fail(name, "direction is the zero vector");
 }
 
 template <class T>
@@ -233,11 +245,10 @@ void check(const OrientedBox<T>& b, const char* name = "oriented box") {
   detail::check_finite(b.extent, name, "extent");
   for (int k = 0; k < 3; ++k) detail::check_finite(b.axis[k], name, field[k]);
   for (int i = 0; i < 3; ++i)
-    if (b.extent[i] < T(0))
-      throw invalid_input(std::string(name) + " extent is negative along axis " + std::to_string(i) + " (" +
-                          detail::show(b.extent[i]) + ")");
-  if (det3_sign(b.axis[0], b.axis[1], b.axis[2]) == 0)
-    throw invalid_input(std::string(name) + " axes are linearly dependent (det[a0 a1 a2] = 0 exactly)");
+    if (b.extent[i] < T(0)) [[unlikely]]
+      detail::negative_along(b.extent[i], name, "extent is negative along", "axis " + std::to_string(i));
+  if (det3_sign(b.axis[0], b.axis[1], b.axis[2]) == 0) [[unlikely]]
+    detail::fail(name, "axes are linearly dependent (det[a0 a1 a2] = 0 exactly)");
 }
 
 }  // namespace cdref
