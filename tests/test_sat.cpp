@@ -5,6 +5,8 @@
 // Expected answers are exact: the separation and the index of the first separating axis.
 #include <cdref/robust/separating_axes.hpp>
 
+#include <random>
+
 #include "support.hpp"
 
 using namespace cdref;
@@ -373,6 +375,130 @@ TEST_CASE("with exactly orthonormal frames the book's oriented-box tests are the
   CHECK(intersecting > 30);
   CHECK(hits > 30);
   CHECK(inside > 30);
+}
+
+TEST_CASE("the oriented box's slab filter is the solid's answer wherever it decides", "[sat][obb][oracle]") {
+  // The first stage for a segment or a ray and an oriented box (oracle/box_cast_filter.hpp:
+  // Algorithm 3.3 in face coordinates, static bounds) against Theorem 3.1 on the polytopes at
+  // CGAL::Gmpq, on shots aimed at a face, an edge or a corner to within 2^-k of an extent (k up
+  // to 60: the exact boundary and both sides of it), from near and from 10^12 away, on
+  // rotated, sheared and scaled frames, axis-aligned ones (exact zeros) and zero extents.
+  using Q = CGAL::Gmpq;
+  std::mt19937_64 g(20261124);
+  std::uniform_real_distribution<double> U(-1, 1);
+  auto vec = [&] { return Vec3<double>(U(g), U(g), U(g)); };
+  auto toq = [](const Vec3<double>& v) { return Vec3<Q>(Q(v[0]), Q(v[1]), Q(v[2])); };
+  int decided = 0, wrong = 0, hits = 0, total = 0;
+  for (int n = 0; n < 6000; ++n) {
+    OrientedBox<double> b;
+    b.center = vec();
+    const int kind = n % 6;
+    if (kind == 0) {  // axis-aligned, permuted and signed: exact zeros everywhere
+      const int p = int(g() % 3);
+      for (int k = 0; k < 3; ++k) {
+        b.axis[k] = Vec3<double>(0, 0, 0);
+        b.axis[k][(k + p) % 3] = g() % 2 ? 1.0 : -1.0;
+      }
+    } else {
+      Vec3<double> a0 = vec().normalized(), t = vec();
+      const Vec3<double> a1 = a0.cross(t).normalized();
+      b.axis = {a0, a1, a0.cross(a1)};
+      if (kind >= 4)  // sheared and scaled: a parallelepiped
+        for (auto& a : b.axis) a = std::ldexp(1.0, int(g() % 7) - 3) * (a + 0.4 * vec());
+    }
+    for (int k = 0; k < 3; ++k) b.extent[k] = g() % 10 == 0 ? 0.0 : 0.1 + std::fabs(U(g));
+    // a point on or near the boundary, in the box's own coordinates
+    Vec3<double> aim = b.center;
+    const int dims = 1 + int(g() % 3), first = int(g() % 3);
+    for (int j = 0; j < 3; ++j) {
+      const int i = (first + j) % 3;
+      const double h = b.extent[i];
+      const int e = int(g() % 61);
+      const double gi = j < dims ? (g() % 2 ? h : -h) * (1 + (g() % 3 == 0 ? 0.0 : (g() % 2 ? 1 : -1) * std::ldexp(1.0, -e)))
+                                 : h * U(g);
+      aim += gi * b.axis[i];
+    }
+    const double far = n % 4 == 3 ? 1e12 : 4;
+    const Vec3<double> w = vec();
+    if (w.squaredNorm() == 0) continue;
+    const bool ray = n % 2 == 1;
+    const Segment<double> seg{aim + far * w, g() % 4 == 0 ? aim : Vec3<double>(aim - 2 * U(g) * w)};
+    const Ray<double> r{aim + far * w, Vec3<double>(-w + 1e-3 * U(g) * vec())};
+    const int f = ray ? oracle::sat::filter(r, b) : oracle::sat::filter(seg, b);
+    const OrientedBox<Q> bq{toq(b.center), toq(b.extent), {toq(b.axis[0]), toq(b.axis[1]), toq(b.axis[2])}};
+    const bool truth = ray ? solid::separate(Ray<Q>{toq(r.source), toq(r.direction)}, bq).intersect
+                           : solid::separate(Segment<Q>{toq(seg.source), toq(seg.target)}, bq).intersect;
+    ++total;
+    hits += truth;
+    if (f != oracle::sat::unknown) {
+      ++decided;
+      if (f != int(truth)) {
+        ++wrong;
+        INFO("case " << n << (ray ? " ray" : " segment"));
+        CHECK(f == int(truth));
+      }
+    }
+  }
+  CHECK(wrong == 0);
+  // both outcomes occur, and the filter decides most shots (the others are within its bound
+  // of the boundary)
+  CHECK(hits > total / 10);
+  CHECK(total - hits > total / 10);
+  CHECK(decided > total / 2);
+}
+
+TEST_CASE("two oriented boxes: the face-coordinate filter is the solid's answer wherever it decides",
+          "[sat][obb][oracle]") {
+  // oracle/sat_filter.hpp's first stage for two oriented boxes (Theorem 3.1 in A's face
+  // coordinates, static bounds) against Theorem 3.1 on the polytopes at CGAL::Gmpq: rotated,
+  // sheared and scaled frames, B placed along a random direction from just inside to just
+  // outside contact (a distance found in double, then moved by 2^-k), near and 10^12 away.
+  using Q = CGAL::Gmpq;
+  std::mt19937_64 g(112426);
+  std::uniform_real_distribution<double> U(-1, 1);
+  auto vec = [&] { return Vec3<double>(U(g), U(g), U(g)); };
+  auto toq = [](const Vec3<double>& v) { return Vec3<Q>(Q(v[0]), Q(v[1]), Q(v[2])); };
+  auto box = [&](int kind) {
+    OrientedBox<double> b;
+    Vec3<double> a0 = vec().normalized(), t = vec();
+    const Vec3<double> a1 = a0.cross(t).normalized();
+    b.axis = {a0, a1, a0.cross(a1)};
+    if (kind == 1)
+      for (auto& a : b.axis) a = std::ldexp(1.0, int(g() % 5) - 2) * (a + 0.4 * vec());
+    for (int k = 0; k < 3; ++k) b.extent[k] = 0.1 + std::fabs(U(g));
+    return b;
+  };
+  int decided = 0, hits = 0, total = 0;
+  for (int n = 0; n < 3000; ++n) {
+    OrientedBox<double> A = box(n % 3 == 2), B = box(n % 5 == 4);
+    const double far = n % 4 == 3 ? 1e12 : 1;
+    A.center = far * vec();
+    const Vec3<double> w = vec().normalized();
+    // the contact distance along w, by bisection on the filter-free double test
+    double lo = 0, hi = 8;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = (lo + hi) / 2;
+      B.center = A.center + mid * w;
+      (book::separate(book::polytope(A), book::polytope(B)).intersect ? lo : hi) = mid;
+    }
+    const double d = n % 3 == 0 ? 8 * std::fabs(U(g)) : lo * (1 + U(g) * std::ldexp(1.0, -int(g() % 50)));
+    B.center = A.center + d * w;
+    const int f = oracle::sat::filter_face_coordinates(A, B);
+    const OrientedBox<Q> Aq{toq(A.center), toq(A.extent), {toq(A.axis[0]), toq(A.axis[1]), toq(A.axis[2])}};
+    const OrientedBox<Q> Bq{toq(B.center), toq(B.extent), {toq(B.axis[0]), toq(B.axis[1]), toq(B.axis[2])}};
+    const bool truth = solid::separate(Aq, Bq).intersect;
+    ++total;
+    hits += truth;
+    if (f != oracle::sat::unknown) {
+      ++decided;
+      INFO("case " << n);
+      REQUIRE(f == int(truth));
+    }
+    REQUIRE(oracle::sat::filter(A, B) != int(!truth));  // the whole first stage, too
+  }
+  CHECK(hits > total / 10);
+  CHECK(total - hits > total / 10);
+  CHECK(decided > total / 2);
 }
 
 TEST_CASE("the solid's sphere query on a parallelepiped", "[sat][obb]") {

@@ -7,12 +7,15 @@
 // stages:
 //
 //   1. filter    (separating axes) every candidate axis in double with one static error bound
-//                for the whole query; (sphere) a point of the box and a direction, each a
-//                certificate with a static bound (both in oracle/sat_filter.hpp, with their
-//                derivations: the robust tier's certified decisions run them first too);
+//                for the whole query; (a segment or a ray and an oriented box) Algorithm 3.3
+//                in the box's face coordinates with static bounds (box_cast_filter.hpp);
+//                (sphere) a point of the box and a direction, each a certificate with a
+//                static bound (oracle/sat_filter.hpp, with their derivations: the robust
+//                tier's certified decisions run them first too);
 //   2. double word  the robust versions' evaluation on oracle::Bounded2 (double words with a
-//                rigorous running bound; robust/separating_axes.hpp), certain when every
-//                decisive comparison is (Stage::expansion names this stage here);
+//                rigorous running bound; robust/separating_axes.hpp; for a segment or a ray
+//                and an oriented box the solid's cast decision first, then the axes), certain
+//                when every decisive comparison is (Stage::expansion names this stage here);
 //   3. rational  the formulation at CGAL::Gmpq.
 //
 #pragma once
@@ -31,8 +34,11 @@ namespace cdref::oracle {
 namespace sat {
 
 // Stage 2: the robust versions' double-word evaluation: 1, 0 or unknown.
+// (A segment or a ray and an oriented box: the solid's cast decision first, as there.)
 template <class A, class B>
 int double_word(const A& a, const B& b) {
+  if constexpr (robust::detail::has_cast_decision<A, B, double>)
+    if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
 }

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cdref/primitives.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace cdref::oracle::staged {
@@ -99,6 +100,7 @@ int hit_box_logic(const P& p) {
       if (th > 0) bt |= 2u << (2 * i);
     } else {
       const int d = p.dir_sign(i);
+      if (d == unknown) return unknown;
       if (d < 0 || (d == 0 && sl < 0)) bt |= 1u << (2 * i);
       if (d > 0 || (d == 0 && sh > 0)) bt |= 2u << (2 * i);
     }
@@ -118,6 +120,155 @@ int hit_box_logic(const P& p) {
   }
   return res;
 }
+// ---- Algorithm 3.3 on an oriented box, in face coordinates ----
+// The solid (solid/obb.hpp) is P = {c + sum_k g_k a_k : |g_k| <= h_k}. With the face normals
+// n_i = a_{i+1} x a_{i+2} and delta = a_0 . n_0 (n_i . a_k = delta [i = k]), the coordinate
+// Y_i = n_i . (p - c) of a point p is g_i delta, so p lies in P exactly when |Y_i| <= H_i =
+// h_i |delta| for every i: P is the axis-aligned box [-H, H] in Y (a linear map; a ray's
+// parameters are unchanged), and a segment or a ray meets P exactly when Algorithm 3.3 hits
+// that box (which is how the solid casts; the sign of delta, which swaps axis i's two planes of
+// a symmetric box, does not matter). So hit_box_logic decides it from these signs:
+//   outcodes   Y_i -+ H_i at the source and the target (or the sign of d_i = n_i . r, a ray);
+//   pairs      lambda_a <= lambda_b for an entering plane a (axis i) and an exiting plane b
+//              (axis j): with N = -(Y_s -+ H) on the plane's side, d = Y_t - Y_s (segment) or
+//              n . r (ray), lambda = N / d, and the sign of d known from the plane's role
+//              (entering the lower plane d_i > 0, the upper d_i < 0; leaving through the lower
+//              d_j < 0, the upper d_j > 0: both are certain once the outcodes are), the sign of
+//              lambda_a - lambda_b is sigma_i sigma_j sign(N_a d_j - N_b d_i).
+// Error bounds. Computed in double: n_i (2 roundings a component), D = a_0 . n_0 (5),
+// X = fl(p - c) (1), Y_i = n_i . X (6), H_i = h_i |D| (6; |D~| approximates |delta| as D~
+// does delta), Y -+ H (7), d = fl(Y_t - Y_s) (7) or n . r (5), N_a d_j - N_b d_i (16). Each is a
+// sum of monomials (a a X, h a a a, a a r and their products) whose roundings are at most the
+// counts above, so its error is at most gamma_K times the sum of the monomials' absolute values
+// (Higham 3.1, 3.3). The filter runs first with the static sums below (M_Y, M_d) and, where
+// they leave the case undecided, again with each quantity's own: with n+_i the cross
+// product's absolute expansion
+// (|a_{i+1,c+1} a_{i+2,c+2}| + |a_{i+1,c+2} a_{i+2,c+1}| for component c),
+//   P_i = n+_i . |X| + h_i D+  (Y -+ H; D+ = |a_0| . n+_0),  d: n+_i . (|X_s| + |X_t|) or n+_i . |r|,
+//   P_i(s) d+_j + P_j(s) d+_i  (N_a d_j - N_b d_i),
+// each from |X~| (|X| <= |X~| / (1 - u)) and a few roundings of nonnegative terms, which the
+// margins hold: an outcode's sign is certain beyond 8u P (gamma_7 <= 7.1u), a ray's d_i beyond
+// 6u d+_i (gamma_5), a pair's beyond 17u (P d+ + P d+) (gamma_16 <= 16.3u). Range: with m =
+// the largest |a_kc|, A = 2 m^2 and the static sums M_Y = A max(|X_s|_1, |X_t|_1) + 3 A m
+// max_i h_i (>= every P) and M_d = A (|X_s|_1 + |X_t|_1) or A |r|_1 (>= every d+), the filter
+// runs only for m in [2^-300, 2^300] and M_Y, M_d in [2^-450, 2^500]: then no value overflows
+// (each is below its own sum, M_Y M_d <= 2^1000), and the roundings that underflow (each off by
+// at most 2^-1075, carried through at most a factor |X|_1, m h or a d+) add less than 2^-100 u
+// M_Y to an outcode, 2^-100 u M_d to a d and 2^-90 u M_Y M_d to a pair, which every bound adds
+// too. Elsewhere the filter answers unknown.
+struct ObbFilter {
+  double sL[3], sU[3], tL[3], tU[3], d[3];
+  double es[3], et[3], ed[3], ps[3], dp[3], fc = 0, fo = 0, fd = 0;
+  bool bounded, ok = false;
+  const Vec3<double>& src;
+  const Vec3<double>& rt;
+  const OrientedBox<double>& box;
+  // The values and the static bounds (every P at most M_Y, every d+ at most M_d).
+  ObbFilter(const Vec3<double>& src_, const Vec3<double>& rt_, const OrientedBox<double>& b, bool segment)
+      : bounded(segment), src(src_), rt(rt_), box(b) {
+    const auto& a = b.axis;
+    double n[3][3];
+    for (int i = 0; i < 3; ++i) {
+      const auto& p = a[(i + 1) % 3];
+      const auto& q = a[(i + 2) % 3];
+      n[i][0] = p[1] * q[2] - p[2] * q[1];
+      n[i][1] = p[2] * q[0] - p[0] * q[2];
+      n[i][2] = p[0] * q[1] - p[1] * q[0];
+    }
+    const double D = std::fabs(a[0][0] * n[0][0] + a[0][1] * n[0][1] + a[0][2] * n[0][2]);
+    double m = 0, hmax = 0;
+    for (int k = 0; k < 3; ++k) {
+      m = std::max(m, std::max(std::fabs(a[k][0]), std::max(std::fabs(a[k][1]), std::fabs(a[k][2]))));
+      hmax = std::max(hmax, b.extent[k]);
+    }
+    double xs[3], xt[3];
+    for (int c = 0; c < 3; ++c) {
+      xs[c] = src[c] - b.center[c];
+      xt[c] = segment ? rt[c] - b.center[c] : rt[c];  // a ray's direction, as it is
+    }
+    const double ns = std::fabs(xs[0]) + std::fabs(xs[1]) + std::fabs(xs[2]);
+    const double nt = std::fabs(xt[0]) + std::fabs(xt[1]) + std::fabs(xt[2]);
+    const double A = 2 * m * m;
+    const double my = A * (segment ? std::max(ns, nt) : ns) + 3 * A * m * hmax;
+    const double md = A * (segment ? ns + nt : nt);
+    ok = m >= 0x1p-300 && m <= 0x1p300 && my >= 0x1p-450 && my <= 0x1p500 && md >= 0x1p-450 && md <= 0x1p500;
+    if (!ok) return;
+    fo = 0x1p-100 * u * my;
+    fd = 0x1p-100 * u * md;
+    fc = 0x1p-90 * u * my * md;
+    for (int i = 0; i < 3; ++i) {
+      const double H = b.extent[i] * D;
+      const double ys = n[i][0] * xs[0] + n[i][1] * xs[1] + n[i][2] * xs[2];
+      const double yt = n[i][0] * xt[0] + n[i][1] * xt[1] + n[i][2] * xt[2];
+      sL[i] = ys + H;
+      sU[i] = ys - H;
+      tL[i] = yt + H;
+      tU[i] = yt - H;
+      d[i] = segment ? yt - ys : yt;
+      ps[i] = my;
+      dp[i] = md;
+      es[i] = et[i] = 8 * u * my + fo;
+      ed[i] = 6 * u * md + fd;
+    }
+  }
+  // The bounds from each quantity's own sum of monomials (P_i, d+_i), for the cases the static
+  // ones leave undecided (a shot from far away, a frame with small components).
+  void tighten() {
+    const auto& a = box.axis;
+    double na[3][3];
+    for (int i = 0; i < 3; ++i) {
+      const auto& p = a[(i + 1) % 3];
+      const auto& q = a[(i + 2) % 3];
+      for (int c = 0; c < 3; ++c) {
+        const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        na[i][c] = std::fabs(p[c1] * q[c2]) + std::fabs(p[c2] * q[c1]);
+      }
+    }
+    const double Dp = std::fabs(a[0][0]) * na[0][0] + std::fabs(a[0][1]) * na[0][1] + std::fabs(a[0][2]) * na[0][2];
+    double as[3], at[3];
+    for (int c = 0; c < 3; ++c) {
+      as[c] = std::fabs(src[c] - box.center[c]);
+      at[c] = std::fabs(bounded ? rt[c] - box.center[c] : rt[c]);
+    }
+    for (int i = 0; i < 3; ++i) {
+      const double hp = box.extent[i] * Dp;
+      const double ss = na[i][0] * as[0] + na[i][1] * as[1] + na[i][2] * as[2];
+      const double st = na[i][0] * at[0] + na[i][1] * at[1] + na[i][2] * at[2];
+      ps[i] = ss + hp;
+      es[i] = 8 * u * ps[i] + fo;
+      et[i] = 8 * u * (st + hp) + fo;
+      dp[i] = bounded ? ss + st : st;
+      ed[i] = 6 * u * dp[i] + fd;
+    }
+  }
+  static int sign_of(double x, double e) { return x > e ? 1 : (x < -e ? -1 : unknown); }
+  int src_lo(int i) const { return sign_of(sL[i], es[i]); }
+  int src_hi(int i) const { return sign_of(sU[i], es[i]); }
+  int tgt_lo(int i) const { return sign_of(tL[i], et[i]); }
+  int tgt_hi(int i) const { return sign_of(tU[i], et[i]); }
+  int dir_sign(int i) const { return sign_of(d[i], ed[i]); }  // a ray's; never a certain 0
+  // sign(lambda_a - lambda_b): a an entering plane, b an exiting one (2i lower, 2i + 1 upper)
+  int compare(int a, int b) const {
+    const int i = a / 2, j = b / 2;
+    const double Na = -(a % 2 == 0 ? sL[i] : sU[i]), Nb = -(b % 2 == 0 ? sL[j] : sU[j]);
+    const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? -1 : 1);
+    const int r = sign_of(Na * d[j] - Nb * d[i], 17 * u * (ps[i] * dp[j] + ps[j] * dp[i]) + fc);
+    return r == unknown ? unknown : sigma * r;
+  }
+};
+inline int filter(ObbFilter&& f) {
+  if (!f.ok) return unknown;
+  if (const int r = hit_box_logic(f); r != unknown) return r;
+  f.tighten();
+  return hit_box_logic(f);
+}
+inline int filter(const Segment<double>& seg, const OrientedBox<double>& box) {
+  return filter(ObbFilter(seg.source, seg.target, box, true));
+}
+inline int filter(const Ray<double>& ray, const OrientedBox<double>& box) {
+  return filter(ObbFilter(ray.source, ray.direction, box, false));
+}
+
 inline int filter(const Segment<double>& seg, const Box<double>& box) {
   return hit_box_logic(BoxFilter(seg.source, seg.target, box, true));
 }

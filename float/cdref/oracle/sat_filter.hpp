@@ -1,7 +1,10 @@
 // cdref/oracle/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
 // every candidate separating axis of Theorem 3.1 evaluated in double against one static error
 // bound for the whole query, and for a sphere and an oriented box two certificates from one
-// point of the box. Plain double arithmetic on the query's inputs, so that both the oracle
+// point of the box; for a segment or a ray and an oriented box, Algorithm 3.3 in the box's
+// face coordinates (box_cast_filter.hpp) in their place, and for two oriented boxes Theorem 3.1
+// in A's face coordinates first (filter_face_coordinates below), these axes where it cannot
+// decide. Plain double arithmetic on the query's inputs, so that both the oracle
 // (exact/cdref/oracle/separating_axes.hpp: then the double words, then CGAL::Gmpq) and the
 // robust tier's certified decisions (robust/separating_axes.hpp, at double) run it first:
 // where it decides, its answer is the solid's at an exact type.
@@ -45,6 +48,8 @@
 #include <algorithm>
 #include <cdref/cdref.hpp>
 #include <cmath>
+
+#include "box_cast_filter.hpp"
 
 namespace cdref::oracle {
 
@@ -288,6 +293,113 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
   if (any_unknown) return unknown;
   if (axis) *axis = -1;
   return 1;
+}
+
+// A segment or a ray and an oriented box: Algorithm 3.3 in the box's face coordinates
+// (box_cast_filter.hpp: a segment or a ray meets the box exactly when that cast hits), a few
+// dozen operations where the axes above take six axis tests.
+inline int filter(const Segment<double>& s, const OrientedBox<double>& b, int* axis = nullptr) {
+  const int r = staged::filter(s, b);
+  if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
+  return r;
+}
+inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axis = nullptr) {
+  const int r = staged::filter(ray, b);
+  if (axis) *axis = r == 1 ? -1 : -2;
+  return r;
+}
+
+// ---- Stage 1 for two oriented boxes: Theorem 3.1 in A's face coordinates ----
+// The map p -> Y = N_A (p - c_A) (rows n_i = a_{i+1} x a_{i+2}, as in box_cast_filter.hpp) is
+// linear and invertible, so two boxes meet exactly when their images do, and Theorem 3.1 on
+// the images (the faces and edges of each) decides that. There A is the axis-aligned box
+// [-H, H] (H_i = h_i |delta_A|), and B is the parallelepiped about t = N_A (c_B - c_A) with
+// generators G_k = h_k N_A b_k (the columns of G: G_ik = h_k n_i . b_k). The 15 axes and the
+// test on each (separated iff s > 0, s = |t . L| - r_A - r_B; the exact identities
+// G_j . (G_{j+1} x G_{j+2}) = 0 for the other columns give r_B in closed form):
+//   e_i                 s = |t_i| - H_i - sum_k |G_ik|
+//   L_j = G_{j+1} x G_{j+2}   s = |t . L_j| - sum_i H_i |L_ji| - |G_j . L_j|
+//   e_i x G_k           s = |(G_k x t)_i| - H_{i+1} |G_{i+2,k}| - H_{i+2} |G_{i+1,k}|
+//                             - |L_{k+1,i}| - |L_{k+2,i}|   (G_k x G_{k+1} = L_{k+2}, ...)
+// Error bounds, counted as in box_cast_filter.hpp: n_i 2 roundings, delta 5, H 6, X = fl(c_B -
+// c_A) 1, t 6, G 6, L 14; then s carries at most K = 10 (faces of A), 25 (faces of B) and 17
+// (edges) on each monomial. With m_a, m_b the largest |a_kc|, |b_kc|, A2 = 2 m_a^2 and the
+// static sums T = A2 |X|_1 (t), Hy = 6 m_a^3 max h_A (H), Gb = 3 A2 m_b max h_B (G; L: 2 Gb^2),
+// the monomials' absolute values sum to at most S1 = T + Hy + 3 Gb, S2 = 6 Gb^2 (T + Hy + Gb)
+// and S3 = 2 Gb (T + Hy + 2 Gb); the bounds (K + 1) u S cover gamma_K S with the roundings of
+// S itself and |X| <= |X~| / (1 - u). Range: every static sum and m_a, m_b at most 2^100 (no
+// value exceeds 2^310); a rounding that underflows is off by at most 2^-1075 and is carried
+// through factors below 2^310, so 2^-600 added to every bound covers them all.
+// An axis that is exactly zero (parallel edges) has s = 0 and leaves the filter undecided;
+// sat::filter then runs the axes in world coordinates, which recognise exact zeros.
+inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedBox<double>& B) {
+  const auto& a = A.axis;
+  const auto& b = B.axis;
+  double n[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      n[i][c] = a[(i + 1) % 3][c1] * a[(i + 2) % 3][c2] - a[(i + 1) % 3][c2] * a[(i + 2) % 3][c1];
+    }
+  const double D = std::fabs(a[0][0] * n[0][0] + a[0][1] * n[0][1] + a[0][2] * n[0][2]);
+  double ma = 0, mb = 0, ha = 0, hb = 0, X[3];
+  for (int k = 0; k < 3; ++k) {
+    ma = std::max(ma, maxabs(&a[k][0]));
+    mb = std::max(mb, maxabs(&b[k][0]));
+    ha = std::max(ha, A.extent[k]);
+    hb = std::max(hb, B.extent[k]);
+    X[k] = B.center[k] - A.center[k];
+  }
+  const double A2 = 2 * ma * ma, T = A2 * norm1(X), Hy = 3 * A2 * ma * ha, Gb = 3 * A2 * mb * hb;
+  if (!(ma <= 0x1p100 && mb <= 0x1p100 && T <= 0x1p100 && Hy <= 0x1p100 && Gb <= 0x1p100)) return unknown;
+  constexpr double floor = 0x1p-600;
+  const double e1 = 11 * u * (T + Hy + 3 * Gb) + floor;
+  const double e2 = 156 * u * (Gb * Gb) * (T + Hy + Gb) + floor;
+  const double e3 = 36 * u * Gb * (T + Hy + 2 * Gb) + floor;
+  double t[3], H[3], G[3][3];
+  for (int i = 0; i < 3; ++i) {
+    t[i] = dot(n[i], X);
+    H[i] = A.extent[i] * D;
+    for (int k = 0; k < 3; ++k) G[i][k] = (n[i][0] * b[k][0] + n[i][1] * b[k][1] + n[i][2] * b[k][2]) * B.extent[k];
+  }
+  bool undecided = false;
+  auto separates = [&](double s, double e) {  // certainly separated; else notes an undecided axis
+    if (s > e) return true;
+    if (!(s < -e)) undecided = true;
+    return false;
+  };
+  for (int i = 0; i < 3; ++i)
+    if (separates(std::fabs(t[i]) - (H[i] + (std::fabs(G[i][0]) + std::fabs(G[i][1]) + std::fabs(G[i][2]))), e1))
+      return 0;
+  double L[3][3];
+  for (int j = 0; j < 3; ++j) {
+    const int p = (j + 1) % 3, q = (j + 2) % 3;
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      L[j][c] = G[c1][p] * G[c2][q] - G[c2][p] * G[c1][q];
+    }
+    const double tl = t[0] * L[j][0] + t[1] * L[j][1] + t[2] * L[j][2];
+    const double ra = H[0] * std::fabs(L[j][0]) + H[1] * std::fabs(L[j][1]) + H[2] * std::fabs(L[j][2]);
+    const double rb = std::fabs(G[0][j] * L[j][0] + G[1][j] * L[j][1] + G[2][j] * L[j][2]);
+    if (separates(std::fabs(tl) - (ra + rb), e2)) return 0;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    for (int k = 0; k < 3; ++k) {
+      const double tt = G[i1][k] * t[i2] - G[i2][k] * t[i1];
+      const double ra = H[i1] * std::fabs(G[i2][k]) + H[i2] * std::fabs(G[i1][k]);
+      const double rb = std::fabs(L[(k + 1) % 3][i]) + std::fabs(L[(k + 2) % 3][i]);
+      if (separates(std::fabs(tt) - (ra + rb), e3)) return 0;
+    }
+  }
+  return undecided ? unknown : 1;
+}
+inline int filter(const OrientedBox<double>& A, const OrientedBox<double>& B, int* axis = nullptr) {
+  if (const int r = filter_face_coordinates(A, B); r != unknown) {
+    if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
+    return r;
+  }
+  return filter<OrientedBox<double>, OrientedBox<double>>(A, B, axis);
 }
 
 }  // namespace sat
