@@ -83,6 +83,33 @@ struct BoxFilter {
     if (!in_range(m)) return unknown;
     return fsign(npp * dq - nqq * dp, (6 * u) * m);
   }
+  // hit_box_logic's loop over every (entering, exiting) pair at once, each pair as compare()
+  // evaluates it, combined without branches on the data: a pair certainly in the wrong order
+  // is a miss; else an undecided pair leaves the case undecided; else a hit. (At most one
+  // entering and one exiting plane per axis; a pair's direction components are nonzero.)
+  int pairs(unsigned bs, unsigned bt) const {
+    double ne[3], nx[3], ar[3];
+    bool ent[3], ext[3];
+    for (int i = 0; i < 3; ++i) {
+      const double sg = r[i] > 0 ? 1.0 : -1.0;
+      ne[i] = -sg * ((bs >> (2 * i)) & 1 ? sL[i] : sU[i]);
+      nx[i] = -sg * ((bt >> (2 * i)) & 1 ? sL[i] : sU[i]);
+      ar[i] = std::fabs(r[i]);
+      ent[i] = (bs >> (2 * i)) & 3;
+      ext[i] = (bt >> (2 * i)) & 3;
+    }
+    bool miss = false, undecided = false;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const bool valid = ent[i] & ext[j];
+        const double m = sA[i] * ar[j] + sA[j] * ar[i];
+        const double v = ne[i] * ar[j] - nx[j] * ar[i], e = (6 * u) * m;
+        const bool ok = in_range(m);
+        miss |= valid & ok & (v > e);
+        undecided |= valid & !(ok & ((v > e) | (v < -e)));
+      }
+    return miss ? 0 : (undecided ? unknown : 1);
+  }
 };
 // Algorithm 3.3's decision (book::hit on a box), over filtered or exact signs.
 template <class P>
@@ -106,6 +133,8 @@ int hit_box_logic(const P& p) {
     }
   }
   if (bs & bt) return 0;
+  if (bs == 0 || bt == 0) return 1;  // no pair
+  if constexpr (requires { p.pairs(bs, bt); }) return p.pairs(bs, bt);  // the loop below at once
   int res = 1;
   for (int a = 0; a < 6; ++a) {
     if (!(bs & (1u << a))) continue;
@@ -254,6 +283,31 @@ struct ObbFilter {
     const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? -1 : 1);
     const int r = sign_of(Na * d[j] - Nb * d[i], 17 * u * (ps[i] * dp[j] + ps[j] * dp[i]) + fc);
     return r == unknown ? unknown : sigma * r;
+  }
+  // hit_box_logic's loop over every (entering, exiting) pair at once, each as compare() above
+  // (each sign sigma folded into its plane's numerator and d), without branches on the data.
+  int pairs(unsigned bs, unsigned bt) const {
+    double ne[3], de[3], nx[3], dx[3];
+    bool ent[3], ext[3];
+    for (int i = 0; i < 3; ++i) {
+      const bool lo_in = (bs >> (2 * i)) & 1, lo_out = (bt >> (2 * i)) & 1;
+      const double se = lo_in ? 1.0 : -1.0, sx = lo_out ? -1.0 : 1.0;
+      ne[i] = -se * (lo_in ? sL[i] : sU[i]);
+      de[i] = se * d[i];
+      nx[i] = -sx * (lo_out ? sL[i] : sU[i]);
+      dx[i] = sx * d[i];
+      ent[i] = (bs >> (2 * i)) & 3;
+      ext[i] = (bt >> (2 * i)) & 3;
+    }
+    bool miss = false, undecided = false;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const bool valid = ent[i] & ext[j];
+        const double w = ne[i] * dx[j] - nx[j] * de[i], e = 17 * u * (ps[i] * dp[j] + ps[j] * dp[i]) + fc;
+        miss |= valid & (w > e);
+        undecided |= valid & !((w > e) | (w < -e));
+      }
+    return miss ? 0 : (undecided ? unknown : 1);
   }
 };
 inline int filter(ObbFilter&& f) {
