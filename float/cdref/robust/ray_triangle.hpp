@@ -36,6 +36,8 @@
 // answer is uncertain: that is what campaigns count.
 #pragma once
 
+#include <gmp.h>
+
 #include <cdref/book/ray_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
 #include <cdref/stable/ray_triangle.hpp>
@@ -207,6 +209,101 @@ bool hit(const Segment<F>& seg, const Triangle<F>& tri) {
 template <class F>
 bool hit(const Ray<F>& ray, const Triangle<F>& tri) {
   return decide(ray, tri).value;
+}
+
+namespace detail {
+// Exact rationals for the rare exact comparison below (GMP's C interface, as det_sign.hpp).
+struct Rational {
+  mpq_t q;
+  Rational() { mpq_init(q); }
+  ~Rational() { mpq_clear(q); }
+  Rational(const Rational&) = delete;
+  Rational& operator=(const Rational&) = delete;
+};
+// sign(N_a D_b - N_b D_a) sign(D_a D_b) exactly, or 2 where a D is 0 (see enters_first).
+template <class F>
+int entry_order_exact(const Vec3<F>& s, const Vec3<F>& d, bool d_is_target, const Triangle<F>& a,
+                      const Triangle<F>& b) {
+  auto set = [](Rational (&q)[3], const Vec3<F>& v) {
+    for (int i = 0; i < 3; ++i) number_traits<F>::to_rational(q[i].q, v[i]);
+  };
+  Rational S[3], R[3], N[2], D[2], t, e1[3], e2[3], n[3], w;
+  set(S, s);
+  set(R, d);
+  if (d_is_target)
+    for (int i = 0; i < 3; ++i) mpq_sub(R[i].q, R[i].q, S[i].q);
+  const Triangle<F>* tri[2] = {&a, &b};
+  for (int k = 0; k < 2; ++k) {
+    Rational v[3][3];
+    for (int j = 0; j < 3; ++j) set(v[j], tri[k]->vertex[j]);
+    for (int i = 0; i < 3; ++i) {
+      mpq_sub(e1[i].q, v[1][i].q, v[0][i].q);
+      mpq_sub(e2[i].q, v[2][i].q, v[0][i].q);
+    }
+    for (int i = 0; i < 3; ++i) {  // n = e1 x e2
+      const int j = (i + 1) % 3, l = (i + 2) % 3;
+      mpq_mul(n[i].q, e1[j].q, e2[l].q);
+      mpq_mul(t.q, e1[l].q, e2[j].q);
+      mpq_sub(n[i].q, n[i].q, t.q);
+    }
+    mpq_set_ui(N[k].q, 0, 1);
+    mpq_set_ui(D[k].q, 0, 1);
+    for (int i = 0; i < 3; ++i) {
+      mpq_sub(w.q, v[0][i].q, S[i].q);
+      mpq_mul(t.q, w.q, n[i].q);
+      mpq_add(N[k].q, N[k].q, t.q);
+      mpq_mul(t.q, R[i].q, n[i].q);
+      mpq_add(D[k].q, D[k].q, t.q);
+    }
+  }
+  const int da = mpq_sgn(D[0].q), db = mpq_sgn(D[1].q);
+  if (da == 0 || db == 0) return 2;
+  Rational x, y;
+  mpq_mul(x.q, N[0].q, D[1].q);
+  mpq_mul(y.q, N[1].q, D[0].q);
+  return mpq_cmp(x.q, y.q) > 0 ? da * db : (mpq_cmp(x.q, y.q) < 0 ? -da * db : 0);
+}
+}  // namespace detail
+
+// Whether a shot that hits triangles a and b through their planes enters a strictly before b,
+// for a first hit among several triangles (a polygon's fan, a mesh) whose rounded lambda_enter
+// are nearly equal: lambda = N / D with N = (v0 - s) . n, D = r . n, n = (v1 - v0) x (v2 - v0)
+// (r the direction, or target - source), so lambda_a < lambda_b iff sign(D_a D_b) (N_a D_b -
+// N_b D_a) < 0: decided on double words (words.hpp), else exactly over GMP rationals (an exact
+// tie is common there: two fan triangles with a vertex-free plane through the entry point).
+// Nothing where a D is exactly 0 (a shot in a triangle's plane enters at an edge, not through
+// the plane): the caller then keeps the rounded order.
+template <class Shot, class F>
+std::optional<bool> enters_first(const Shot& shot, const Triangle<F>& a, const Triangle<F>& b) {
+  const auto r = detail::on_words(shot, detail::TrianglePair<F>{a, b}, [](const auto& x, const auto& t) -> int {
+    using V = std::decay_t<decltype(x.source)>;
+    using Wd = std::decay_t<decltype(x.source[0])>;
+    V d;
+    if constexpr (requires { x.direction; })
+      d = x.direction;
+    else
+      d = V(x.target - x.source);
+    auto plane = [&](const auto& tri, Wd& N, Wd& D) {
+      const V n = V(tri.vertex[1] - tri.vertex[0]).cross(V(tri.vertex[2] - tri.vertex[0]));
+      N = V(tri.vertex[0] - x.source).dot(n);
+      D = d.dot(n);
+    };
+    Wd Na, Da, Nb, Db;
+    plane(t.a, Na, Da);
+    plane(t.b, Nb, Db);
+    const int sa = Da.sign(), sb = Db.sign();  // an uncertain sign ends the evaluation
+    if (sa == 0 || sb == 0) return 2;
+    return sa * sb * Wd(Na * Db - Nb * Da).sign();
+  });
+  int order = r ? *r : 2;
+  if (!r) {
+    if constexpr (requires { shot.direction; })
+      order = detail::entry_order_exact(shot.source, shot.direction, false, a, b);
+    else
+      order = detail::entry_order_exact(shot.source, shot.target, true, a, b);
+  }
+  if (order == 2) return std::nullopt;
+  return order < 0;
 }
 
 }  // namespace cdref::robust

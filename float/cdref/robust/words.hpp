@@ -87,6 +87,13 @@ OrientedBox<W> lift_words(const OrientedBox<F>& b, Words& w) {
 }
 template <class F>
 Sphere<W> lift_words(const Sphere<F>& s, Words& w) { return {w(s.center), w(s.radius)}; }
+// Two triangles as one argument (a shot's entries into two triangles compared: ray_triangle.hpp).
+template <class T>
+struct TrianglePair {
+  Triangle<T> a, b;
+};
+template <class F>
+TrianglePair<W> lift_words(const TrianglePair<F>& t, Words& w) { return {lift_words(t.a, w), lift_words(t.b, w)}; }
 
 // A double word's value in F (hi + lo rounded to F).
 template <class F>
@@ -131,6 +138,8 @@ OrientedBox<F> scaled(const OrientedBox<F>& b, const Scale& c) {
   return {c.len(b.center), c.len(b.extent), b.axis};
 }
 template <class F> Sphere<F> scaled(const Sphere<F>& s, const Scale& c) { return {c.len(s.center), c.len(s.radius)}; }
+template <class F> void largest(const TrianglePair<F>& t, F& m) { largest(t.a, m), largest(t.b, m); }
+template <class F> TrianglePair<F> scaled(const TrianglePair<F>& t, const Scale& c) { return {scaled(t.a, c), scaled(t.b, c)}; }
 template <class F> bool same(F x, F y) { return x == y; }
 template <class F> bool same(const Vec3<F>& x, const Vec3<F>& y) { return x == y; }
 template <class F> bool same(const Segment<F>& x, const Segment<F>& y) { return same(x.source, y.source) && same(x.target, y.target); }
@@ -143,6 +152,7 @@ template <class F> bool same(const Box<F>& x, const Box<F>& y) { return same(x.c
 template <class F>
 bool same(const OrientedBox<F>& x, const OrientedBox<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
 template <class F> bool same(const Sphere<F>& x, const Sphere<F>& y) { return same(x.center, y.center) && same(x.radius, y.radius); }
+template <class F> bool same(const TrianglePair<F>& x, const TrianglePair<F>& y) { return same(x.a, y.a) && same(x.b, y.b); }
 template <class F> F scalar_of(const Triangle<F>&);
 template <class F> F scalar_of(const OrientedBox<F>&);
 
