@@ -17,7 +17,9 @@
 // scaled value leaves the normal range, and then k = 0.
 #pragma once
 
+#include <bit>
 #include <cdref/oracle/bounded2.hpp>
+#include <cstdint>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
@@ -111,8 +113,14 @@ Vec3<F> value(const Vec3<W>& v) {
 // Every length scaled by 2^k (see the header).
 struct Scale {
   int k = 0;
+  // x 2^k: at double a product with 2^k when that is a normal number (the same correctly
+  // rounded value as std::ldexp, underflow and overflow included, without the library call)
   template <class F>
-  F len(F x) const { return std::ldexp(x, k); }
+  F len(F x) const {
+    if constexpr (std::is_same_v<F, double>)
+      if (k >= -1022 && k <= 1023) return x * std::bit_cast<double>(std::uint64_t(k + 1023) << 52);
+    return std::ldexp(x, k);
+  }
   template <class F>
   Vec3<F> len(const Vec3<F>& v) const { return Vec3<F>(len(v[0]), len(v[1]), len(v[2])); }
 };
