@@ -2,8 +2,8 @@
 // every candidate separating axis of Theorem 3.1 evaluated in double against one static error
 // bound for the whole query, and for a sphere and an oriented box two certificates from one
 // point of the box; for a segment or a ray and an oriented box, Algorithm 3.3 in the box's
-// face coordinates (box_cast_filter.hpp) in their place, and for two oriented boxes Theorem 3.1
-// in A's face coordinates first (filter_face_coordinates below), these axes where it cannot
+// face coordinates first (box_cast_filter.hpp), and for two oriented boxes Theorem 3.1 in A's
+// face coordinates first (filter_face_coordinates below), these axes where those cannot
 // decide. Plain double arithmetic on the query's inputs, so that both the oracle
 // (exact/cdref/oracle/separating_axes.hpp: then the double words, then CGAL::Gmpq) and the
 // robust tier's certified decisions (robust/separating_axes.hpp, at double) run it first:
@@ -295,18 +295,24 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
   return 1;
 }
 
-// A segment or a ray and an oriented box: Algorithm 3.3 in the box's face coordinates
+// A segment or a ray and an oriented box: Algorithm 3.3 in the box's face coordinates first
 // (box_cast_filter.hpp: a segment or a ray meets the box exactly when that cast hits), a few
-// dozen operations where the axes above take six axis tests.
+// dozen operations where the axes above take six axis tests; the axes where it cannot decide
+// (they recognise exact zeros: a shot along an edge or in a face plane of an axis-aligned frame,
+// a box of zero extent, which no bound on the face coordinates decides).
+template <class Shot>
+int filter_shot_obb(const Shot& s, const OrientedBox<double>& b, int* axis) {
+  if (const int r = staged::filter(s, b); r != unknown) {
+    if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
+    return r;
+  }
+  return filter<Shot, OrientedBox<double>>(s, b, axis);
+}
 inline int filter(const Segment<double>& s, const OrientedBox<double>& b, int* axis = nullptr) {
-  const int r = staged::filter(s, b);
-  if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
-  return r;
+  return filter_shot_obb(s, b, axis);
 }
 inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axis = nullptr) {
-  const int r = staged::filter(ray, b);
-  if (axis) *axis = r == 1 ? -1 : -2;
-  return r;
+  return filter_shot_obb(ray, b, axis);
 }
 
 // ---- Stage 1 for two oriented boxes: Theorem 3.1 in A's face coordinates ----
