@@ -177,7 +177,7 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
   Cast<F> c = solid::cast(a, b, w);
   const auto lw = on_words_lenient(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc);
   if (lw && lw->hit) take_lenient_values<F>(c, *lw, sc.k);
-  const auto h = on_words(a, b, [](const auto& x, const auto& y) { return solid::hit(x, y); });
+  const auto h = cast_decision_on_words(a, b);
   const Decision d = h ? Decision{*h, true} : Decision{solid::hit(a, b), false};
   c.hit = d.value;
   return {c, d};
@@ -217,8 +217,12 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
     check(a, NA);                                                             \
     check(b, "oriented box");                                                 \
     if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
-    if (const auto h = detail::cast_decision_on_words(a, b)) return {*h, true}; /* no values */ \
-    return detail::cast_eval(a, b, want_cast).second;                         \
+    /* cast_eval(a, b, want_cast)'s classification without its values (the lenient ones): */ \
+    /* the decision on double words, the cast's on double words, else the solid's in F */ \
+    if (const auto h = detail::cast_decision_on_words(a, b)) return {*h, true}; \
+    if (const auto c = detail::on_words(a, b, [](const auto& x, const auto& y) { return solid::cast(x, y, want_cast).hit; })) \
+      return {*c, true};                                                      \
+    return {solid::hit(a, b), false};                                         \
   }                                                                           \
   template <class F>                                                          \
   bool hit(const A<F>& a, const OrientedBox<F>& b) {                          \
