@@ -80,7 +80,9 @@ struct FanCastQuery {
   template <class F>
   static auto robust(const Shot<F>& a, const spec::Fan<F>& f) {
     return spec::first_hit(f, [&](const Triangle<F>& t) { return cdref::robust::cast(a, t); },
-                           [&](int k, int j) { return cdref::robust::enters_first(a, f.triangle(k), f.triangle(j)); });
+                           [&](int k, int j, F lk, F lj) {
+                             return cdref::robust::enters_before(a, f.triangle(k), lk, f.triangle(j), lj);
+                           });
   }
   template <class F>
   static bool robust_pred(const Shot<F>& a, const spec::Fan<F>& f) {

@@ -47,48 +47,19 @@ Decision decide(const Ray<F>& r, const Polygon<F>& p) {
   check(p);
   return detail::union_of(p.triangles(), [&](int k) { return decide(r, p.triangle(k)); });
 }
-namespace detail {
-template <class F>
-bool adjacent_or_equal(F x, F y) {
-  return x == y || std::nextafter(x, y) == y;
-}
-// The book's fan cast (book/polygon.hpp: the first hit, the last exit) over the robust triangle
-// casts, two triangles whose rounded lambda_enter are equal or adjacent ordered by their exact
-// lambdas (enters_first): the rounded fan is not planar, so near a diagonal two triangles give
-// nearly the same parameter and different normals, and the rounded order is not always the
-// exact one. (The triangle cast's lambda_enter comes from double words rounded once, within an
-// ulp in every campaign cell, so rounded values further apart are in the exact order.)
-template <class Shot, class F>
-Cast<F> polygon_cast(const Shot& s, const Polygon<F>& p) {
-  Cast<F> r;
-  int rk = -1;
-  for (int k = 0; k < p.triangles(); ++k) {
-    const Cast<F> c = cast(s, p.triangle(k));
-    if (!c.hit) continue;
-    if (!r.hit) {
-      r = c, rk = k;
-      continue;
-    }
-    const F exit = std::max(r.lambda_exit, c.lambda_exit);
-    bool take = c.lambda_enter < r.lambda_enter;
-    if (adjacent_or_equal(c.lambda_enter, r.lambda_enter))
-      if (const auto first = enters_first(s, p.triangle(k), p.triangle(rk))) take = *first;
-    if (take) r = c, rk = k;
-    r.lambda_exit = exit;
-  }
-  return r;
-}
-}  // namespace detail
-
 template <class F>
 Cast<F> cast(const Segment<F>& s, const Polygon<F>& p) {
   check(p);
-  return detail::polygon_cast(s, p);
+  // the book's fan cast, the first hit by enters_before (ray_triangle.hpp: exact where the
+  // rounded parameters of two triangles are equal or adjacent)
+  return book::detail::polygon_cast(p, [&](const Triangle<F>& t) { return cast(s, t); },
+                                    [&](int k, int j, F lk, F lj) { return enters_before(s, p.triangle(k), lk, p.triangle(j), lj); });
 }
 template <class F>
 Cast<F> cast(const Ray<F>& r, const Polygon<F>& p) {
   check(p);
-  return detail::polygon_cast(r, p);
+  return book::detail::polygon_cast(p, [&](const Triangle<F>& t) { return cast(r, t); },
+                                    [&](int k, int j, F lk, F lj) { return enters_before(r, p.triangle(k), lk, p.triangle(j), lj); });
 }
 template <class F>
 bool hit(const Segment<F>& s, const Polygon<F>& p) { return decide(s, p).value; }

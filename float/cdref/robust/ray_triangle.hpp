@@ -306,4 +306,18 @@ std::optional<bool> enters_first(const Shot& shot, const Triangle<F>& a, const T
   return order < 0;
 }
 
+// Whether the shot enters triangle a before triangle b, both hit, their robust lambda_enter la
+// and lb: la < lb, unless the two are equal or adjacent floats, where the exact parameters
+// decide (enters_first) wherever they can. The first hit among several triangles (a polygon's
+// fan, a mesh) takes it: the rounded fan is not planar, so near a diagonal two triangles give
+// nearly the same parameter and different normals, and the rounded order is not always the
+// exact one. (lambda_enter comes from double words rounded once, within an ulp in every
+// campaign cell, so values further apart are in the exact order.)
+template <class Shot, class F>
+bool enters_before(const Shot& shot, const Triangle<F>& a, F la, const Triangle<F>& b, F lb) {
+  if (la == lb || std::nextafter(la, lb) == lb)
+    if (const auto first = enters_first(shot, a, b)) return *first;
+  return la < lb;
+}
+
 }  // namespace cdref::robust

@@ -37,7 +37,6 @@
 #include <cstdio>
 #include <initializer_list>
 #include <stdexcept>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -173,11 +172,10 @@ struct FanCast {
   TriangleCast<S> first;
   int hits = 0;
 };
-// (Two triangles whose lambda_enter are equal or adjacent floats are ordered by first(k, j)
-// where it knows whether triangle k is entered strictly before triangle j: the robust casts,
-// robust::enters_first, as robust/polygon.hpp does.)
-template <class T, class Cast1, class First>
-auto first_hit(const Fan<T>& f, Cast1 cast1, First first) {
+// (before(k, j, lk, lj): whether triangle k, entered at lk, comes before triangle j, entered at
+// lj; the robust casts order near-ties exactly: robust::enters_before.)
+template <class T, class Cast1, class Before>
+auto first_hit(const Fan<T>& f, Cast1 cast1, Before before) {
   using C = decltype(cast1(f.triangle(0)));
   FanCast<std::decay_t<decltype(std::declval<C>().lambda_enter)>> r;
   int rk = -1;
@@ -185,19 +183,13 @@ auto first_hit(const Fan<T>& f, Cast1 cast1, First first) {
     const C c = cast1(f.triangle(k));
     if (!c.hit) continue;
     ++r.hits;
-    bool take = !r.first.hit || c.lambda_enter < r.first.lambda_enter;
-    bool near = r.first.hit && c.lambda_enter == r.first.lambda_enter;
-    if constexpr (std::is_floating_point_v<std::decay_t<decltype(c.lambda_enter)>>)
-      near = near || (r.first.hit && std::nextafter(c.lambda_enter, r.first.lambda_enter) == r.first.lambda_enter);
-    if (near)
-      if (const std::optional<bool> b = first(k, rk)) take = *b;
-    if (take) r.first = c, rk = k;
+    if (!r.first.hit || before(k, rk, c.lambda_enter, r.first.lambda_enter)) r.first = c, rk = k;
   }
   return r;
 }
 template <class T, class Cast1>
 auto first_hit(const Fan<T>& f, Cast1 cast1) {
-  return first_hit(f, cast1, [](int, int) { return std::optional<bool>(); });
+  return first_hit(f, cast1, [](int, int, const auto& lk, const auto& lj) { return lk < lj; });
 }
 
 inline std::vector<Output> cast_outputs() {

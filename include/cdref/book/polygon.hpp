@@ -36,23 +36,30 @@ namespace cdref::book {
 
 namespace detail {
 
-// The fan's first hit (smallest lambda_enter, first on ties) with the largest lambda_exit.
-template <class Cast1, class T>
-auto polygon_cast(const Polygon<T>& p, Cast1 cast1) {
+// The fan's first hit (smallest lambda_enter, first on ties) with the largest lambda_exit;
+// before(k, j, lk, lj) says whether triangle k, entered at lk, comes before triangle j, entered
+// at lj (lk < lj here; the robust casts order near-ties exactly: robust::enters_before).
+template <class Cast1, class T, class Before>
+auto polygon_cast(const Polygon<T>& p, Cast1 cast1, Before before) {
   using C = decltype(cast1(p.triangle(0)));
   Cast<std::decay_t<decltype(std::declval<C>().lambda_enter)>> r;
+  int rk = -1;
   for (int k = 0; k < p.triangles(); ++k) {
     const C c = cast1(p.triangle(k));
     if (!c.hit) continue;
     if (!r.hit) {
-      r = c;
+      r = c, rk = k;
       continue;
     }
     const auto exit = max_of(r.lambda_exit, c.lambda_exit);
-    if (c.lambda_enter < r.lambda_enter) r = c;
+    if (before(k, rk, c.lambda_enter, r.lambda_enter)) r = c, rk = k;
     r.lambda_exit = exit;
   }
   return r;
+}
+template <class Cast1, class T>
+auto polygon_cast(const Polygon<T>& p, Cast1 cast1) {
+  return polygon_cast(p, cast1, [](int, int, const auto& lk, const auto& lj) { return lk < lj; });
 }
 
 // The index of the fan triangle whose closest point to c is nearest (the first on ties).
