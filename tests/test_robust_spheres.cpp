@@ -793,6 +793,54 @@ TEMPLATE_TEST_CASE("robust ray-sphere decide: certain answers equal the book at 
   }
 }
 
+// Directions whose squares lie near the bottom of F's normal range: a = |r|^2 then loses its
+// low part to underflow (relative error up to 32 eta / a, not 52 u^2), and the quotient
+// f = b / a with it. A line exactly through a point sphere or tangent to a sphere of radius u
+// (D = 0), and lines passing u or 4u beside a point or a sphere of radius u: decide() may be
+// uncertain, and where it is certain it equals the book at Gmpq. Once a >= 128 eta / u, f's
+// error adds less than u^2 / 16 to D's bound (delta^2 a, header item A) and every line with
+// D != 0 here (|D| >= u^2) is decided. (Found by fuzz_query on ray-sphere-cast at float: the
+// certificate took f's error as 60 u^2 relative whatever a's size, and called a line through
+// a point sphere a certain miss.)
+TEMPLATE_TEST_CASE("robust ray-sphere decide: directions whose squares underflow", "[robust-spheres]", float, double,
+                   long double) {
+  using F = TestType;
+  constexpr int emin = std::numeric_limits<F>::min_exponent;
+  const F u = std::numeric_limits<F>::epsilon() / 2;
+  const long double a_decided = 128.0L * std::numeric_limits<F>::denorm_min() / u;
+  int certain = 0, n = 0, decided = 0;
+  for (int k = emin / 2 - 6; k <= emin / 2 + 24; ++k)
+    for (const long double m : {1.0L, 1.8225L, 1.3333333333L})
+      for (const long double off : {0.0L, 1.0L, -1.0L, 4.0L})
+        for (const long double rho : {0.0L, 1.0L}) {
+          const F d = F(std::ldexp(m, k));
+          const Ray<F> ray{Vec3<F>(F(0), F(0), F(0)), Vec3<F>(F(0), d, F(0))};
+          const Sphere<F> sp{Vec3<F>(F(off * u), F(1), F(0)), F(rho * u)};  // the line |off| u from the centre
+          const Segment<F> seg{Vec3<F>(F(0), F(0), F(0)), Vec3<F>(F(0), F(2), F(0))};
+          const auto dr = robust::decide(ray, sp);
+          const bool tr = book::hit(convert_prim_exact(ray), convert_prim_exact(sp));
+          INFO("k " << k << " m " << double(m) << " off " << double(off) << " rho " << double(rho));
+          REQUIRE(tr == (std::fabs(off) <= rho));
+          ++n;
+          if (dr.certain) {
+            ++certain;
+            REQUIRE(dr.value == tr);
+          }
+          REQUIRE(dr.value == robust::hit(ray, sp));
+          const bool tangent = std::fabs(off) == rho;  // D = 0 exactly
+          if (!tangent && (long double)d * d >= a_decided) {
+            ++decided;
+            REQUIRE(dr.certain);
+          }
+          const auto ds = robust::decide(seg, sp);
+          if (ds.certain) REQUIRE(ds.value == book::hit(convert_prim_exact(seg), convert_prim_exact(sp)));
+        }
+  if (std::getenv("CDREF_TEST_REPORT"))
+    std::cout << "underflowing directions (" << typeid(F).name() << "): certain " << certain << "/" << n
+              << ", of which " << decided << " required\n";
+  REQUIRE(decided > n / 3);  // the grid reaches well past the underflow (measured 330 of 744)
+}
+
 // ---------------------------------------------------------------------------
 // The stable tier of the sphere casts (float/cdref/stable/ray_sphere.hpp): plain F arithmetic
 // from the perpendicular foot, no certificate. Its header says where it can misclassify: near

@@ -47,13 +47,17 @@
 //       c: |c^ - c| <= err_c = 55 u^2 (|s|^2 + rho^2) + 32 E (10 lows of total <= 6u(|s|^2+rho^2));
 //       b: |b^ - b| <= err_b = 51 u^2 |s||r| + 32 E      (11 lows of total <= 5u |s||r|);
 //       a: relative rel_a = 52 u^2 + 32 E / a;
-//       f: delta = f^ - f, |delta| <= err_b / a + 60 u^2 |f| (div_pair: 8u^2);
+//       f: delta = f^ - f = (b^ - b) / a^ + f (a - a^) / a^, so |delta| <= err_b / a^ +
+//          |f| err_a / a^ + 8 u^2 |f| (div_pair: 8u^2); err_a / a is rel_a = 52 u^2 when a is
+//          far above the underflow threshold, but as large as u where a's lows underflow (a
+//          direction whose squares are near 2^emin: the E term);
 //       l: the computed l^ = l' + e with l' = s - f^ r exactly and |e| <= 33 u^2 |s| (five
 //          lows per component, of total <= u(2|s_i| + 4|f r_i|), |f||r| = P <= |s|).
 //     The foot is where the error in f does not matter to first order: l . r = 0, so
 //     |l'|^2 = |l - delta r|^2 = |l|^2 + delta^2 a exactly. Hence, for a hit (|l| <= rho),
 //       |D^ - D| <= err_D = 111 u^2 rho^2 + 2 (rho + |delta||r|) |e| + |e|^2 + delta^2 a + 64 E,
-//     with delta^2 a <= 2 err_b^2 / a + 7200 u^4 b^2 / a; the 111 u^2 rho^2 is D's own sum
+//     with delta^2 a <= 2 err_b^2 / a + 7200 u^4 b^2 / a away from underflow (where a's lows
+//     underflow, 2 (err_a / a)^2 b^2 / a: of the size of u^2 b^2 / a); the 111 u^2 rho^2 is D's own sum
 //     (10 lows of total <= 6u (rho^2 + |l^|^2)) and the l^2 lows dropped. So err_D is about
 //     u^2 (111 rho^2 + 66 rho |s|): at range it grows like rho |s|, not like |s|^2.
 //  B. |X^ - X| <= eX, the smaller of
@@ -112,7 +116,8 @@
 //   b:  err_b = 51 u^2 ns nr + 32 E
 //   a:  err_a = 52 u^2 R2 + 32 E; a >= a_lo = a^(1 - 4u) - err_a, required > 0
 //   D:  err_D = 56 u^2 (rho2 + L2) + 2 (nl + e) e + e^2 + delta^2 R2 + 64 E,
-//       e = 33 u^2 ns (the foot's rounding), delta = err_b / a_lo + 60 u^2 |f^| (the quotient's),
+//       e = 33 u^2 ns (the foot's rounding), delta = err_b / a_lo + |f^| (err_a / a_lo + 8 u^2)
+//       (the quotient's: a's own error enters f relatively, E / a included),
 //       D^'s own sum being off by at most 55.5 u^2 (rho^2 + |l^|^2) (item A, for any |l|: its
 //       lows total at most 6u (rho^2 + |l^|^2)) and |l'|^2 = |l|^2 + delta^2 a, |l'| <= |l^| + e;
 //   a + b, a + 2b + c: an exact two_sum chain of the high parts (2b exact), the lows summed in
@@ -527,7 +532,7 @@ Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<
   const F L2 = F(Q.lh[0] * Q.lh[0] + Q.lh[1] * Q.lh[1] + Q.lh[2] * Q.lh[2]) * F(1 + 8 * u);
   const F nl = std::sqrt(L2) * F(1 + 2 * u);
   const F e = F(33) * u * u * ns;
-  const F delta = err_b / a_lo + F(60) * u * u * F(fabs(Q.f.hi) * F(1 + 4 * u));
+  const F delta = err_b / a_lo + F(fabs(Q.f.hi) * F(1 + 4 * u)) * F(err_a / a_lo + F(8) * u * u);
   const F err_D = F(F(F(56) * u * u * F(rho2 + L2) + F(2) * F(nl + e) * e) + F(e * e + F(delta * delta) * R2)) + F(64) * E;
   const Bounded<F> D{Q.D.hi, g * err_D};
   const Bounded<F> b{Q.b.hi, g * err_b};
