@@ -66,9 +66,14 @@ bool hit(const Segment<F>& s, const Polygon<F>& p) { return decide(s, p).value; 
 template <class F>
 bool hit(const Ray<F>& r, const Polygon<F>& p) { return decide(r, p).value; }
 
+// (on the query scaled as proximity() scales it, so that the two classify alike)
 template <class F>
-Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
-  check(p);
+Decision decide(const Sphere<F>& s0, const Polygon<F>& p0) {
+  check(s0, "sphere");
+  check(p0);
+  const detail::Scale sc = detail::scale_of(s0, p0);
+  const Sphere<F> s = detail::scaled(s0, sc);
+  const Polygon<F> p = detail::scaled(p0, sc);
   return detail::union_of(p.triangles(), [&](int k) { return decide(s, p.triangle(k)); });
 }
 // The nearest fan triangle (the book's choice: the least |x - c|, the first on ties) is chosen
@@ -76,11 +81,19 @@ Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
 // the depth. Every triangle's robust query runs anyway for the union's certificate; the book's
 // choice in F went wrong where its squared distances lose their digits (at 10^+-300 they
 // overflow or underflow and it took the first triangle: 1.7e19 ulps of witness on the
-// magnitude family; near touching and at range 10^13 ulps of distance).
+// magnitude family; near touching and at range 10^13 ulps of distance). The query is first
+// scaled by the power of two that brings its largest length into [1, 2) (words.hpp, scale_of:
+// exact, or not at all), and its lengths scaled back at the end: the keys are then compared
+// with F's full precision even where the inputs are subnormal (at 10^-320 two triangles'
+// distances that differ in their eleventh bit rounded to one subnormal, and the first
+// triangle's witnesses were taken for the nearest's: 73 ulps of witness).
 template <class F>
-Proximity<F> proximity(const Sphere<F>& s, const Polygon<F>& p, unsigned w = want_proximity) {
-  check(s, "sphere");
-  check(p);
+Proximity<F> proximity(const Sphere<F>& s0, const Polygon<F>& p0, unsigned w = want_proximity) {
+  check(s0, "sphere");
+  check(p0);
+  const detail::Scale sc = detail::scale_of(s0, p0), back{-sc.k};
+  const Sphere<F> s = detail::scaled(s0, sc);
+  const Polygon<F> p = detail::scaled(p0, sc);
   Proximity<F> best;
   F best_key = F(0);
   Decision u{false, true};
@@ -98,10 +111,13 @@ Proximity<F> proximity(const Sphere<F>& s, const Polygon<F>& p, unsigned w = wan
   }
   if (yes) u = {true, true};
   best.intersect = u.value;  // the union's classification, as decide() gives it
-  if (!(w & want_distance)) best.distance = F(0);
-  if (!(w & want_depth)) best.depth = F(0);
-  if (!(w & want_witnesses)) best.on_a = best.on_b = Vec3<F>(F(0), F(0), F(0));
-  if (!(w & want_closest)) best.closest = Vec3<F>(F(0), F(0), F(0));
+  best.distance = (w & want_distance) ? back.len(best.distance) : F(0);
+  best.depth = (w & want_depth) ? back.len(best.depth) : F(0);
+  if (w & want_witnesses)
+    best.on_a = back.len(best.on_a), best.on_b = back.len(best.on_b);
+  else
+    best.on_a = best.on_b = Vec3<F>(F(0), F(0), F(0));
+  best.closest = (w & want_closest) ? back.len(best.closest) : Vec3<F>(F(0), F(0), F(0));
   return best;
 }
 template <class F>

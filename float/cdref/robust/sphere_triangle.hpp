@@ -25,9 +25,10 @@
 // claimed correctly rounded (that is the oracle's job); `cdref campaign --query sphere-triangle
 // --impl robust-double` measures them: the distance sqrt|x - c|^2 - rho cancels when it is far
 // below the radius (its error is about u^2 of the radius: 0 ulps on the long-range family to
-// 10^12, 2 at p99 and 4 at worst at 2^-52 of the radius from touching), and the sphere's witness
-// c + rho (x - c) / |x - c| has no direction when the centre lies on the triangle (2.3e4 ulps of
-// the case's scale at worst on the degenerate family).
+// 10^12, 2 at p99 and 40 at worst at 2^-52 of the radius from touching). In the face region
+// the outputs come from the triangle's normal (proximity_by_face below): the sphere's witness
+// c + rho (x - c) / |x - c| took its direction from x - c, which cancels when the centre lies
+// near the plane (2.3e4 ulps on the degenerate family; now every output within 1 ulp there).
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
@@ -49,6 +50,46 @@ int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
   else return oracle::sphere_triangle::unknown;
 }
 
+// The book's proximity, its outputs in the face region from the triangle's normal. There the
+// closest point is the centre's projection on the plane: with n = ab x ac and
+// side = (a - c) . n, x - c = n side / |n|^2 exactly, so |x - c| = |side| / |n|, the sphere's
+// witness is c + rho sign(side) n / |n| (n when side = 0: the book's x == c case), and the
+// classification |x - c|^2 <= rho^2 reads side^2 <= rho^2 |n|^2: the same values as the
+// book's in exact arithmetic. On the double words n carries u^2 of its size wherever the
+// centre lies, and side is exact where the inputs make it so, while the book's x - c is the
+// difference of two nearly equal points when the centre lies near the plane: a centre an ulp
+// off the triangle gave the witness direction u relative error (thousands of ulps of a
+// coordinate that cancels), and a centre exactly on it a closest point an ulp off, from F,
+// where x == c was too close to call (the degenerate families).
+template <class T>
+Proximity<sqrt_t<T>> proximity_by_face(const Sphere<T>& sp, const Triangle<T>& tri, unsigned w) {
+  using S = sqrt_t<T>;
+  Vec3<T> dir = zero_vec<T>();
+  bool face = false;
+  const Vec3<T> x = book::detail::closest_on_triangle(tri, sp.center, &dir, &face);
+  if (!face) return book::detail::sphere_triangle_outputs(sp, tri, x, dir, w);
+  const Vec3<T> n = Vec3<T>(tri.vertex[1] - tri.vertex[0]).cross(Vec3<T>(tri.vertex[2] - tri.vertex[0]));
+  const T nn = n.squaredNorm();
+  const T side = Vec3<T>(tri.vertex[0] - sp.center).dot(n);
+  const T& rho = sp.radius;
+  Proximity<S> res;
+  res.intersect = side * side <= rho * rho * nn;
+  const bool on = side == T(0);  // the centre lies on the triangle
+  const Vec3<T> v = on ? zero_vec<T>() : Vec3<T>(n * T(side / nn));
+  if (w & (want_closest | want_witnesses)) {
+    const Vec3<S> at = on ? lift<S>(sp.center) : lift<S>(Vec3<T>(sp.center + v));
+    if (w & want_closest) res.closest = at;
+    if (w & want_witnesses) res.on_b = at;
+  }
+  if (!(w & (want_distance | want_depth | want_witnesses))) return res;
+  const S nl = root(nn);
+  const S len = on ? S(0) : S(S(side < T(0) ? T(-side) : side) / nl);
+  if (w & want_distance) res.distance = book::detail::max_of(S(len - S(rho)), S(0));
+  if (w & want_depth) res.depth = book::detail::max_of(S(S(rho) - len), S(0));
+  if (w & want_witnesses) res.on_a = offset(sp.center, S(side < T(0) ? T(-rho) : rho), book::detail::divided(n, nl));
+  return res;
+}
+
 // The double words alone (the oracle's second stage).
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
@@ -56,7 +97,7 @@ std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, cons
   return proximity_on_words(
       s, t,
       [w](const auto& x, const auto& y) {
-        return about_centre(x, y, w, [w](const auto& a, const auto& b) { return book::proximity(a, b, w); },
+        return about_centre(x, y, w, [w](const auto& a, const auto& b) { return proximity_by_face(a, b, w); },
                             [](auto tri, const auto& c) {
                               for (auto& v : tri.vertex) v = std::decay_t<decltype(c)>(v - c);
                               return tri;

@@ -147,6 +147,12 @@ OrientedBox<F> scaled(const OrientedBox<F>& b, const Scale& c) {
 }
 template <class F> Sphere<F> scaled(const Sphere<F>& s, const Scale& c) { return {c.len(s.center), c.len(s.radius)}; }
 template <class F> void largest(const TrianglePair<F>& t, F& m) { largest(t.a, m), largest(t.b, m); }
+template <class F> void largest(const Polygon<F>& p, F& m) { for (int i = 0; i < p.n; ++i) largest(p.vertex[i], m); }
+template <class F>
+Polygon<F> scaled(Polygon<F> p, const Scale& c) {
+  for (int i = 0; i < p.n; ++i) p.vertex[i] = c.len(p.vertex[i]);
+  return p;
+}
 template <class F> TrianglePair<F> scaled(const TrianglePair<F>& t, const Scale& c) { return {scaled(t.a, c), scaled(t.b, c)}; }
 template <class F> bool same(F x, F y) { return x == y; }
 template <class F> bool same(const Vec3<F>& x, const Vec3<F>& y) { return x == y; }
@@ -161,6 +167,12 @@ template <class F>
 bool same(const OrientedBox<F>& x, const OrientedBox<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
 template <class F> bool same(const Sphere<F>& x, const Sphere<F>& y) { return same(x.center, y.center) && same(x.radius, y.radius); }
 template <class F> bool same(const TrianglePair<F>& x, const TrianglePair<F>& y) { return same(x.a, y.a) && same(x.b, y.b); }
+template <class F>
+bool same(const Polygon<F>& x, const Polygon<F>& y) {
+  for (int i = 0; i < x.n; ++i)
+    if (!same(x.vertex[i], y.vertex[i])) return false;
+  return x.n == y.n;
+}
 template <class F> F scalar_of(const Triangle<F>&);
 template <class F> F scalar_of(const OrientedBox<F>&);
 

@@ -51,9 +51,12 @@ void farthest_pair(const Triangle<T>& t, int& i, int& j) {
   if (far < d12) i = 1, j = 2;
 }
 
-// The point of the triangle closest to p, and for a zero-area triangle whether it is one.
+// The point of the triangle closest to p, and for a zero-area triangle whether it is one
+// (its segment's direction); *in_face, when asked, says whether the point is the face's (p's
+// projection on the plane: x - p is then parallel to ab x ac).
 template <class T>
-Vec3<T> closest_on_triangle(const Triangle<T>& tri, const Vec3<T>& p, Vec3<T>* degenerate_direction = nullptr) {
+Vec3<T> closest_on_triangle(const Triangle<T>& tri, const Vec3<T>& p, Vec3<T>* degenerate_direction = nullptr,
+                            bool* in_face = nullptr) {
   const Vec3<T>& a = tri.vertex[0];
   const Vec3<T>& b = tri.vertex[1];
   const Vec3<T>& c = tri.vertex[2];
@@ -89,6 +92,7 @@ Vec3<T> closest_on_triangle(const Triangle<T>& tri, const Vec3<T>& p, Vec3<T>* d
   if (va <= T(0) && T(d4 - d3) >= T(0) && T(d5 - d6) >= T(0))
     return Vec3<T>(b + (T(d4 - d3) / T(T(d4 - d3) + T(d5 - d6))) * Vec3<T>(c - b));
   const T denom = va + vb + vc;
+  if (in_face) *in_face = true;
   return Vec3<T>(a + (vb / denom) * ab + (vc / denom) * ac);
 }
 
@@ -115,14 +119,14 @@ bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   return detail::sphere_triangle_intersect(sp, tri);
 }
 
+namespace detail {
+
+// proximity()'s outputs from the closest point x of the triangle (dir as closest_on_triangle's).
 template <class T>
-Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Triangle<T>& tri, unsigned w = want_proximity) {
+Proximity<sqrt_t<T>> sphere_triangle_outputs(const Sphere<T>& sp, const Triangle<T>& tri, const Vec3<T>& x,
+                                             const Vec3<T>& dir, unsigned w) {
   using S = sqrt_t<T>;
-  check(sp, "sphere");
-  check(tri, "triangle");
   Proximity<S> res;
-  Vec3<T> dir = zero_vec<T>();
-  const Vec3<T> x = detail::closest_on_triangle(tri, sp.center, &dir);
   const Vec3<T> v = x - sp.center;
   const T vv = v.squaredNorm();
   const T& rho = sp.radius;
@@ -149,6 +153,17 @@ Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Triangle<T>& tri, unsi
     res.on_b = lift<S>(x);
   }
   return res;
+}
+
+}  // namespace detail
+
+template <class T>
+Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Triangle<T>& tri, unsigned w = want_proximity) {
+  check(sp, "sphere");
+  check(tri, "triangle");
+  Vec3<T> dir = zero_vec<T>();
+  const Vec3<T> x = detail::closest_on_triangle(tri, sp.center, &dir);
+  return detail::sphere_triangle_outputs(sp, tri, x, dir, w);
 }
 
 }  // namespace cdref::book
