@@ -66,47 +66,55 @@ bool hit(const Segment<F>& s, const Polygon<F>& p) { return decide(s, p).value; 
 template <class F>
 bool hit(const Ray<F>& r, const Polygon<F>& p) { return decide(r, p).value; }
 
+namespace detail {
+// The power of two proximity(sphere, polygon) scales its query by (below): words.hpp's
+// scale_of where the largest length lies below 2^(2(p - 1)) times the smallest normal number,
+// so that distances down to 2^-p of it could be subnormal; none otherwise (the scaling would
+// change no comparison, and its exact round trip costs more than the query's first stage).
+template <class F>
+Scale tiny_scale(const Sphere<F>& s, const Polygon<F>& p) {
+  constexpr F eps = std::numeric_limits<F>::epsilon(), tiny = std::numeric_limits<F>::min() / (eps * eps);
+  F m = F(0);
+  largest(s, m);
+  largest(p, m);
+  return m < tiny ? scale_of(s, p) : Scale{};
+}
+}  // namespace detail
+
 // (on the query scaled as proximity() scales it, so that the two classify alike)
 template <class F>
-Decision decide(const Sphere<F>& s0, const Polygon<F>& p0) {
-  check(s0, "sphere");
-  check(p0);
-  const detail::Scale sc = detail::scale_of(s0, p0);
-  const Sphere<F> s = detail::scaled(s0, sc);
-  const Polygon<F> p = detail::scaled(p0, sc);
-  return detail::union_of(p.triangles(), [&](int k) { return decide(s, p.triangle(k)); });
+Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
+  check(p);  // (the sphere by each triangle's decide)
+  const auto run = [](const Sphere<F>& a, const Polygon<F>& b) {
+    return detail::union_of(b.triangles(), [&](int k) { return decide(a, b.triangle(k)); });
+  };
+  const detail::Scale sc = detail::tiny_scale(s, p);
+  return sc.k == 0 ? run(s, p) : run(detail::scaled(s, sc), detail::scaled(p, sc));
 }
-// The nearest fan triangle (the book's choice: the least |x - c|, the first on ties) is chosen
-// by the triangles' robust distances and depths: key |x - c| - rho, i.e. the distance, or minus
-// the depth. Every triangle's robust query runs anyway for the union's certificate; the book's
-// choice in F went wrong where its squared distances lose their digits (at 10^+-300 they
-// overflow or underflow and it took the first triangle: 1.7e19 ulps of witness on the
-// magnitude family; near touching and at range 10^13 ulps of distance). The query is first
-// scaled by the power of two that brings its largest length into [1, 2) (words.hpp, scale_of:
-// exact, or not at all), and its lengths scaled back at the end: the keys are then compared
-// with F's full precision even where the inputs are subnormal (at 10^-320 two triangles'
-// distances that differ in their eleventh bit rounded to one subnormal, and the first
-// triangle's witnesses were taken for the nearest's: 73 ulps of witness).
 template <class F>
 Proximity<F> proximity(const Sphere<F>& s0, const Polygon<F>& p0, unsigned w = want_proximity) {
   check(s0, "sphere");
   check(p0);
-  const detail::Scale sc = detail::scale_of(s0, p0), back{-sc.k};
+  const detail::Scale sc = detail::tiny_scale(s0, p0), back{-sc.k};
   const Sphere<F> s = detail::scaled(s0, sc);
   const Polygon<F> p = detail::scaled(p0, sc);
   Proximity<F> best;
-  F best_key = F(0);
+  // the key |x - c| - rho as hi + lo: the double words' where they completed, else F's value
+  std::pair<long double, double> best_key{0, 0};
   Decision u{false, true};
   bool yes = false;  // a triangle certainly met
   for (int k = 0; k < p.triangles(); ++k) {
     // (every output, as decide() asks: the same evaluation, so the same certificate)
-    const auto e = detail::sphere_triangle_eval(s, p.triangle(k), want_proximity);
+    detail::WordValues kept;
+    const auto e = detail::sphere_triangle_eval(s, p.triangle(k), want_proximity, &kept);
     const Proximity<F>& r = e.first;
     const Decision& d = e.second;
     yes = yes || (d.value && d.certain);
     u.value = u.value || d.value;
     u.certain = u.certain && d.certain;
-    const F key = r.intersect ? F(-r.depth) : r.distance;
+    std::pair<long double, double> key{r.intersect ? -(long double)r.depth : (long double)r.distance, 0.0};
+    if (kept.words) key = r.intersect ? std::pair<long double, double>{-kept.depth_hi, -kept.depth_lo}
+                                      : std::pair<long double, double>{kept.distance_hi, kept.distance_lo};
     if (k == 0 || key < best_key) best = r, best_key = key;
   }
   if (yes) u = {true, true};

@@ -92,7 +92,8 @@ Proximity<sqrt_t<T>> proximity_by_face(const Sphere<T>& sp, const Triangle<T>& t
 
 // The double words alone (the oracle's second stage).
 template <class F>
-std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
+std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
+                                                        WordValues* kept = nullptr) {
   // (on the double words relative to the centre: words.hpp, about_centre)
   return proximity_on_words(
       s, t,
@@ -103,13 +104,14 @@ std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, cons
                               return tri;
                             });
       },
-      [](const auto& x, const auto& y) { return book::intersect(x, y); });
+      [](const auto& x, const auto& y) { return book::intersect(x, y); }, kept);
 }
 // Proximity's values from the double words, its classification from them where they are
 // certain, else from the first stage where it decides.
 template <class F>
-std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w) {
-  auto r = sphere_triangle_words(s, t, w);
+std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
+                                                       WordValues* kept = nullptr) {
+  auto r = sphere_triangle_words(s, t, w, kept);
   if (r.second.certain) return r;  // exact already
   if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
     r.first.intersect = f != 0;

@@ -309,8 +309,16 @@ auto about_centre(const S& s, const B& b, unsigned w, Prox prox, Translate trans
 // where it lies within their enclosure, word_or_enclosed), or in F where those do not
 // complete either; else the classification in F too, uncertain. prox(a, b)
 // and meet(a, b) are the formulation's proximity and intersection test, at any number type.
+// The distance and the depth as the double words gave them (scaled back, hi + lo), for a
+// caller that compares the values of several queries finer than F resolves (robust/polygon.hpp);
+// words = false where the values came from elsewhere.
+struct WordValues {
+  bool words = false;
+  long double distance_hi = 0, depth_hi = 0;
+  double distance_lo = 0, depth_lo = 0;
+};
 template <class A, class B, class Prox, class Meet>
-auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet) {
+auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet, WordValues* kept = nullptr) {
   using F = std::decay_t<decltype(scalar_of(a))>;
   const auto from_words = [](const Proximity<W>& r, const Scale& sc) {
     Proximity<F> p = proximity_value<F>(r);
@@ -320,7 +328,12 @@ auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet) {
     return p;
   };
   Scale sc;
-  if (const auto r = on_words(a, b, prox, &sc)) return std::pair<Proximity<F>, Decision>{from_words(*r, sc), {r->intersect, true}};
+  if (const auto r = on_words(a, b, prox, &sc)) {
+    if (kept)
+      *kept = {true, std::ldexp((long double)r->distance.hi(), -sc.k), std::ldexp((long double)r->depth.hi(), -sc.k),
+               std::ldexp(r->distance.lo(), -sc.k), std::ldexp(r->depth.lo(), -sc.k)};
+    return std::pair<Proximity<F>, Decision>{from_words(*r, sc), {r->intersect, true}};
+  }
   Proximity<F> p = prox(a, b);
   if (const auto lr = on_words_lenient(a, b, prox, &sc)) {
     p.distance = word_or_enclosed(lr->distance, p.distance, sc.k);
