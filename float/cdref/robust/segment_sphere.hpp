@@ -40,7 +40,10 @@
 //         ~2^-46 of |x| + rho. (A sign other than the classification's, possible only where
 //         it is uncertain, gives 0.)
 //       the witness on the sphere c + rho x/|x| (unit_dw, then along_dw): x's direction within
-//         27u^2 + 144u^2 |s| / |x|, then 4u^2 max(|on_b_i|, rho) before the rounding.
+//         27u^2 + 144u^2 |s| / |x|, then 4u^2 max(|on_b_i|, rho) before the rounding; where
+//         144u^2 |s| could exceed u/16 of |x| (the centre within 2304u |s| of the line), the
+//         direction is that of r x (s x r) formed from the exact products
+//         (perpendicular_exactly, below): within 27u^2 + 3e4 u^3 |s| / |x|.
 //     Each is within 1.5 ulps of the truth unless the truth is below 2/u times that error.
 //     The previous formulation took the values from x^ in F (4.02u |x|): 3.5e14 ulps of
 //     distance at 2^-48 from tangency and 288 ulps of witness at p99 (`cdref campaign --query
@@ -60,7 +63,10 @@
 // branch is not certain, if an endpoint is certainly inside the sphere (then so is the
 // segment) or the line's foot certainly outside (the segment is no closer than its line): endpoints by
 // dot2_cert of Q; interior by |Q^| > 2 (E_Q + E_x (2 nx + E_x)), E_x = 4.1u nx + 512 u^2 +
-// 16 eta, nx = ||x^||_1 >= |x^|, E_Q dot2_cert's bound. (decide(Segment, Sphere) in
+// 16 eta, nx = ||x^||_1 >= |x^|, E_Q dot2_cert's bound. Where that leaves the sign open (a
+// band about u |x|^2 wide near tangency), the sphere casts' certificate on double words
+// decides (ray_sphere.hpp, decide_cast: the same exact answer, a band u^2 wide); intersect()
+// and proximity() classify as decide_closest() does. (decide(Segment, Sphere) in
 // ray_sphere.hpp certifies the cast's formulation; the two classifications are the same
 // exact answer, Algorithms 3.1 and 3.2 agreeing at exact types, but their float values
 // may differ where neither is certain, hence two names.)
@@ -230,6 +236,40 @@ SegSphSolved<F> seg_sph_solve(const SegSphLocal<F>& L) {
 // products and s_i summed as if in triple precision (sum_k, K = 3), then the residual the
 // same way: a double word within u^2 |l_i| + 3e4 u^3 (|s_i| + |f r_i|) of it (two SumK
 // bounds, the second on a residual of at most (u + 3 gamma_9^2)|l_i| + gamma_18^3 S).
+// r x (s x r) for exact pairs s, r (x's direction: the foot times |r|^2, exactly
+// perpendicular to r). Each component of w = s x r from the sixteen parts of its eight exact
+// products summed as in triple precision, then the residual (as foot_exactly: within
+// u^2 |w_i| + 3e4 u^3 |s||r|, however near the line the centre lies), then r x w on double
+// words (no cancellation beyond u^2 |r||w|: r is perpendicular to w). Its direction is x's
+// within 27u^2 + 3e4 u^3 |s| / |x|, where the foot's 144u^2 |s| / |x| is too coarse.
+template <class F>
+void perpendicular_exactly(const Pair<F> (&s)[3], const Pair<F> (&r)[3], Pair<F> (&y)[3]) {
+  Pair<F> w[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    F p[17], q[17];
+    int n = 0;
+    const auto add = [&](F a, F b, bool minus) {
+      const Pair<F> t = two_prod_split(a, b);
+      p[n++] = minus ? F(-t.hi) : t.hi;
+      p[n++] = minus ? F(-t.lo) : t.lo;
+    };
+    add(s[j].hi, r[k].hi, false), add(s[j].hi, r[k].lo, false), add(s[j].lo, r[k].hi, false), add(s[j].lo, r[k].lo, false);
+    add(s[k].hi, r[j].hi, true), add(s[k].hi, r[j].lo, true), add(s[k].lo, r[j].hi, true), add(s[k].lo, r[j].lo, true);
+    p[16] = F(0);
+    for (int m = 0; m < 17; ++m) q[m] = p[m];
+    const F hi = sum_k(p, 3);
+    q[16] = -hi;
+    w[i] = two_sum(hi, sum_k(q, 3));
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const Pair<F> a = mul_pair(r[j], w[k]), b = mul_pair(r[k], w[j]);
+    const Pair<F> t = two_sum(a.hi, F(-b.hi));
+    y[i] = fast_two_sum(t.hi, F(t.lo + F(a.lo - b.lo)));
+  }
+}
+
 template <class F>
 Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
   const Pair<F> a = two_prod_split(f.hi, r.hi), b = two_prod_split(f.hi, r.lo), c = two_prod_split(f.lo, r.hi),
@@ -271,13 +311,33 @@ void through_centre_direction(const SegSphLocal<F>& L, Pair<F> (&n)[3]) {
 
 }  // namespace detail
 
+namespace detail {
+
+// decide_closest() past the filter, from the solved branch (see the header). Where its bound
+// in F leaves the sign open, the sphere casts' certificate on double words decides
+// (ray_sphere.hpp, decide_cast: the segment meets the ball exactly when Algorithm 3.1's cast
+// hits, and its band near tangency is u^2 wide where the foot in F leaves one u wide: at
+// 2^-52 of the radius from tangency every case of the near-tangent family was uncertain).
 template <class F>
-bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
-  check(seg, "segment");
-  check(sp, "sphere");
-  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
-  return detail::seg_sph_solve(detail::seg_sph_local(seg, sp)).q.value <= F(0);
+Decision closest_decision(const Segment<F>& seg, const Sphere<F>& sp, const SegSphLocal<F>& L,
+                          const SegSphSolved<F>& R) {
+  const bool exact_zero = R.q.value == F(0) && R.q.err == F(0);
+  bool certain = R.branch_certain && (exact_zero || R.q.sign() != 0);
+  // An uncertain branch still decides when the answer does not depend on it: an endpoint
+  // certainly inside the sphere means the segment meets it; the line's foot certainly
+  // outside means the segment (farther from the centre than its line) does not.
+  if (!R.branch_certain)
+    certain = R.branch == Branch::interior ? R.q.sign() > 0 : (exact_zero || R.q.sign() < 0);
+  const Decision own = within_range(Decision{R.q.value <= F(0), L.exact && certain}, seg, sp);
+  if (own.certain) return own;
+  Pair<F> s[3], r[3];
+  diff_pairs(seg.source, sp.center, s);
+  diff_pairs(seg.target, seg.source, r);
+  const Decision words = within_range(decide_cast(s, r, sp, true), seg, sp);
+  return words.certain ? words : own;
 }
+
+}  // namespace detail
 
 // The book's intersect(Segment, Sphere) with its certificate (see the header).
 template <class F>
@@ -286,15 +346,13 @@ Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   check(sp, "sphere");
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
-  const auto R = detail::seg_sph_solve(L);
-  const bool exact_zero = R.q.value == F(0) && R.q.err == F(0);
-  bool certain = R.branch_certain && (exact_zero || R.q.sign() != 0);
-  // An uncertain branch still decides when the answer does not depend on it: an endpoint
-  // certainly inside the sphere means the segment meets it; the line's foot certainly
-  // outside means the segment (farther from the centre than its line) does not.
-  if (!R.branch_certain)
-    certain = R.branch == detail::Branch::interior ? R.q.sign() > 0 : (exact_zero || R.q.sign() < 0);
-  return within_range(Decision{R.q.value <= F(0), L.exact && certain}, seg, sp);
+  return detail::closest_decision(seg, sp, L, detail::seg_sph_solve(L));
+}
+
+// (the same answer as decide_closest(): the filter, the branch's sign in F, the double words)
+template <class F>
+bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
+  return decide_closest(seg, sp).value;
 }
 
 template <class F>
@@ -304,8 +362,11 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   Proximity<F> res;
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
-  res.intersect = R.q.value <= F(0);
-  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) res.intersect = f > 0;  // as decide_closest()
+  // as decide_closest()
+  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true))
+    res.intersect = f > 0;
+  else
+    res.intersect = detail::closest_decision(seg, sp, L, R).value;
   if (!(w & (want_closest | want_distance | want_depth | want_witnesses))) return res;
   // x, the closest point relative to the centre (scaled), as double words, and q = |x|^2 -
   // rho^2 (steps 3-5): an endpoint's exact pair and c_dw; the line's foot l and -D from
@@ -319,6 +380,7 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   D.rho = L.rho;
   Pair<F> x[3];
   Pair<F> q{F(0), F(0)};
+  bool near_line = false;
   if (R.x_zero) {
     for (auto& xi : x) xi = {F(0), F(0)};
   } else if (b == detail::Branch::interior) {
@@ -334,6 +396,9 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
       xn = std::max(xn, std::fabs(x[i].hi));
     }
     const F u = detail::unit_roundoff<F>();
+    // where the centre lies so near the line that the foot's 144u^2 |s| could exceed u/16 of
+    // |x| (|x| < 2304u |s|), the sphere's witness takes its direction from r x (s x r) instead
+    near_line = xn < F(F(2304) * u) * sn;
     if (F(F(3168) * u) * F(xn * sn) >= std::fabs(q.hi)) {
       for (int i = 0; i < 3; ++i) x[i] = detail::foot_exactly(D.s[i], Q.f, D.r[i]);
       const Pair<F> d2 = detail::rho2_minus_norm2(D.rho, x);
@@ -375,10 +440,16 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   }
   if (w & want_witnesses) {
     Pair<F> n[3];
-    if (x_zero)
+    if (x_zero) {
       detail::through_centre_direction(L, n);
-    else
+    } else if (near_line) {
+      Pair<F> y[3];
+      detail::perpendicular_exactly(D.s, D.r, y);
+      const F yh[3] = {y[0].hi, y[1].hi, y[2].hi}, yl[3] = {y[0].lo, y[1].lo, y[2].lo};
+      detail::unit_dw(yh, yl, n);
+    } else {
       detail::unit_dw(xh, xl, n);
+    }
     res.on_a = xw;
     for (int i = 0; i < 3; ++i) res.on_b[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
   }
