@@ -15,7 +15,9 @@
 // the book's at an exact type (decide() is certain), and p, q are the double words rounded to F
 // (not claimed correctly rounded: that is the oracle's job). Otherwise (a vertex on or a hair
 // from the other plane, cut points that tie along D, triangles of nearly zero area) the book
-// runs in F and the answer is uncertain.
+// runs in F and the answer is uncertain (certain where the first stage decided), and where the
+// double words with lenient signs complete on the same answer, p and q are theirs (F's kept
+// where they lie within the double word's enclosure: words.hpp, word_or_enclosed).
 #pragma once
 
 #include <cdref/book/triangle_triangle.hpp>
@@ -58,6 +60,19 @@ std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triang
   }
   TriangleIntersection<F> r = book::detail::intersect_triangles(a, b, F(0));
   if (first == 1) r.intersect = true;
+  // the ends from the double words with lenient signs where they complete on the same answer
+  // (words.hpp: F's value kept where it lies within their enclosure): F's cut points carry
+  // its rounding (11 ulps on the degenerate family, a zero-area triangle's span through the
+  // other triangle, the classification certain from the first stage)
+  if (r.intersect) {
+    const auto lw = on_words_lenient(a, b, [](const auto& x, const auto& y) {
+      return book::detail::intersect_triangles(x, y, W(0.0));
+    }, &used);
+    if (lw && lw->intersect && lw->coplanar == r.coplanar) {
+      r.p = word_or_enclosed(lw->p, r.p, used.k);
+      r.q = word_or_enclosed(lw->q, r.q, used.k);
+    }
+  }
   return {r, {r.intersect, first == 1}};
 }
 
