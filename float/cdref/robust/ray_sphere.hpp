@@ -1,6 +1,10 @@
 // cdref/robust/ray_sphere.hpp - ray casts on a sphere that keep their accuracy where
 // Algorithm 3.1 loses it, for F = float, double, long double. Same signatures and results
-// as cdref::book (hit, cast for a segment and for an infinite ray).
+// as cdref::book (hit, cast for a segment and for an infinite ray). At F = float every entry
+// point runs the double version on the same inputs (each float is a double) and rounds each
+// value once (decision.hpp, widened): the derivation below is then that of double, and the
+// float values are within an ulp of float of the truth (the pairs of floats it used before left
+// thousands of ulps of point and normal at range).
 //
 // Formulation (s the source relative to the centre, r the direction, a = r.r, b = s.r,
 // c = s.s - rho^2, lambda_{1,2} the roots of a l^2 + 2 b l + c = 0). u is the unit roundoff
@@ -611,10 +615,24 @@ int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, boo
 
 }  // namespace detail
 
+namespace detail {
+// A float cast from the double one on the same inputs (decision.hpp, widened): each value
+// rounded once.
+inline Cast<float> rounded(const Cast<double>& c) {
+  Cast<float> r;
+  r.hit = c.hit, r.enters = c.enters, r.unbounded_exit = c.unbounded_exit;
+  r.lambda_enter = float(c.lambda_enter), r.lambda_exit = float(c.lambda_exit);
+  r.point = rounded(c.point), r.normal = rounded(c.normal);
+  return r;
+}
+}  // namespace detail
+
+// (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
 template <class F>
 Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast) {
   check(seg, "segment");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(seg), detail::widened(sp), w));
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
@@ -627,6 +645,7 @@ template <class F>
 Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   check(ray, "ray");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(ray), detail::widened(sp), w));
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
@@ -641,6 +660,7 @@ template <class F>
 bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return hit(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
   return cast(seg, sp, 0).hit;
 }
@@ -649,6 +669,7 @@ template <class F>
 bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return hit(detail::widened(ray), detail::widened(sp));
   if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return f > 0;
   return cast(ray, sp, 0).hit;
 }
@@ -659,6 +680,7 @@ template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
@@ -670,6 +692,7 @@ template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(ray), detail::widened(sp));
   if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return Decision{f > 0, true};
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);

@@ -1,6 +1,8 @@
 // cdref/robust/segment_sphere.hpp - segment-sphere (Section 3.1.3, Algorithm 3.2) that keeps
 // its accuracy where the book loses it, for F = float, double, long double. Same signatures
-// and results as cdref::book (intersect, proximity) and decide_closest (decision.hpp).
+// and results as cdref::book (intersect, proximity) and decide_closest (decision.hpp). At
+// F = float every entry point runs the double version on the same inputs and rounds each value
+// once (decision.hpp, widened).
 // u is the unit roundoff, eta the smallest subnormal.
 //
 // Formulation (local coordinates of the sphere, as the book: s = source - c, t = target - c,
@@ -344,6 +346,8 @@ template <class F>
 Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
+  // (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
+  if constexpr (std::is_same_v<F, float>) return decide_closest(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
   return detail::closest_decision(seg, sp, L, detail::seg_sph_solve(L));
@@ -359,6 +363,13 @@ template <class F>
 Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_proximity) {
   check(seg, "segment");
   check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>) {
+    const Proximity<double> d = proximity(detail::widened(seg), detail::widened(sp), w);
+    Proximity<float> r;
+    r.intersect = d.intersect, r.distance = float(d.distance), r.depth = float(d.depth);
+    r.on_a = detail::rounded(d.on_a), r.on_b = detail::rounded(d.on_b), r.closest = detail::rounded(d.closest);
+    return r;
+  }
   Proximity<F> res;
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
