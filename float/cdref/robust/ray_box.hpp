@@ -1,7 +1,9 @@
 // cdref/robust/ray_box.hpp - ray casts on an axis-aligned box (Algorithm 3.3) that keep
 // their accuracy where the book's float version loses it, for F = float, double, long
 // double. Same signatures and results as cdref::book (hit, cast for a segment s->t and for
-// an infinite ray s + lambda d; Cast<F> from results.hpp), plus decide() (decision.hpp).
+// an infinite ray s + lambda d; Cast<F> from results.hpp), plus decide() (decision.hpp). At
+// F = float every entry point runs the double version on the same inputs and rounds each value
+// once (decision.hpp, widened).
 //
 // What goes wrong in the book at F: it rounds s - c, t - c and t - s before anything else,
 // so at long range (source 1e8..1e12 box sizes away) the outcodes and the numerators
@@ -496,6 +498,7 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const Box<F>& box, unsigned w = want_cast) {
   check(seg, "segment");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(seg), detail::widened(box), w));
   auto e = box_detail::evaluate(seg.source, seg.target, box, true, w);
   // where the steps above are certain their classification is exact already
   if (!e.decision.certain)
@@ -507,6 +510,7 @@ template <class F>
 Cast<F> cast(const Ray<F>& ray, const Box<F>& box, unsigned w = want_cast) {
   check(ray, "ray");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(ray), detail::widened(box), w));
   auto e = box_detail::evaluate(ray.source, ray.direction, box, false, w);
   // where the steps above are certain their classification is exact already
   if (!e.decision.certain)
@@ -518,6 +522,7 @@ template <class F>
 Decision decide(const Segment<F>& seg, const Box<F>& box) {
   check(seg, "segment");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(seg), detail::widened(box));
   if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(seg.source, seg.target, box, true, 0).decision;
 }
@@ -526,6 +531,7 @@ template <class F>
 Decision decide(const Ray<F>& ray, const Box<F>& box) {
   check(ray, "ray");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(ray), detail::widened(box));
   if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(ray.source, ray.direction, box, false, 0).decision;
 }

@@ -615,18 +615,6 @@ int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, boo
 
 }  // namespace detail
 
-namespace detail {
-// A float cast from the double one on the same inputs (decision.hpp, widened): each value
-// rounded once.
-inline Cast<float> rounded(const Cast<double>& c) {
-  Cast<float> r;
-  r.hit = c.hit, r.enters = c.enters, r.unbounded_exit = c.unbounded_exit;
-  r.lambda_enter = float(c.lambda_enter), r.lambda_exit = float(c.lambda_exit);
-  r.point = rounded(c.point), r.normal = rounded(c.normal);
-  return r;
-}
-}  // namespace detail
-
 // (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
 template <class F>
 Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast) {
