@@ -122,7 +122,8 @@ Decision within_range(Decision d, const A& a, const B& b) {
   return d;
 }
 
-// A float query evaluated at double (the sphere and box casts and Algorithm 3.2 at F = float): every
+// A float query evaluated at double (at F = float: the sphere and box casts, Algorithm 3.2,
+// sphere-sphere and sphere-box): every
 // float is a double, so the widened inputs are the same exact inputs, the double evaluation
 // certifies the same exact classification, and each value is its double value rounded once to
 // float. That value is within an ulp or two of double of the truth, so the float is the
@@ -143,6 +144,12 @@ inline Cast<float> rounded(const Cast<double>& c) {
   r.hit = c.hit, r.enters = c.enters, r.unbounded_exit = c.unbounded_exit;
   r.lambda_enter = float(c.lambda_enter), r.lambda_exit = float(c.lambda_exit);
   r.point = rounded(c.point), r.normal = rounded(c.normal);
+  return r;
+}
+inline Proximity<float> rounded(const Proximity<double>& d) {
+  Proximity<float> r;
+  r.intersect = d.intersect, r.distance = float(d.distance), r.depth = float(d.depth);
+  r.on_a = rounded(d.on_a), r.on_b = rounded(d.on_b), r.closest = rounded(d.closest);
   return r;
 }
 }  // namespace detail

@@ -363,13 +363,7 @@ template <class F>
 Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_proximity) {
   check(seg, "segment");
   check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) {
-    const Proximity<double> d = proximity(detail::widened(seg), detail::widened(sp), w);
-    Proximity<float> r;
-    r.intersect = d.intersect, r.distance = float(d.distance), r.depth = float(d.depth);
-    r.on_a = detail::rounded(d.on_a), r.on_b = detail::rounded(d.on_b), r.closest = detail::rounded(d.closest);
-    return r;
-  }
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(proximity(detail::widened(seg), detail::widened(sp), w));
   Proximity<F> res;
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);

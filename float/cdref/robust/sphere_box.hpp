@@ -2,6 +2,8 @@
 // book loses it, for F = float, double, long double. Same signatures and results as
 // cdref::book (intersect, proximity) and decide (decision.hpp). u is the unit roundoff,
 // eta the smallest subnormal.
+// At F = float every entry point runs the double version on the same inputs and rounds each
+// value once (decision.hpp, widened).
 //
 // Formulation (the book's, in the box's local coordinates: c = sphere centre - box centre,
 // x = clamp(c, -h, h), v = x - c):
@@ -155,6 +157,7 @@ template <class F>
 bool intersect(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return intersect(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
   if (const int f = detail::sphere_box_filter(sp, box)) return f < 0;
   const auto L = detail::sph_box_local(sp, box);
   return !L.outside || detail::sph_box_q(L).value <= F(0);
@@ -164,6 +167,7 @@ template <class F>
 Decision decide(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
   if (const int f = detail::sphere_box_filter(sp, box)) return Decision{f < 0, true};
   const auto L = detail::sph_box_local(sp, box);
   if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
@@ -175,6 +179,7 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want_proximity) {
   check(sp, "sphere");
   check(box, "box");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(proximity(detail::widened(sp), detail::widened(box), w));  // (decision.hpp, widened)
   Proximity<F> res;
   const auto L = detail::sph_box_local(sp, box);
   const F q = L.outside ? detail::sph_box_q(L).value : F(0);

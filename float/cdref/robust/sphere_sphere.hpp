@@ -2,6 +2,8 @@
 // where the book's |v|^2 <= (rhoA + rhoB)^2 loses it, for F = float, double, long double.
 // Same signatures and results as cdref::book: intersect, proximity; and decide
 // (decision.hpp). u is the unit roundoff, eta the smallest subnormal.
+// At F = float every entry point runs the double version on the same inputs and rounds each
+// value once (decision.hpp, widened).
 //
 // Formulation, with v = cA - cB and s = rhoA + rhoB (the book's definitions, exactly):
 //  1. Exact differences. Each v_i = fl(cA_i - cB_i) + lo_i and s = fl(rhoA + rhoB) + s_lo
@@ -257,6 +259,7 @@ template <class F>
 bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
+  if constexpr (std::is_same_v<F, float>) return intersect(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
   if (const int f = detail::sphere_sphere_filter(a, b)) return f < 0;
   const auto L = detail::sphere_sphere_local(a, b);
   return L.all_zero || detail::sphere_sphere_q(L).value <= F(0);
@@ -266,6 +269,7 @@ template <class F>
 Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
+  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
   if (const int f = detail::sphere_sphere_filter(a, b)) return Decision{f < 0, true};
   const auto L = detail::sphere_sphere_local(a, b);
   if (L.all_zero) return within_range(Decision{true, L.exact}, a, b);
@@ -277,6 +281,7 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& a, const Sphere<F>& b, unsigned w = want_proximity) {
   check(a, "sphere A");
   check(b, "sphere B");
+  if constexpr (std::is_same_v<F, float>) return detail::rounded(proximity(detail::widened(a), detail::widened(b), w));  // (decision.hpp, widened)
   Proximity<F> res;
   const auto L = detail::sphere_sphere_local(a, b);
   const detail::Bounded<F> qb = L.all_zero ? detail::Bounded<F>{F(0), F(0)} : detail::sphere_sphere_q(L);
