@@ -426,7 +426,7 @@ TEST_CASE("robust polygon casts near a diagonal take the normal of the triangle 
   }
 }
 
-TEST_CASE("robust outputs on degenerate, tiny and far inputs: sphere-triangle, polygon-sphere, triangle-triangle, float sphere and box casts",
+TEST_CASE("robust outputs on degenerate, tiny and far inputs: sphere-triangle, polygon-sphere, triangle-triangle, float sphere and box casts, polygon casts",
           "[campaign][robust]") {
   // robust/sphere_triangle.hpp takes the outputs in the face region from the triangle's normal
   // (x - c = n side / |n|^2): before, a centre an ulp off the triangle gave the sphere's
@@ -444,7 +444,10 @@ TEST_CASE("robust outputs on degenerate, tiny and far inputs: sphere-triangle, p
   // ray cast's point 4.5e3 ulps off at 10^7 radii, the segment cast's 1.4e4 at 10^9 and its
   // normal 2.1e3 at 10^10 (tangent at range), Algorithm 3.2's witness 4.3e6 at 10^12 and its
   // depth 2.7e3 at 2^-44 of tangency, and the box casts' point 4.1e3 and 1.3e4 at 10^7 and
-  // 10^8 box sizes (`cdref campaign --impl robust-float --n 300`). Every
+  // 10^8 box sizes (`cdref campaign --impl robust-float --n 300`). The triangle casts' entry
+  // point on double words is the tighter of s + lambda d and the barycentric form
+  // (robust/ray_triangle.hpp, cast_on_words): a ray through a polygon's vertex had a coordinate
+  // of 1e-32 where the truth is 0 (4e18 ulps, degenerate family). Every
   // output, where the robust classification is certain, within 8 ulps (measured: 2 at most on
   // these cells).
   struct Cell {
@@ -458,7 +461,8 @@ TEST_CASE("robust outputs on degenerate, tiny and far inputs: sphere-triangle, p
                         Cell{"triangle-triangle", "degenerate", 0, 53}, Cell{"triangle-triangle", "degenerate", 0, 24},
                         Cell{"ray-sphere-cast", "long-range", 9, 24}, Cell{"segment-sphere-cast", "tangent-at-range", 10, 24},
                         Cell{"segment-sphere", "tangent-at-range", 12, 24}, Cell{"segment-sphere", "near-tangent", 44, 24},
-                        Cell{"ray-box-cast", "long-range", 7, 24}, Cell{"segment-box-cast", "long-range", 8, 24}}) {
+                        Cell{"ray-box-cast", "long-range", 7, 24}, Cell{"segment-box-cast", "long-range", 8, 24},
+                        Cell{"ray-polygon-cast", "degenerate", 0, 53}}) {
     const Query q = query_by_name(c.query);
     const QueryInfo& qi = info(q);
     std::uint64_t graded = 0, worst = 0;

@@ -123,13 +123,33 @@ int words_hit_or_orientation(const Shot& shot, const Triangle<F>& tri, bool boun
   return w ? *w : 2;
 }
 
+// The book's cast on double words, its entry point the tighter of two enclosures coordinate by
+// coordinate: the book's s + lambda_enter d and the barycentric v0 + u (v1 - v0) + v (v2 - v0)
+// (the same point in exact arithmetic: book/ray_triangle.hpp, u and v the weights of v1 and v2
+// there, also for a zero-area triangle's span). s + lambda d carries lambda's u^2 times |lambda d|,
+// the whole distance from the source; the barycentric form u^2 of the triangle's size, and none
+// at a vertex or on an edge, where the weights are exact (a ray through a polygon's vertex gave a
+// coordinate of 1e-32 where the truth is 0). Both are rigorous enclosures (oracle::Bounded2),
+// so the point keeps whichever bound is smaller.
+template <class Shot, class Tri>
+auto cast_on_words(const Shot& a, const Tri& b) {
+  auto c = book::cast(a, b, want_all);
+  if (c.hit) {
+    using V = std::decay_t<decltype(b.vertex[0])>;
+    const V q = V(b.vertex[0] + V(b.vertex[1] - b.vertex[0]) * c.u + V(b.vertex[2] - b.vertex[0]) * c.v);
+    for (int i = 0; i < 3; ++i)
+      if (q[i].bound() < c.point[i].bound()) c.point[i] = q[i];
+  }
+  return c;
+}
+
 // The cast after the first stage's answer `first` (1, 0 or 2 as triangle_first_stage gives it).
 template <class Shot, class F>
 std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const Triangle<F>& tri, bool bounded,
                                                         int first) {
   if (first == 0) return {TriangleCast<F>{}, {false, true}};
   Scale used;
-  const auto words = on_words(shot, tri, [](const auto& a, const auto& b) { return book::cast(a, b, want_all); }, &used);
+  const auto words = on_words(shot, tri, [](const auto& a, const auto& b) { return cast_on_words(a, b); }, &used);
   if (words) {
     TriangleCast<F> r = triangle_cast_value<F>(*words);
     r.point = Scale{-used.k}.len(r.point);
@@ -153,7 +173,7 @@ std::pair<TriangleCast<F>, Decision> triangle_cast_eval(const Shot& shot, const 
   // then the double words with lenient signs where they complete with a hit (words.hpp: the
   // entry point is continuous where the shot meets the triangle), WBW's value kept where it
   // lies within their enclosure
-  if (const auto lw = on_words_lenient(shot, tri, [](const auto& a, const auto& b) { return book::cast(a, b, want_all); },
+  if (const auto lw = on_words_lenient(shot, tri, [](const auto& a, const auto& b) { return cast_on_words(a, b); },
                                        &used);
       lw && lw->hit)
     take_lenient_values<F>(r, *lw, used.k);
