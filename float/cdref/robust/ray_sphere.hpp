@@ -138,7 +138,9 @@
 // uncertain only on degenerate draws (exact zeros: 13-15% of them at double and long double,
 // 2-3% at float) and on at most 1 of the 13000 draws per query of the long-range and
 // tangent-at-range families at float; certain
-// but wrong never.
+// but wrong never. (Those float figures are of the formulation at F = float, on pairs of
+// floats; float now runs the double version: 0.05% and 0.09% uncertain for the ray and segment
+// casts, `cdref campaign --impl robust-float --n 300 --seed 3`, 2026-11-24.)
 // The filter first (cast_filter: hit() and decide() try it before the double words). The same
 // formula on the stable tier's arithmetic in F, each quantity with a bound that covers the
 // rounding of the inputs' differences (s_i = fl(source_i - centre_i) off by u |s_i|, for a
