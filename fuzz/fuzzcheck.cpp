@@ -75,6 +75,8 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
       Answer t;
       if (!refuses([&] { return truth(q, in, 53); }, t)) violated(q, in, "the truth took a non-finite input");
       if (!refuses([&] { return oracle_classify(q, in); }, t)) violated(q, in, "the oracle took a non-finite input");
+      if (qi.oracle_enter && !refuses([&] { return qi.oracle_enter(in, nullptr); }, t))
+        violated(q, in, "oracle::enter took a non-finite input");
       return;
     }
   Answer g, l;
@@ -112,6 +114,14 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   if (refuses([&] { return oracle_classify(q, in); }, oc))
     violated(q, in, "the classification oracle refused an input the exact types take");
   if (oc.cls != t.cls || oc.pred != t.pred) violated(q, in, "the classification oracle differs from the truth");
+  // a cast's hit and lambda_enter alone (oracle::enter): the truth's, bit for bit (0 on a miss)
+  if (qi.oracle_enter) {
+    Answer e;
+    if (refuses([&] { return qi.oracle_enter(in, nullptr); }, e))
+      violated(q, in, "oracle::enter refused an input the exact types take");
+    if (e.cls != t.cls) violated(q, in, "oracle::enter classifies differently from the truth");
+    if (!same_value(e.v[0], t.cls ? t.v[0] : 0.0L)) violated(q, in, "oracle::enter differs from the truth's lambda_enter");
+  }
   // the robust versions: a classification they call certain is the exact one
   for (int precision : {53, 64}) {
     Answer r;

@@ -2,10 +2,13 @@
 // on every family and scale of every campaign query it must equal the book at CGAL::Gmpq;
 // the expansion stage alone must equal the rational stage wherever it applies, and the filter
 // alone must be right wherever it decides; exact boundaries; invalid input. The one
-// translation unit of the tests that instantiates the oracle's Gmpq stage.
+// translation unit of the tests that instantiates the oracle's Gmpq stage. Also
+// oracle::enter (a cast's lambda_enter correctly rounded): equal to the truth on every family,
+// each of its double paths alone wherever it answers.
 #include <catch2/catch.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -215,4 +218,132 @@ TEST_CASE("oracle::classify rejects bad input with the book's message", "[oracle
   CHECK(msg([&] { oracle::classify(neg, badbox); }) == msg([&] { book::intersect(neg, badbox); }));
   CHECK(msg([&] { oracle::classify(badseg, badbox); }) == msg([&] { book::hit(badseg, badbox); }));
   CHECK(msg([&] { oracle::classify(zero, good); }) == "ray direction is the zero vector");
+}
+
+namespace {
+// The four casts with oracle::enter, their inputs as primitives.
+template <class Run>
+auto on_cast(const std::string& q, const Inputs& in, Run run) {
+  const Vec3<double> a(in[0], in[1], in[2]), b(in[3], in[4], in[5]), c(in[6], in[7], in[8]);
+  if (q == "segment-sphere-cast") return run(Segment<double>{a, b}, Sphere<double>{c, in[9]});
+  if (q == "ray-sphere-cast") return run(Ray<double>{a, b}, Sphere<double>{c, in[9]});
+  const Vec3<double> h(in[9], in[10], in[11]);
+  if (q == "segment-box-cast") return run(Segment<double>{a, b}, Box<double>{c, h});
+  return run(Ray<double>{a, b}, Box<double>{c, h});
+}
+template <class Shot, class Solid>
+std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
+  namespace ed = oracle::enter_detail;
+  if constexpr (std::is_same_v<Solid, Sphere<double>>)
+    return ed::sphere_double(x, y, stage);
+  else
+    return stage == 1 ? ed::box_double(x, y) : std::nullopt;
+}
+bool same_double(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+// a hit with lambda_enter v; a miss is written -1
+bool same_enter(const oracle::Entry& e, double v) {
+  return v < 0 ? !e.hit && same_double(e.lambda_enter, 0.0) : e.hit && same_double(e.lambda_enter, v);
+}
+}  // namespace
+
+TEST_CASE("oracle::enter is the truth's lambda_enter on every family, each double path alone where it answers",
+          "[oracle-classify][oracle-enter]") {
+  struct Count {
+    std::uint64_t hits = 0, first = 0, second = 0, exact = 0;
+  };
+  std::map<std::string, Count> count;  // "query family"
+  for (const std::string q : {"segment-sphere-cast", "ray-sphere-cast", "segment-box-cast", "ray-box-cast"}) {
+    const Query Q = query_by_name(q);
+    REQUIRE(info(Q).oracle_enter);
+    for (const Family& f : families(Q))
+      for (int k : f.scales)
+        for (std::uint64_t i = 0; i < (f.scales.size() == 1 ? 800u : 100u); ++i) {
+          const Inputs in = make_case(13, Q, f, k, i);
+          const Answer t = truth(Q, in, 53);
+          const double want = t.cls ? double(t.v[0]) : 0.0;
+          INFO(q << " " << f.name << "/" << k << " case " << i << ": want " << want);
+          bool exact_used = false;
+          const Answer got = info(Q).oracle_enter(in, &exact_used);
+          REQUIRE(got.cls == t.cls);
+          REQUIRE(same_double(double(got.v[0]), want));
+          if (!t.cls) continue;
+          Count& c = count[q + " " + f.name];
+          ++c.hits;
+          c.exact += exact_used;
+          // each double path alone: where it answers, the answer is the truth's
+          for (int stage : {1, 2}) {
+            const auto v = on_cast(q, in, [&](const auto& x, const auto& y) { return double_path(x, y, stage); });
+            if (!v) continue;
+            REQUIRE(same_double(*v, want));
+            ++(stage == 1 ? c.first : c.second);
+          }
+        }
+  }
+  if (std::getenv("CDREF_TEST_REPORT"))
+    for (const auto& [name, c] : count)
+      std::printf("oracle::enter %-34s hits %5llu  first path %5llu  second %5llu  exact %4llu\n", name.c_str(),
+                  (unsigned long long)c.hits, (unsigned long long)c.first, (unsigned long long)c.second,
+                  (unsigned long long)c.exact);
+  // The double paths answer the random placements, at range and (the double words) near
+  // tangency down to 2^-52; the exact path is left the degenerate and far-magnitude draws.
+  for (const char* name : {"segment-sphere-cast uniform", "ray-sphere-cast uniform", "segment-box-cast uniform",
+                           "ray-box-cast uniform", "segment-sphere-cast long-range", "ray-sphere-cast long-range",
+                           "segment-box-cast long-range", "ray-box-cast long-range", "segment-box-cast grazing",
+                           "ray-box-cast grazing"}) {
+    INFO(name);
+    const Count& c = count[name];
+    REQUIRE(c.hits > 30);
+    REQUIRE(c.first * 100 >= c.hits * 99);
+    REQUIRE(c.exact == 0);
+  }
+  for (const char* name : {"segment-sphere-cast near-tangent", "ray-sphere-cast near-tangent",
+                           "segment-sphere-cast tangent-at-range", "ray-sphere-cast tangent-at-range"}) {
+    INFO(name);
+    const Count& c = count[name];
+    REQUIRE(c.second == c.hits);
+    REQUIRE(c.exact == 0);
+  }
+}
+
+TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][oracle-enter]") {
+  const Sphere<double> unit{V(0, 0, 0), 1};
+  // a source on the sphere, outward and inward; inside; a tangent line (lambda exactly 2);
+  // a miss by one ulp of the offset (-1: a miss)
+  CHECK(same_enter(oracle::enter(Ray<double>{V(1, 0, 0), V(1, 0, 0)}, unit), 0.0));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(1, 0, 0), V(-1, 0, 0)}, unit), 0.0));
+  CHECK(same_enter(oracle::enter(Segment<double>{V(0.5, 0, 0), V(3, 0, 0)}, unit), 0.0));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(-2, 1, 0), V(1, 0, 0)}, unit), 2.0));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(-2, 1 + 0x1p-52, 0), V(1, 0, 0)}, unit), -1));
+  CHECK(same_enter(oracle::enter(Segment<double>{V(-3, 0, 0), V(1, 0, 0)}, unit), 0.5));
+  // a chord: the ray from (-2, 0.5, 0) along x enters at x = -sqrt(3)/2, lambda = 2 -
+  // sqrt(3)/2 (irrational); the oracle's rounding against the book's at Gmpq
+  const Ray<double> chord{V(-2, 0.5, 0), V(1, 0, 0)};
+  CHECK(same_enter(oracle::enter(chord, unit),
+                    round_to<double>(book::cast(oracle::rational_inputs::toq(chord),
+                                                oracle::rational_inputs::toq(unit)).lambda_enter)));
+  // a box: through a face, along an edge (the entry on both planes), from a face, inside
+  const Box<double> box{V(0, 0, 0), V(1, 1, 1)};
+  CHECK(same_enter(oracle::enter(Segment<double>{V(-3, 0, 0), V(1, 0, 0)}, box), 0.5));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(-2, 1, 1), V(3, 0, 0)}, box), 1.0 / 3.0));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(-1, 0, 0), V(1, 0, 0)}, box), 0.0));
+  CHECK(same_enter(oracle::enter(Segment<double>{V(0, 0, 0), V(5, 5, 5)}, box), 0.0));
+  CHECK(same_enter(oracle::enter(Ray<double>{V(-2, 1 + 0x1p-52, 0), V(1, 0, 0)}, box), -1));
+  // bad input: the book's message
+  auto msg = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const invalid_input& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  const double nan = std::nan("");
+  const Ray<double> zero{V(0, 0, 0), V(0, 0, 0)};
+  const Segment<double> badseg{V(0, 0, 0), V(0, 0, nan)};
+  CHECK(msg([&] { oracle::enter(zero, unit); }) == "ray direction is the zero vector");
+  CHECK(msg([&] { oracle::enter(badseg, box); }) == msg([&] { book::hit(badseg, box); }));
+  CHECK(msg([&] { oracle::enter(Segment<double>{V(0, 0, 0), V(1, 0, 0)}, Sphere<double>{V(0, 0, 0), -1}); }) ==
+        msg([&] { book::hit(Segment<double>{V(0, 0, 0), V(1, 0, 0)}, Sphere<double>{V(0, 0, 0), -1}); }));
+  CHECK(msg([&] { oracle::enter(zero, Box<double>{V(0, 0, 0), V(1, -1, 1)}); }) ==
+        msg([&] { book::hit(zero, Box<double>{V(0, 0, 0), V(1, -1, 1)}); }));
 }

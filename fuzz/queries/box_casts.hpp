@@ -5,6 +5,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/stable/ray_box.hpp>
 
@@ -55,6 +56,9 @@ struct BoxCast {
   static cdref::robust::Decision robust_decide(const Shot<F>& a, const Box<F>& b) { return cdref::robust::decide(a, b); }
   static bool oracle(const Shot<double>& a, const Box<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Box<double>& b, bool* exact_used) {
+    return cdref::oracle::enter(a, b, exact_used);
   }
   static int stage(cdref::oracle::Stage s, const Shot<double>& a, const Box<double>& b) {
     return cdref::oracle::staged::at_stage(s, a, b);

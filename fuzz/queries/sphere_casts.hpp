@@ -5,6 +5,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/stable/ray_sphere.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 
@@ -58,6 +59,9 @@ struct SphereCast {
   }
   static bool oracle(const Shot<double>& a, const Sphere<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Sphere<double>& b, bool* exact_used) {
+    return cdref::oracle::enter(a, b, exact_used);
   }
   static int stage(cdref::oracle::Stage s, const Shot<double>& a, const Sphere<double>& b) {
     return cdref::oracle::staged::at_stage(s, a, b);

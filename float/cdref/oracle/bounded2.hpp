@@ -76,6 +76,9 @@ class Bounded2 {
   Bounded2(int x) : hi_(x) {}     // NOLINT
   // The exact value hi + lo, for hi = fl(hi + lo) (a long double split into two doubles).
   static Bounded2 exact_pair(double hi, double lo) { return make(hi, lo, 0); }
+  // A value known to lie within e of hi + lo, for hi = fl(hi + lo) (a double word computed
+  // elsewhere with its own bound, e >= 0).
+  static Bounded2 within(double hi, double lo, double e) { return make(hi, lo, e); }
 
   double hi() const { return hi_; }
   double lo() const { return lo_; }
@@ -217,25 +220,48 @@ class Bounded2 {
 
   // The exact value rounded to nearest double, or uncertain.
   double rounded() const {
-    if (!finite()) throw uncertain();
-    if (lo_ == 0 && e_ == 0) return hi_ + 0.0;  // an exact zero rounds to +0, never -0
-    const double inf = std::numeric_limits<double>::infinity();
-    const double dn = std::nextafter(hi_, -inf), up = std::nextafter(hi_, inf);
+    double r;
+    if (!try_rounded(r)) throw uncertain();
+    return r;
+  }
+  // The same without an exception (false: uncertain), for callers with another path.
+  bool try_rounded(double& out) const {
+    if (!finite()) return false;
+    if (lo_ == 0 && e_ == 0) {
+      out = hi_ + 0.0;  // an exact zero rounds to +0, never -0
+      return true;
+    }
     // Half-gaps are powers of two (exact). hi's rounding interval is
     // (hi - below, hi + above); the value lies in [hi + lo - e, hi + lo + e].
-    const double below = std::isinf(dn) ? (up - hi_) / 2 : (hi_ - dn) / 2;
-    const double above = std::isinf(up) ? (hi_ - dn) / 2 : (up - hi_) / 2;
+    double below, above;
+    const double a = std::fabs(hi_);
+    if (a >= 0x1p-1021 && a < std::numeric_limits<double>::max()) {
+      // a normal number off the first binade and below the largest: its neighbours from
+      // the bit pattern (no library call); the gaps are exact
+      const std::uint64_t b = std::bit_cast<std::uint64_t>(a);
+      const double gu = (std::bit_cast<double>(b + 1) - a) / 2, gd = (a - std::bit_cast<double>(b - 1)) / 2;
+      above = hi_ > 0 ? gu : gd;
+      below = hi_ > 0 ? gd : gu;
+    } else {
+      const double inf = std::numeric_limits<double>::infinity();
+      const double dn = std::nextafter(hi_, -inf), up = std::nextafter(hi_, inf);
+      below = std::isinf(dn) ? (up - hi_) / 2 : (hi_ - dn) / 2;
+      above = std::isinf(up) ? (hi_ - dn) / 2 : (up - hi_) / 2;
+    }
     // An exact value on a midpoint: ties to even (the neighbour with an even last bit).
     if (e_ == 0 && (lo_ == above || -lo_ == below) && above > 0 && below > 0) {
-      const double other = lo_ > 0 ? up : dn;
-      if (std::isinf(other)) throw uncertain();  // the overflow threshold: left to the exact path
-      return (std::bit_cast<std::uint64_t>(hi_) & 1) == 0 ? hi_ : other;
+      const double inf = std::numeric_limits<double>::infinity();
+      const double other = std::nextafter(hi_, lo_ > 0 ? inf : -inf);
+      if (std::isinf(other)) return false;  // the overflow threshold: left to the exact path
+      out = (std::bit_cast<std::uint64_t>(hi_) & 1) == 0 ? hi_ : other;
+      return true;
     }
     // above - lo and below + lo: |lo| <= half an ulp of hi, so each is a sum of two
     // numbers within a factor 2^54 of one another, rounded once: shrink it by 2u.
     const double room = std::min(above - lo_, below + lo_) * (1 - 2 * u);
-    if (e_ * grow < room) return hi_;
-    throw uncertain();
+    if (!(e_ * grow < room)) return false;
+    out = hi_;
+    return true;
   }
   // The exact value rounded to nearest float, or uncertain.
   float rounded_float() const {

@@ -154,6 +154,10 @@ struct QueryInfo {
   std::function<Answer(const Inputs&, int precision, bool* exact_used)> oracle_truth;
   // The exact classification alone (cls = pred), from oracle::classify.
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_classify;
+  // A cast's classification and lambda_enter alone (cls = pred, v[0]; the other values 0),
+  // lambda_enter correctly rounded to double (oracle::enter, exact/cdref/oracle/enter.hpp: 0
+  // on a miss); empty for the queries without that path.
+  std::function<Answer(const Inputs&, bool* exact_used)> oracle_enter;
   // A stage of the classification oracle alone (0 filter, 1 expansion, 2 rational): the
   // decision, or -1 when that stage cannot decide. Empty for queries without stages.
   std::function<int(int stage, const Inputs&)> oracle_stage;

@@ -13,6 +13,8 @@
 //   bare(a, b)                                the book's classification without its input
 //                                             checks (book::unchecked): the cost report's baseline
 //   oracle(a, b, Stage*)                      the exact classification (oracle::classify)
+//   oracle_enter(a, b, bool*)                 (casts with that path) the hit and lambda_enter
+//                                             alone, correctly rounded (oracle::enter)
 // and, where they exist:
 //   stable(a, b, w), stable_pred(a, b)        the stable tier (float/cdref/stable), F = float, double;
 //   stable_bare(a, b)                         its classification without input checks
@@ -26,6 +28,7 @@
 #pragma once
 
 #include <bit>
+#include <concepts>
 
 #include <cdref/exact.hpp>
 #include <cdref/exact/long_double.hpp>
@@ -416,6 +419,13 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   if (exact_used) *exact_used = true;
   return truth_of<Spec>(in, precision);
 }
+
+// A cast's lambda_enter from oracle::enter (exact/cdref/oracle/enter.hpp), where the spec has it.
+template <class Spec>
+constexpr bool has_oracle_enter = requires(const Inputs& in, bool* e) {
+  { Spec::oracle_enter(Spec::template make<double>(in).first, Spec::template make<double>(in).second, e) }
+      -> std::same_as<oracle::Entry>;
+};
 
 template <class Spec>
 Answer oracle_classify_of(const Inputs& in, bool* exact_used) {
