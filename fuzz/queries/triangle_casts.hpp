@@ -8,6 +8,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/robust/ray_triangle.hpp>
 #include <cdref/stable/ray_triangle.hpp>
@@ -64,6 +65,9 @@ struct TriangleCast {
   }
   static bool oracle(const Shot<double>& a, const Triangle<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Triangle<double>& b, bool* exact_used) {
+    return cdref::oracle::enter(a, b, exact_used);
   }
   static int stage(cdref::oracle::Stage s, const Shot<double>& a, const Triangle<double>& b) {
     return cdref::oracle::ray_triangle::at_stage(s, a, b);

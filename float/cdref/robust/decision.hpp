@@ -55,6 +55,7 @@ template <class F> F scalar_of(const Sphere<F>&);
 template <class F> F scalar_of(const Box<F>&);
 template <class F> F scalar_of(const Segment<F>&);
 template <class F> F scalar_of(const Ray<F>&);
+template <class F> F scalar_of(const Triangle<F>&);
 }  // namespace detail
 
 namespace detail {
@@ -73,6 +74,7 @@ template <class F> void span_of(const Sphere<F>& s, F& hi, F& lo) { span_of(s.ce
 template <class F> void span_of(const Box<F>& b, F& hi, F& lo) { span_of(b.center, hi, lo); span_of(b.extent, hi, lo); }
 template <class F> void span_of(const Segment<F>& s, F& hi, F& lo) { span_of(s.source, hi, lo); span_of(s.target, hi, lo); }
 template <class F> void span_of(const Ray<F>& r, F& hi, F& lo) { span_of(r.source, hi, lo); span_of(r.direction, hi, lo); }
+template <class F> void span_of(const Triangle<F>& t, F& hi, F& lo) { for (const auto& v : t.vertex) span_of(v, hi, lo); }
 }  // namespace detail
 
 // d, made uncertain when an input lies near the ends of the exponent range, or when the

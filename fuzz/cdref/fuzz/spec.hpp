@@ -427,6 +427,53 @@ constexpr bool has_oracle_enter = requires(const Inputs& in, bool* e) {
       -> std::same_as<oracle::Entry>;
 };
 
+// Every cast's hit and lambda_enter alone: oracle::enter where the spec has it (the sphere and
+// box casts), otherwise the oracle's classification, then on a hit the truth's formulation
+// asked for lambda_enter alone, on oracle::Bounded2 (certain, or it throws) and then at
+// CGAL::Gmpq, rounded correctly to double.
+template <class R>
+  requires requires(const R& r) { r.lambda_enter; }
+const auto& entry_value(const R& r) {
+  return r.lambda_enter;
+}
+template <class R>
+  requires requires(const R& r) { r.first.lambda_enter; }
+const auto& entry_value(const R& r) {
+  return r.first.lambda_enter;  // a shot against several triangles: the first hit
+}
+template <class Spec>
+constexpr bool is_cast = requires(const Inputs& in) {
+  entry_value(Spec::book(Spec::template make<double>(in).first, Spec::template make<double>(in).second, 0u));
+};
+template <class Spec>
+oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
+  require_finite<Spec, CGAL::Gmpq>(in);
+  const auto [a, b] = Spec::template make<double>(in);
+  if constexpr (has_oracle_enter<Spec>) {
+    return Spec::oracle_enter(a, b, exact_used);
+  } else {
+    if (exact_used) *exact_used = false;
+    oracle::Entry e;
+    e.hit = Spec::oracle(a, b, nullptr);
+    if (!e.hit) return e;
+    const auto enter_at = [&in]<class T>(T*) {
+      const auto [x, y] = Spec::template make<T>(in);
+      if constexpr (Spec::book_is_truth)
+        return double(value<double>(entry_value(Spec::book(x, y, unsigned(want_lambda_enter)))));
+      else
+        return double(value<double>(entry_value(Spec::truth(x, y, unsigned(want_lambda_enter)))));
+    };
+    try {
+      e.lambda_enter = enter_at(static_cast<oracle::Bounded2*>(nullptr));
+      return e;
+    } catch (const oracle::uncertain&) {
+    }
+    if (exact_used) *exact_used = true;
+    e.lambda_enter = enter_at(static_cast<CGAL::Gmpq*>(nullptr));
+    return e;
+  }
+}
+
 template <class Spec>
 Answer oracle_classify_of(const Inputs& in, bool* exact_used) {
   require_finite<Spec, CGAL::Gmpq>(in);
