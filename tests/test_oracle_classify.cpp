@@ -119,6 +119,16 @@ bool hand(const A& a, const B& b, bool alg32, Stage* st = nullptr) {
   return got;
 }
 Vec3<double> V(double x, double y, double z) { return Vec3<double>(x, y, z); }
+// The message of the invalid_input that f throws.
+template <class F>
+std::string msg(F&& f) {
+  try {
+    f();
+  } catch (const invalid_input& e) {
+    return e.what();
+  }
+  return "no exception";
+}
 }  // namespace
 
 TEST_CASE("oracle::classify on exact boundaries", "[oracle-classify]") {
@@ -198,14 +208,6 @@ TEST_CASE("oracle::classify on exact boundaries", "[oracle-classify]") {
 
 TEST_CASE("oracle::classify rejects bad input with the book's message", "[oracle-classify]") {
   const double nan = std::nan("");
-  auto msg = [](auto&& f) -> std::string {
-    try {
-      f();
-    } catch (const invalid_input& e) {
-      return e.what();
-    }
-    return "no exception";
-  };
   const Sphere<double> good{V(0, 0, 0), 1}, neg{V(0, 0, 0), -1};
   const Segment<double> badseg{V(0, 0, 0), V(0, 0, nan)};
   const Ray<double> zero{V(0, 0, 0), V(0, 0, 0)};
@@ -228,6 +230,12 @@ auto on_cast(const std::string& q, const Inputs& in, Run run) {
   const Vec3<double> a(in[0], in[1], in[2]), b(in[3], in[4], in[5]), c(in[6], in[7], in[8]);
   if (q == "segment-sphere-cast") return run(Segment<double>{a, b}, Sphere<double>{c, in[9]});
   if (q == "ray-sphere-cast") return run(Ray<double>{a, b}, Sphere<double>{c, in[9]});
+  if (q == "segment-obb-cast" || q == "ray-obb-cast") {
+    const OrientedBox<double> box{c, Vec3<double>(in[9], in[10], in[11]),
+                                  {Vec3<double>(in[12], in[13], in[14]), Vec3<double>(in[15], in[16], in[17]),
+                                   Vec3<double>(in[18], in[19], in[20])}};
+    return q[0] == 's' ? run(Segment<double>{a, b}, box) : run(Ray<double>{a, b}, box);
+  }
   if (q == "segment-triangle-cast" || q == "ray-triangle-cast") {
     const Triangle<double> tri{{c, Vec3<double>(in[9], in[10], in[11]), Vec3<double>(in[12], in[13], in[14])}};
     return q[0] == 's' ? run(Segment<double>{a, b}, tri) : run(Ray<double>{a, b}, tri);
@@ -243,6 +251,8 @@ std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
     return ed::sphere_double(x, y, stage);
   else if constexpr (std::is_same_v<Solid, Box<double>>)
     return stage == 1 ? ed::box_double(x, y) : std::nullopt;
+  else if constexpr (std::is_same_v<Solid, OrientedBox<double>>)
+    return stage == 1 ? ed::obb_double(x, y) : std::nullopt;
   else
     return stage == 1 ? ed::triangle_double(x, y) : std::nullopt;
 }
@@ -259,8 +269,9 @@ TEST_CASE("oracle::enter and every cast's lambda_enter oracle equal the truth on
     std::uint64_t hits = 0, first = 0, second = 0, exact = 0;
   };
   std::map<std::string, Count> count;  // "query family"
-  const std::vector<std::string> dedicated{"segment-sphere-cast", "ray-sphere-cast",     "segment-box-cast",
-                                          "ray-box-cast",        "segment-triangle-cast", "ray-triangle-cast"};
+  const std::vector<std::string> dedicated{"segment-sphere-cast",   "ray-sphere-cast",   "segment-box-cast",
+                                          "ray-box-cast",          "segment-obb-cast",  "ray-obb-cast",
+                                          "segment-triangle-cast", "ray-triangle-cast"};
   int casts = 0;
   for (Query Q : all_queries()) {
     if (!info(Q).oracle_enter) continue;  // not a cast
@@ -293,7 +304,7 @@ TEST_CASE("oracle::enter and every cast's lambda_enter oracle equal the truth on
           }
         }
   }
-  REQUIRE(casts == 12);  // Algorithm 3.1 and 3.3, the oriented box, the triangle, fan and polygon
+  REQUIRE(casts == 12);  // Algorithm 3.1 and 3.3, the oriented box, the triangle, the fan, the polygon
   if (std::getenv("CDREF_TEST_REPORT"))
     for (const auto& [name, c] : count)
       std::printf("oracle::enter %-34s hits %5llu  first path %5llu  second %5llu  exact %4llu\n", name.c_str(),
@@ -306,7 +317,9 @@ TEST_CASE("oracle::enter and every cast's lambda_enter oracle equal the truth on
                            "ray-box-cast uniform", "segment-sphere-cast long-range", "ray-sphere-cast long-range",
                            "segment-box-cast long-range", "ray-box-cast long-range", "segment-box-cast grazing",
                            "ray-box-cast grazing", "segment-triangle-cast long-range", "ray-triangle-cast long-range",
-                           "segment-triangle-cast near-edge", "ray-triangle-cast near-edge"}) {
+                           "segment-triangle-cast near-edge", "ray-triangle-cast near-edge", "segment-obb-cast uniform",
+                           "ray-obb-cast uniform", "segment-obb-cast long-range", "ray-obb-cast long-range",
+                           "segment-obb-cast grazing", "ray-obb-cast grazing"}) {
     INFO(name);
     const Count& c = count[name];
     REQUIRE(c.hits > 30);
@@ -346,14 +359,6 @@ TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][
   CHECK(same_enter(oracle::enter(Segment<double>{V(0, 0, 0), V(5, 5, 5)}, box), 0.0));
   CHECK(same_enter(oracle::enter(Ray<double>{V(-2, 1 + 0x1p-52, 0), V(1, 0, 0)}, box), -1));
   // bad input: the book's message
-  auto msg = [](auto&& f) -> std::string {
-    try {
-      f();
-    } catch (const invalid_input& e) {
-      return e.what();
-    }
-    return "no exception";
-  };
   const double nan = std::nan("");
   const Ray<double> zero{V(0, 0, 0), V(0, 0, 0)};
   const Segment<double> badseg{V(0, 0, 0), V(0, 0, nan)};

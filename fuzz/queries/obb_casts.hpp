@@ -5,6 +5,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cdref/stable/obb.hpp>
@@ -68,6 +69,9 @@ struct ObbCast {
   // the cast hits exactly when the segment (ray) meets the solid: Theorem 3.1 decides it
   static bool oracle(const Shot<double>& a, const OrientedBox<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const OrientedBox<double>& b, bool* exact_used) {
+    return cdref::oracle::enter(a, b, exact_used);
   }
   static int stage(cdref::oracle::Stage s, const Shot<double>& a, const OrientedBox<double>& b) {
     return cdref::oracle::sat::at_stage(s, a, b);

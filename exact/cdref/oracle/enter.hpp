@@ -1,11 +1,12 @@
 // cdref/oracle/enter.hpp - the entry parameter of a cast, correctly rounded to double:
 // oracle::enter(shot, solid) is round-to-nearest of the lambda_enter that the book's cast
 // returns at an exact type (0 on a miss, and 0 when the source lies in the solid), for the
-// casts on a sphere (Algorithm 3.1), on an axis-aligned box (Algorithm 3.3) and on a triangle
-// (Section 3.4, Moller-Trumbore). It is the one output a ray tracer takes from a cast, and
-// `cdref report` prices it beside the oracle's classification and its every-output path (the
-// other casts' row takes the truth's formulation asked for lambda_enter alone: fuzz/cdref/
-// fuzz/spec.hpp, oracle_enter_of).
+// casts on a sphere (Algorithm 3.1), on an axis-aligned box (Algorithm 3.3), on an oriented
+// box (the solid's cast, solid/obb.hpp: the truth where the axes are not exactly orthonormal)
+// and on a triangle (Section 3.4, Moller-Trumbore). It is the one output a ray tracer takes
+// from a cast, and `cdref report` prices it beside the oracle's classification and its
+// every-output path (the fan and polygon casts' row takes the truth's formulation asked for
+// lambda_enter alone: fuzz/cdref/fuzz/spec.hpp, oracle_enter_of).
 //
 // Each call: the input checks; the classification (oracle::classify: filter, double words,
 // expansions, rationals; the triangle's own stages, oracle/ray_triangle.hpp); on a hit a double path whose error is bounded rigorously, accepted
@@ -97,21 +98,37 @@
 // is lambda* = -(sv . n) / (d . n) with sv = s - v0, n = e1 x e2 (scalar triple products
 // permuted), and the plane's signed offset g(l) = (sv + l d) . n is linear in l: for any l0,
 //     lambda* = l0 - g(l0) / (d . n)   exactly.
-// So l0 = -fl(sv . n) / fl(d . n) from the high parts needs no bound; the correction is where
-// the accuracy is. e1, e2, sv and d are exact two_sum pairs; n_i = e1_j e2_k - e1_k e2_j as a
-// double word (the two products of high parts exact, the four cross terms and the lows summed
-// in double; the lows' products dropped), off by en_i = 8u (the lows' and cross terms'
-// magnitudes) + 2u^2 (|e1_j e2_k| + |e1_k e2_j|) + 16 eta; w = sv + l0 d as double words with
-// ew_i as the sphere's; g = w . n with the products of the high parts exact and the rest in
-// double: off by 12u (the lows' magnitudes) + 1.01 (sum |w_i| en_i + |n_i| ew_i + the dropped
-// w.lo n.lo) + u |g^| + 64 eta. D = d . n from the high parts: off by eD = 4u sum |d_i n_i| +
-// sum |d_i| (|n_i.lo| + en_i) + |d_i.lo| |n_i| (+ its rounding), required certainly nonzero
-// (D_lo = |D^| - eD > 0; else a shot parallel to the plane or in it: the exact path). Then
-// delta = -g^ / D^ is off from -g / D by (eg + |g^| eD / |D^|) / D_lo + u |delta|; l0 + delta
-// as a double word (two_sum), the bound doubled, Bounded2::try_rounded. The exact value's
+// So l0 = -(sv . n) / (d . n) rounded needs no bound; the correction is where the accuracy is
+// (plane_parameter, shared with the oriented box). e1, e2, sv and d are exact two_sum pairs;
+// n_i = e1_j e2_k - e1_k e2_j as a double word (cross_term: the two products of high parts
+// exact, the four cross terms and the lows summed in double, the lows' products dropped), off
+// by en_i = 8u (the lows' and cross terms' magnitudes) + 2u^2 (|e1_j e2_k| + |e1_k e2_j|) +
+// 16 eta; w = sv + l0 d as double words with ew_i as the sphere's (affine_words); each dot
+// product with n (dot_words: the products of the high parts exact and summed by two_sum, the
+// lows in double) is off by 12u (the lows' magnitudes) + 1.01 (sum |x_i| en_i + |n_i| ex_i +
+// the dropped x.lo n.lo) + 64 eta. D = d . n must be certainly nonzero (|D| - eD > 0; else a
+// shot parallel to the plane or in it: the exact path); g = w . n is rounded once more (2u of
+// the two terms summed). Then delta = -g^ / D^ is off from -g / D by (eg + |g^| eD / |D^|) /
+// D_lo + u |delta|; l0 + delta as a double word (two_sum), the bound doubled,
+// Bounded2::try_rounded. The exact value's
 // relative error is then of order u^2 |w| |n| / |d . n| / lambda*: away from grazing shots the
 // rounding is decided on all but a few in 10^13 cases. Range: robust::in_certified_range, every
 // difference at most 2^250, l0 at most 2^250 (no product overflows; underflow in the eta terms).
+//
+// ---- An oriented box: the solid's faces, each a plane as the triangle's ---------------------
+// The truth is the solid's cast (solid/obb.hpp): with the face normals n_i = a_{i+1} x a_{i+2},
+// turned by sign(delta), delta = a_0 . n_0, the box is [-H, H] in U_i = n_i . (p - c), H_i =
+// |delta| h_i, and Algorithm 3.3 runs there: lambda_enter is the largest lambda over the faces
+// the source lies outside of (U_i(s) < -H_i or > H_i), the parameter where U_i(s + lambda d) =
+// -+H_i. Each n_i is a cross product of exact doubles (cross_term, its cross terms 0), delta a
+// dot_words of a_0 and n_0 whose sign must be certain, H_i = delta h_i a double word (the
+// product of the high parts exact, delta.lo h_i rounded: 2u of the two, plus delta's bound times
+// h_i). The outcode bits are the certain signs of U_i(s) + H_i and U_i(s) - H_i (a two_sum of
+// the high parts, the rest in double: 2u of it, plus both bounds; an exact zero is on the face,
+// not outside it); undecided: the exact path. A face's plane is g(l) = n_i . (s - c + l d) -+ H_i,
+// linear in l: plane_parameter with the offset -+H_i. Rounding is monotone, so the largest of
+// the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
+// at most 2^200 (H_i is of degree 4).
 //
 // Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
 #pragma once
@@ -120,6 +137,7 @@
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
+#include <cdref/oracle/separating_axes.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cmath>
@@ -263,16 +281,29 @@ inline Ray<Bounded2> b2(const Ray<double>& r) { return {b2(r.source), b2(r.direc
 inline Sphere<Bounded2> b2(const Sphere<double>& s) { return {b2(s.center), Bounded2(s.radius)}; }
 inline Box<Bounded2> b2(const Box<double>& b) { return {b2(b.center), b2(b.extent)}; }
 inline Triangle<Bounded2> b2(const Triangle<double>& t) { return {{b2(t.vertex[0]), b2(t.vertex[1]), b2(t.vertex[2])}}; }
+inline OrientedBox<Bounded2> b2(const OrientedBox<double>& b) {
+  return {b2(b.center), b2(b.extent), {b2(b.axis[0]), b2(b.axis[1]), b2(b.axis[2])}};
+}
 
-// The exact path: the book at Bounded2 (certain, or it throws), then at CGAL::Gmpq.
+// The exact path: the truth's formulation (the book's cast; for an oriented box the solid's,
+// solid/obb.hpp: the book's frame transform assumes orthonormal axes) at Bounded2 (certain,
+// or it throws), then at CGAL::Gmpq.
+template <class Shot, class Solid>
+auto truth_cast(const Shot& x, const Solid& y) {
+  return book::cast(x, y, want_lambda_enter);
+}
+template <class Shot, class T>
+auto truth_cast(const Shot& x, const OrientedBox<T>& y) {
+  return solid::cast(x, y, want_lambda_enter);
+}
 template <class Shot, class Solid>
 double exact_enter(const Shot& x, const Solid& y) {
   try {
-    const auto c = book::cast(b2(x), b2(y), want_lambda_enter);
+    const auto c = truth_cast(b2(x), b2(y));
     return c.hit ? c.lambda_enter.rounded() : 0.0;
   } catch (const uncertain&) {
   }
-  const auto c = book::cast(rational_inputs::toq(x), rational_inputs::toq(y), want_lambda_enter);
+  const auto c = truth_cast(rational_inputs::toq(x), rational_inputs::toq(y));
   return c.hit ? round_to<double>(c.lambda_enter) : 0.0;
 }
 
@@ -305,24 +336,32 @@ std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int
   return rounded(stage == 1 ? sphere_step(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
 }
 
-template <class Shot>
-Entry sphere_enter(const Shot& x, const Sphere<double>& sp, bool* exact_used) {
+// The classification's answer, then on a hit the double path (a value, or nothing when it
+// cannot tell), then the exact path.
+template <class Shot, class Solid, class Path>
+Entry entry_of(bool hit, const Shot& x, const Solid& y, bool* exact_used, Path double_path) {
   Entry out;
   if (exact_used) *exact_used = false;
-  if (!staged::run(nullptr, x, sp)) return out;
+  if (!hit) return out;
   out.hit = true;
-  Pair<double> s[3], r[3];
-  pairs_of(x, sp, s, r);
-  Bounded2 z;
-  if (const auto v = rounded(sphere_step(s, r, sp.radius, z), z)) {
+  if (const std::optional<double> v = double_path()) {
     out.lambda_enter = *v;
-  } else if (const auto w = rounded(sphere_words(x, sp, s, r, z), z)) {
-    out.lambda_enter = *w;
-  } else {
-    if (exact_used) *exact_used = true;
-    out.lambda_enter = exact_enter(x, sp);
+    return out;
   }
+  if (exact_used) *exact_used = true;
+  out.lambda_enter = exact_enter(x, y);
   return out;
+}
+
+template <class Shot>
+Entry sphere_enter(const Shot& x, const Sphere<double>& sp, bool* exact_used) {
+  return entry_of(staged::run(nullptr, x, sp), x, sp, exact_used, [&] {
+    Pair<double> s[3], r[3];
+    pairs_of(x, sp, s, r);
+    Bounded2 z;
+    if (const auto v = rounded(sphere_step(s, r, sp.radius, z), z)) return v;
+    return rounded(sphere_words(x, sp, s, r, z), z);
+  });
 }
 
 // The box's double path on a hit (header, "A box"): the value, or nothing when a sign or a
@@ -378,119 +417,203 @@ std::optional<double> box_double(const Shot& x, const Box<double>& box) {
 
 template <class Shot>
 Entry box_enter(const Shot& x, const Box<double>& box, bool* exact_used) {
-  Entry out;
-  if (exact_used) *exact_used = false;
-  if (!staged::run(nullptr, x, box)) return out;
-  out.hit = true;
-  if (const auto v = box_double(x, box)) {
-    out.lambda_enter = *v;
-  } else {
-    if (exact_used) *exact_used = true;
-    out.lambda_enter = exact_enter(x, box);
-  }
-  return out;
+  return entry_of(staged::run(nullptr, x, box), x, box, exact_used, [&] { return box_double(x, box); });
 }
 
-// The triangle's double path on a hit (header, "A triangle"): the value, or nothing.
-template <class Shot>
-std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri) {
+// ---- double words with a bound, for the triangle and the oriented box (header) ----
+constexpr double uu = 0x1p-53, eta = 0x1p-1074;
+
+// A double word v (v.hi = fl(v.hi + v.lo)) whose exact value lies within e of v.hi + v.lo.
+struct Word {
+  Pair<double> v;
+  double e;
+};
+
+// a_j b_k - a_k b_j for exact pairs: the products of the high parts exact, the four cross
+// terms and the lows in double (7 terms, 6 additions, 4 rounded products: 8u of their
+// magnitudes), the lows' products dropped (<= 2u^2 (|a_j b_k| + |a_k b_j|)).
+inline Word cross_term(const Pair<double>& aj, const Pair<double>& bk, const Pair<double>& ak, const Pair<double>& bj) {
   using std::fabs;
-  constexpr double u = 0x1p-53, E = 0x1p-1074;
-  if (!robust::in_certified_range(x, tri)) return std::nullopt;
-  const Vec3<double>& v0 = tri.vertex[0];
-  Pair<double> e1[3], e2[3], sv[3], d[3];
-  double m = 0;
-  for (int i = 0; i < 3; ++i) {
-    e1[i] = robust::two_sum(tri.vertex[1][i], -v0[i]);
-    e2[i] = robust::two_sum(tri.vertex[2][i], -v0[i]);
-    sv[i] = robust::two_sum(x.source[i], -v0[i]);
-    if constexpr (std::is_same_v<Shot, Segment<double>>)
-      d[i] = robust::two_sum(x.target[i], -x.source[i]);
-    else
-      d[i] = {x.direction[i], 0.0};
-    m = std::max({m, fabs(e1[i].hi), fabs(e2[i].hi), fabs(sv[i].hi), fabs(d[i].hi)});
-  }
-  if (!(m <= 0x1p250)) return std::nullopt;
-  // n = e1 x e2 as double words, each with its bound en_i
-  Pair<double> n[3];
-  double en[3];
+  const Pair<double> P1 = robust::two_prod_split(aj.hi, bk.hi), P2 = robust::two_prod_split(ak.hi, bj.hi);
+  const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
+  const double a1 = aj.hi * bk.lo, b1 = aj.lo * bk.hi, a2 = ak.hi * bj.lo, b2 = ak.lo * bj.hi;
+  const double lo = ((S.lo + P1.lo) - P2.lo) + ((a1 + b1) - (a2 + b2));
+  const double M = fabs(P1.hi) + fabs(P2.hi);
+  return {robust::two_sum(S.hi, lo),
+          8 * uu * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
+              2 * uu * uu * M * (1 + 4 * uu) + 16 * eta};
+}
+inline void cross_words(const Pair<double> (&a)[3], const Pair<double> (&b)[3], Word (&n)[3]) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const Pair<double> P1 = robust::two_prod_split(e1[j].hi, e2[k].hi), P2 = robust::two_prod_split(e1[k].hi, e2[j].hi);
-    const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
-    const double a1 = e1[j].hi * e2[k].lo, b1 = e1[j].lo * e2[k].hi, a2 = e1[k].hi * e2[j].lo, b2 = e1[k].lo * e2[j].hi;
-    const double lo = ((S.lo + P1.lo) - P2.lo) + ((a1 + b1) - (a2 + b2));
-    n[i] = robust::two_sum(S.hi, lo);
-    // the lows: 7 terms, 6 additions, 4 rounded products (each term's magnitude counted); the
-    // lows' product e1.lo e2.lo dropped (<= u^2 |e1.hi e2.hi|)
-    const double M = fabs(P1.hi) + fabs(P2.hi);
-    en[i] = 8 * u * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
-            2 * u * u * M * (1 + 4 * u) + 16 * E;
+    n[i] = cross_term(a[j], b[k], a[k], b[j]);
   }
-  // lambda0 and D = d.n in double; |D^ - d.n| <= eD
-  double N0 = 0, D = 0, Dabs = 0, Dlows = 0;
-  for (int i = 0; i < 3; ++i) {
-    N0 += sv[i].hi * n[i].hi;
-    D += d[i].hi * n[i].hi;
-    Dabs += fabs(d[i].hi) * fabs(n[i].hi);
-    Dlows += fabs(d[i].hi) * (fabs(n[i].lo) + en[i]) + fabs(d[i].lo) * (fabs(n[i].hi) + fabs(n[i].lo) + en[i]);
-  }
-  const double eD = (4 * u * Dabs + Dlows) * (1 + 8 * u) + 16 * E;
-  const double D_lo = (fabs(D) - eD) * (1 - 4 * u);
-  if (!(D_lo > 0)) return std::nullopt;  // nearly parallel, or in the plane: the exact path
-  const double l0 = -N0 / D;
-  if (!std::isfinite(l0) || fabs(l0) > 0x1p250) return std::nullopt;
-  // g = w.n, w = sv + l0 d as double words (as the sphere's residual)
-  Pair<double> w[3];
-  double ew[3];
-  for (int i = 0; i < 3; ++i) {
-    const Pair<double> P = robust::two_prod_split(l0, d[i].hi);
-    const Pair<double> T = robust::two_sum(sv[i].hi, P.hi);
-    const double zl = l0 * d[i].lo;
-    const double lo = ((T.lo + sv[i].lo) + P.lo) + zl;
-    w[i] = robust::two_sum(T.hi, lo);
-    ew[i] = 4 * u * (((fabs(T.lo) + fabs(sv[i].lo)) + fabs(P.lo)) + fabs(zl)) + 8 * E;
-  }
-  const Pair<double> Q0 = robust::two_prod_split(w[0].hi, n[0].hi), Q1 = robust::two_prod_split(w[1].hi, n[1].hi),
-                     Q2 = robust::two_prod_split(w[2].hi, n[2].hi);
+}
+
+// x . y for double words x_i (within ex_i of the exact) and y_i: the products of the high
+// parts exact, summed by two_sum; the lows (11 terms: 10 additions, 6 rounded products) in
+// double; the lows' products x.lo y.lo dropped; x^, y^ against the exact x, y propagated.
+inline Word dot_words(const Pair<double> (&x)[3], const double (&ex)[3], const Word (&y)[3]) {
+  using std::fabs;
+  const Pair<double> Q0 = robust::two_prod_split(x[0].hi, y[0].v.hi), Q1 = robust::two_prod_split(x[1].hi, y[1].v.hi),
+                     Q2 = robust::two_prod_split(x[2].hi, y[2].v.hi);
   const Pair<double> H1 = robust::two_sum(Q0.hi, Q1.hi), H2 = robust::two_sum(H1.hi, Q2.hi);
-  double lows = (Q0.lo + Q1.lo) + (Q2.lo + (H1.lo + H2.lo)), lows_abs = fabs(Q0.lo) + fabs(Q1.lo) + fabs(Q2.lo) +
-                                                                         fabs(H1.lo) + fabs(H2.lo);
+  double lows = (Q0.lo + Q1.lo) + (Q2.lo + (H1.lo + H2.lo));
+  double lows_abs = fabs(Q0.lo) + fabs(Q1.lo) + fabs(Q2.lo) + fabs(H1.lo) + fabs(H2.lo);
   double prop = 0, dropped = 0;
   for (int i = 0; i < 3; ++i) {
-    const double a = w[i].hi * n[i].lo, b = w[i].lo * n[i].hi;
+    const double a = x[i].hi * y[i].v.lo, b = x[i].lo * y[i].v.hi;
     lows += a + b;
     lows_abs += fabs(a) + fabs(b);
-    dropped += fabs(w[i].lo) * fabs(n[i].lo);
-    prop += (fabs(w[i].hi) + fabs(w[i].lo)) * en[i] + (fabs(n[i].hi) + fabs(n[i].lo) + en[i]) * ew[i];
+    dropped += fabs(x[i].lo) * fabs(y[i].v.lo);
+    prop += (fabs(x[i].hi) + fabs(x[i].lo)) * y[i].e + (fabs(y[i].v.hi) + fabs(y[i].v.lo) + y[i].e) * ex[i];
   }
-  const double g = H2.hi + lows;
-  // the lows' sum: 11 terms, 10 additions, 6 rounded products; the lows' products w.lo n.lo
-  // dropped; w^ and n^ against the exact w and n (prop); g's final rounding
-  const double eg = (12 * u * lows_abs + 1.01 * (dropped + prop) + u * fabs(g)) * (1 + 8 * u) + 64 * E;
-  // lambda* = l0 - g / (d.n) exactly; delta = -g / D
-  const double inv = 1 / D_lo;
-  const double delta = -g / D;
-  const double err = 2 * ((eg + fabs(g) * eD / fabs(D)) * inv + u * fabs(delta)) + E;
+  return {robust::two_sum(H2.hi, lows), (12 * uu * lows_abs + 1.01 * (dropped + prop)) * (1 + 8 * uu) + 64 * eta};
+}
+
+// w = x + l d for exact pairs x, d and a double l, as double words with their bounds.
+inline void affine_words(const Pair<double> (&x)[3], double l, const Pair<double> (&d)[3], Pair<double> (&w)[3],
+                         double (&ew)[3]) {
+  using std::fabs;
+  for (int i = 0; i < 3; ++i) {
+    const Pair<double> P = robust::two_prod_split(l, d[i].hi);
+    const Pair<double> T = robust::two_sum(x[i].hi, P.hi);
+    const double zl = l * d[i].lo;
+    w[i] = robust::two_sum(T.hi, ((T.lo + x[i].lo) + P.lo) + zl);
+    ew[i] = 4 * uu * (((fabs(T.lo) + fabs(x[i].lo)) + fabs(P.lo)) + fabs(zl)) + 8 * eta;
+  }
+}
+
+// A lower bound of |x| for the word x (0 when its sign is not certain), and its sign.
+inline double magnitude_lo(const Word& x) {
+  return std::max(0.0, ((std::fabs(x.v.hi) - std::fabs(x.v.lo)) * (1 - 2 * uu) - x.e) * (1 - 2 * uu));
+}
+
+// The plane's parameter lambda* = l0 - g(l0) / D, g(l) = n . (x + l d) + off linear in l
+// (off: a word, 0 for the triangle), D = n . d, l0 = -(n . x + off) / D in double: the double
+// word l0 + delta with its bound, rounded (nothing when the rounding is not certain).
+inline std::optional<double> plane_parameter(const Pair<double> (&x)[3], const Pair<double> (&d)[3], const Word (&n)[3],
+                                             const Word& off) {
+  using std::fabs;
+  const double zero[3] = {0, 0, 0};
+  const Word D = dot_words(d, zero, n);
+  const double D_lo = magnitude_lo(D);
+  if (!(D_lo > 0)) return std::nullopt;  // nearly parallel, or in the plane: the exact path
+  const Word N = dot_words(x, zero, n);
+  const double Dv = D.v.hi + D.v.lo;
+  const double l0 = -((N.v.hi + off.v.hi) + (N.v.lo + off.v.lo)) / Dv;
+  if (!std::isfinite(l0) || fabs(l0) > 0x1p250) return std::nullopt;
+  Pair<double> w[3];
+  double ew[3];
+  affine_words(x, l0, d, w, ew);
+  const Word G = dot_words(w, ew, n);
+  // g = G + off: one two_sum of the highs, the rest in double
+  const Pair<double> S = robust::two_sum(G.v.hi, off.v.hi);
+  const double rest = S.lo + (G.v.lo + off.v.lo);
+  const double g = S.hi + rest;
+  const double eg = (G.e + off.e + 2 * uu * (fabs(rest) + fabs(g))) * (1 + 4 * uu);
+  // delta = -g / D, off from -g_exact / D_exact by (eg + |g| eD / |D|) / D_lo + u |delta|
+  const double delta = -g / Dv;
+  const double err = 2 * ((eg + fabs(g) * D.e / fabs(Dv)) / D_lo + uu * fabs(delta)) + eta;
   const Pair<double> z = robust::two_sum(l0, delta);
   double v;
   if (!std::isfinite(err) || !Bounded2::within(z.hi, z.lo, err).try_rounded(v)) return std::nullopt;
   return v;
 }
 
+// s - o and the shot's direction (target - source, or the direction) as exact pairs.
+template <class Shot>
+void shot_pairs(const Shot& x, const Vec3<double>& o, Pair<double> (&so)[3], Pair<double> (&d)[3]) {
+  for (int i = 0; i < 3; ++i) {
+    so[i] = robust::two_sum(x.source[i], -o[i]);
+    if constexpr (std::is_same_v<Shot, Segment<double>>)
+      d[i] = robust::two_sum(x.target[i], -x.source[i]);
+    else
+      d[i] = {x.direction[i], 0.0};
+  }
+}
+inline double largest(const Pair<double> (&a)[3]) {
+  return std::max({std::fabs(a[0].hi), std::fabs(a[1].hi), std::fabs(a[2].hi)});
+}
+
+// The triangle's double path on a hit (header, "A triangle"): the value, or nothing.
+template <class Shot>
+std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri) {
+  if (!robust::in_certified_range(x, tri)) return std::nullopt;
+  const Vec3<double>& v0 = tri.vertex[0];
+  Pair<double> e1[3], e2[3], sv[3], d[3];
+  shot_pairs(x, v0, sv, d);
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = robust::two_sum(tri.vertex[1][i], -v0[i]);
+    e2[i] = robust::two_sum(tri.vertex[2][i], -v0[i]);
+  }
+  if (!(std::max({largest(e1), largest(e2), largest(sv), largest(d)}) <= 0x1p250)) return std::nullopt;
+  Word n[3];
+  cross_words(e1, e2, n);
+  return plane_parameter(sv, d, n, Word{{0, 0}, 0});
+}
+
+// The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
+template <class Shot>
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
+  using std::fabs;
+  if (!robust::in_certified_range(x, b)) return std::nullopt;
+  Pair<double> sc[3], d[3], a[3][3];
+  shot_pairs(x, b.center, sc, d);
+  double m = std::max(largest(sc), largest(d));
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) a[k][i] = {b.axis[k][i], 0.0};
+    m = std::max({m, largest(a[k]), fabs(b.extent[k])});
+  }
+  if (!(m <= 0x1p200)) return std::nullopt;
+  // the face normals n_i = a_{i+1} x a_{i+2}, delta = a_0 . n_0, turned so that delta > 0
+  Word n[3][3];
+  for (int i = 0; i < 3; ++i) cross_words(a[(i + 1) % 3], a[(i + 2) % 3], n[i]);
+  const double zero[3] = {0, 0, 0};
+  Word delta = dot_words(a[0], zero, n[0]);
+  if (!(magnitude_lo(delta) > 0)) return std::nullopt;
+  if (delta.v.hi < 0) {
+    delta.v = {-delta.v.hi, -delta.v.lo};
+    for (auto& ni : n)
+      for (auto& c : ni) c.v = {-c.v.hi, -c.v.lo};
+  }
+  double best = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    // H_i = delta h_i as a word: the product of the high parts exact, delta.lo h_i rounded
+    const Pair<double> P = robust::two_prod_split(delta.v.hi, b.extent[i]);
+    const double hl = delta.v.lo * b.extent[i];
+    const Word H{robust::two_sum(P.hi, P.lo + hl),
+                 (delta.e * b.extent[i] + 2 * uu * (fabs(P.lo) + fabs(hl))) * (1 + 4 * uu) + 4 * eta};
+    const Word U = dot_words(sc, zero, n[i]);  // the source's coordinate
+    // U + H < 0: outside the lower face; U - H > 0: outside the upper one (certain signs)
+    auto side = [&](double sg) -> int {
+      const Pair<double> S = robust::two_sum(U.v.hi, sg * H.v.hi);
+      const double rest = S.lo + (U.v.lo + sg * H.v.lo);
+      const double v = S.hi + rest;
+      const double e = (U.e + H.e + 2 * uu * (fabs(rest) + fabs(v))) * (1 + 4 * uu);
+      if (v == 0 && e == 0) return 0;
+      if (fabs(v) * (1 - 2 * uu) > e) return v > 0 ? 1 : -1;
+      return 2;
+    };
+    const int lower = side(1), upper = side(-1);
+    if (lower == 2 || upper == 2) return std::nullopt;
+    if (lower >= 0 && upper <= 0) continue;  // between the two faces: no entry through them
+    const Word off = lower < 0 ? H : Word{{-H.v.hi, -H.v.lo}, H.e};
+    const auto v = plane_parameter(sc, d, n[i], off);
+    if (!v) return std::nullopt;
+    best = std::max(best, *v);
+  }
+  return best;
+}
+
 template <class Shot>
 Entry triangle_enter(const Shot& x, const Triangle<double>& tri, bool* exact_used) {
-  Entry out;
-  if (exact_used) *exact_used = false;
-  if (!classify_triangle_cast(x, tri, nullptr)) return out;
-  out.hit = true;
-  if (const auto v = triangle_double(x, tri)) {
-    out.lambda_enter = *v;
-  } else {
-    if (exact_used) *exact_used = true;
-    out.lambda_enter = exact_enter(x, tri);
-  }
-  return out;
+  return entry_of(classify_triangle_cast(x, tri, nullptr), x, tri, exact_used, [&] { return triangle_double(x, tri); });
+}
+
+template <class Shot>
+Entry obb_enter(const Shot& x, const OrientedBox<double>& b, bool* exact_used) {
+  return entry_of(sat::run(nullptr, x, b), x, b, exact_used, [&] { return obb_double(x, b); });
 }
 
 }  // namespace enter_detail
@@ -526,6 +649,16 @@ inline Entry enter(const Ray<double>& ray, const Triangle<double>& tri, bool* ex
   check(ray, "ray");
   check(tri, "triangle");
   return enter_detail::triangle_enter(ray, tri, exact_used);
+}
+inline Entry enter(const Segment<double>& seg, const OrientedBox<double>& b, bool* exact_used = nullptr) {
+  check(seg, "segment");
+  check(b, "oriented box");
+  return enter_detail::obb_enter(seg, b, exact_used);
+}
+inline Entry enter(const Ray<double>& ray, const OrientedBox<double>& b, bool* exact_used = nullptr) {
+  check(ray, "ray");
+  check(b, "oriented box");
+  return enter_detail::obb_enter(ray, b, exact_used);
 }
 
 }  // namespace cdref::oracle

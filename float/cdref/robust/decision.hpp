@@ -56,6 +56,7 @@ template <class F> F scalar_of(const Box<F>&);
 template <class F> F scalar_of(const Segment<F>&);
 template <class F> F scalar_of(const Ray<F>&);
 template <class F> F scalar_of(const Triangle<F>&);
+template <class F> F scalar_of(const OrientedBox<F>&);
 }  // namespace detail
 
 namespace detail {
@@ -75,6 +76,11 @@ template <class F> void span_of(const Box<F>& b, F& hi, F& lo) { span_of(b.cente
 template <class F> void span_of(const Segment<F>& s, F& hi, F& lo) { span_of(s.source, hi, lo); span_of(s.target, hi, lo); }
 template <class F> void span_of(const Ray<F>& r, F& hi, F& lo) { span_of(r.source, hi, lo); span_of(r.direction, hi, lo); }
 template <class F> void span_of(const Triangle<F>& t, F& hi, F& lo) { for (const auto& v : t.vertex) span_of(v, hi, lo); }
+template <class F> void span_of(const OrientedBox<F>& b, F& hi, F& lo) {
+  span_of(b.center, hi, lo);
+  span_of(b.extent, hi, lo);
+  for (const auto& a : b.axis) span_of(a, hi, lo);
+}
 }  // namespace detail
 
 // d, made uncertain when an input lies near the ends of the exponent range, or when the
