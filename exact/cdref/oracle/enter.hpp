@@ -9,15 +9,16 @@
 // lambda_enter alone: fuzz/cdref/fuzz/spec.hpp, oracle_enter_of).
 //
 // Each call: the input checks; the classification (oracle::classify: filter, double words,
-// expansions, rationals; the triangle's own stages, oracle/ray_triangle.hpp); on a hit a double path whose error is bounded rigorously, accepted
-// when the exact value cannot lie on the other side of a rounding midpoint
-// (Bounded2::try_rounded); otherwise the book at oracle::Bounded2, then at CGAL::Gmpq.
+// expansions, rationals; each query's own stages); on a hit a double path whose error is
+// bounded rigorously, accepted when the exact value cannot lie on the other side of a rounding
+// midpoint (Bounded2::try_rounded); otherwise the truth's formulation at oracle::Bounded2, then
+// at CGAL::Gmpq.
 //
 // ---- A sphere, first: one Newton step from the stable root, certified a posteriori ---------
 // s = source - centre and r (target - source, or the direction) as exact two_sum pairs, u =
 // 2^-53, eta = 2^-1074 (the smallest subnormal; the code adds multiples of 2^-1022 instead,
-// `under`: a larger bound, and a normal constant). P(z) = |s + z r|^2 - rho^2 = a z^2 + 2 b z + c (a = |r|^2, b = s.r,
-// c = |s|^2 - rho^2). On a hit lambda_enter = 0 when c <= 0 (source in or on the sphere);
+// `under`: a larger bound, and a normal constant). P(z) = |s + z r|^2 - rho^2 = a z^2 + 2 b z
+// + c (a = |r|^2, b = s.r, c = |s|^2 - rho^2). On a hit lambda_enter = 0 when c <= 0 (source in or on the sphere);
 // otherwise b < 0 (b >= 0 and c > 0 puts both roots behind the source) and lambda_enter = z*,
 // the smaller root, where P falls through 0.
 //  1. c's sign from c^ = fl(|sh|^2) - rho^2 with |c^ - c| <= 8u (|sh|^2 + rho^2) (the
