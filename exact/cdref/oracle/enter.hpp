@@ -158,278 +158,7 @@ using robust::Pair;
 // 10^12, 462 -> 423 ns a call).
 constexpr double under = 0x1p-1022;
 
-// The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
-// certainly), 1 with `out` set, or 2 when it cannot tell (the exact path then answers).
-inline int sphere_step(const Pair<double> (&s)[3], const Pair<double> (&r)[3], double rho, Bounded2& out) {
-  using std::fabs;
-  constexpr double u = 0x1p-53, eta = under, big = 0x1p300;
-  double S = 0, A = 0, B = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (!(fabs(s[i].hi) <= big && fabs(r[i].hi) <= big)) return 2;
-    S += s[i].hi * s[i].hi;
-    A += r[i].hi * r[i].hi;
-    B += s[i].hi * r[i].hi;
-  }
-  if (!(rho <= big && S >= 0x1p-600 && A >= 0x1p-600)) return 2;
-  // 1. the sign of c
-  const double rho2 = rho * rho;
-  const double c = S - rho2, ec = 8 * u * (S + rho2) + 8 * eta;
-  if (c < -ec) return 0;
-  if (!(c > ec)) return 2;
-  // 2. the stable root, without a division before the last: a D = a rho^2 - |s x r|^2
-  // (Lagrange's identity; |s x r| / |r| is the miss distance, its error u |s|)
-  const double x0 = s[1].hi * r[2].hi - s[2].hi * r[1].hi, x1 = s[2].hi * r[0].hi - s[0].hi * r[2].hi,
-               x2 = s[0].hi * r[1].hi - s[1].hi * r[0].hi;
-  const double aD = A * rho2 - ((x0 * x0 + x1 * x1) + x2 * x2);
-  const double z0 = c / (std::sqrt(std::max(aD, 0.0)) - B);
-  if (!(z0 >= 0x1p-600 && z0 <= 0x1p600)) return 2;
-  // 3. the residual at z0
-  Pair<double> w[3];
-  double ew[3], G = 0, W = 0, lows = 0;
-  for (int i = 0; i < 3; ++i) {
-    const Pair<double> p = robust::two_prod_split(z0, r[i].hi);
-    const Pair<double> t = robust::two_sum(s[i].hi, p.hi);
-    const double zl = z0 * r[i].lo;
-    const double lo = ((t.lo + s[i].lo) + p.lo) + zl;
-    w[i] = robust::two_sum(t.hi, lo);
-    ew[i] = 4 * u * (((fabs(t.lo) + fabs(s[i].lo)) + fabs(p.lo)) + fabs(zl)) + 8 * eta;
-    G += fabs(r[i].hi) * fabs(w[i].hi);
-    W += fabs(w[i].hi) * ew[i];
-    lows += fabs(r[i].hi) * (fabs(w[i].lo) + 2 * ew[i]);
-  }
-  const Pair<double> negP = robust::detail::rho2_minus_norm2(rho, w);
-  const double P0 = -(negP.hi + negP.lo);
-  const double W2 = w[0].hi * w[0].hi + w[1].hi * w[1].hi + w[2].hi * w[2].hi;
-  const double eP = 56 * u * u * (rho2 + W2) * (1 + 8 * u) + 2.01 * W + u * fabs(P0) + 64 * eta;
-  // 4. the step
-  const double g = -2 * (r[0].hi * w[0].hi + r[1].hi * w[1].hi + r[2].hi * w[2].hi);
-  const double eg = 2 * (5 * u * G * (1 + 4 * u) + lows) + 16 * eta;
-  const double g_lo = (g - eg) * (1 - 4 * u);
-  if (!(g_lo > 0)) return 2;
-  const double P_up = fabs(P0) + eP, inv = 1 / g_lo;  // (inv rounded: the factor 2 below covers it)
-  const double kappa = 4 * A * (1 + 8 * u) * P_up * inv * inv;
-  if (!(kappa <= 0.5)) return 2;
-  const double delta = P0 / g;
-  const double E = 2 * ((eP + fabs(P0) * eg * inv) * inv + u * fabs(delta) + 0.6 * kappa * P_up * inv) + eta;
-  const Pair<double> z = robust::two_sum(z0, delta);
-  out = Bounded2::within(z.hi, z.lo, E);
-  return std::isfinite(E) ? 1 : 2;
-}
-
-// The second double path (header, "the robust tier's double words"): z = c / q from
-// robust/ray_sphere.hpp's double words (the robust cast's own steps 0-4) and a bound on its
-// error from that header's items A-C, evaluated with computed upper bounds (and lower bounds
-// of the divisors) in place of the exact quantities. Same returns as sphere_step.
-template <class Shot>
-int sphere_words(const Shot& x, const Sphere<double>& sp, const Pair<double> (&s)[3], const Pair<double> (&r)[3],
-                 Bounded2& out) {
-  using std::fabs;
-  constexpr double u = 0x1p-53, E = under, tiny = 0x1p-1022;
-  if (!robust::in_certified_range(x, sp)) return 2;
-  const auto A = robust::detail::analyse(s, r, sp.radius, std::is_same_v<Shot, Segment<double>>);
-  const auto& L = A.L;
-  auto ok = [](double v) { return v == 0 || (std::isfinite(v) && fabs(v) >= tiny); };
-  if (A.zero || !ok(L.rho)) return 2;
-  for (int i = 0; i < 3; ++i)
-    if (!ok(L.s[i].hi) || !ok(L.s[i].lo) || !ok(L.r[i].hi) || !ok(L.r[i].lo)) return 2;
-  // item A's terms, as robust::detail::decide_cast computes them
-  const double S2 = (L.s[0].hi * L.s[0].hi + L.s[1].hi * L.s[1].hi + L.s[2].hi * L.s[2].hi) * (1 + 8 * u);
-  const double rho2 = L.rho * L.rho * (1 + 2 * u);
-  const double err_c = 55 * u * u * (S2 + rho2) + 32 * E;
-  if (A.c.hi < -2 * err_c) return 0;
-  const double c_lo = A.c.hi * (1 - 4 * u) - err_c;
-  if (!(c_lo > 0)) return 2;
-  const auto& Q = A.Q;
-  const double R2 = Q.a.hi * (1 + 8 * u) + 64 * E;
-  const double ns = std::sqrt(S2) * (1 + 2 * u), nr = std::sqrt(R2) * (1 + 2 * u);
-  const double err_a = 52 * u * u * R2 + 32 * E;
-  const double err_b = 51 * u * u * (ns * nr) + 32 * E;
-  const double a_lo = Q.a.hi * (1 - 4 * u) - err_a;
-  if (!(a_lo > 0) || !(Q.b.hi < -2 * err_b)) return 2;  // on a hit with c > 0, b < 0
-  const double L2 = (Q.lh[0] * Q.lh[0] + Q.lh[1] * Q.lh[1] + Q.lh[2] * Q.lh[2]) * (1 + 8 * u);
-  const double nl = std::sqrt(L2) * (1 + 2 * u);
-  const double e = 33 * u * u * ns;
-  const double delta = err_b / a_lo + fabs(Q.f.hi) * (1 + 4 * u) * (err_a / a_lo + 8 * u * u);
-  const double err_D = 56 * u * u * (rho2 + L2) + 2 * (nl + e) * e + e * e + delta * delta * R2 + 64 * E;
-  // step 4 of that header: q = |b| + X, X = sqrt(a D), z = c / q
-  const Pair<double> X = robust::sqrt_pair(robust::mul_pair(Q.a, Q.D));
-  const Pair<double> qs = robust::two_sum(-Q.b.hi, X.hi);
-  const Pair<double> q = robust::fast_two_sum(qs.hi, qs.lo + (X.lo - Q.b.lo));
-  const Pair<double> z = robust::div_pair(A.c, q);
-  // item B: |X^ - X| (X exact on the right-hand sides: solved for it, 1 / (1 - k) <= 1 + 2k)
-  const double rel_a = err_a / a_lo;
-  const double sq = std::sqrt(R2 * err_D) * (1 + 4 * u);
-  const double k = 0.51 * rel_a + 6.2 * u * u;
-  const double Xh = fabs(X.hi) * (1 + 2 * u);
-  double eX = (1.01 * sq + (Xh + sq) * k) * (1 + 2 * k);
-  const double D_lo = Q.D.hi * (1 - 4 * u) - err_D;
-  if (D_lo > 0) {
-    const double theta = 1.01 * (rel_a + err_D / D_lo) + 4 * u * u;
-    if (theta <= 0.4) {
-      const double m = 0.57 * theta + 4.1 * u * u;
-      eX = std::min(eX, Xh * m * (1 + 2 * m));
-    }
-  }
-  // item C
-  const double q_lo = q.hi * (1 - 4 * u) - (err_b + eX);
-  if (!(q_lo > 0)) return 2;
-  const double rel_q = (err_b + eX) / q_lo + 3.1 * u * u, rel_c = err_c / c_lo;
-  if (!(rel_q <= 0.1 && rel_c <= 0.1)) return 2;
-  const double rel_z = (rel_c + rel_q) / (1 - rel_q) + 10 * u * u;
-  const Pair<double> zn = robust::fast_two_sum(z.hi, z.lo);
-  const double bound = 2 * 1.35 * rel_z * fabs(zn.hi) + E;  // |z| <= 1.35 |zn.hi|; x 2: the bound's own rounding
-  if (!std::isfinite(bound) || !(fabs(zn.hi) >= 0x1p-960)) return 2;
-  out = Bounded2::within(zn.hi, zn.lo, bound);
-  return 1;
-}
-
-// The inputs as Bounded2 values (exact).
-inline Vec3<Bounded2> b2(const Vec3<double>& v) { return Vec3<Bounded2>(Bounded2(v[0]), Bounded2(v[1]), Bounded2(v[2])); }
-inline Segment<Bounded2> b2(const Segment<double>& s) { return {b2(s.source), b2(s.target)}; }
-inline Ray<Bounded2> b2(const Ray<double>& r) { return {b2(r.source), b2(r.direction)}; }
-inline Sphere<Bounded2> b2(const Sphere<double>& s) { return {b2(s.center), Bounded2(s.radius)}; }
-inline Box<Bounded2> b2(const Box<double>& b) { return {b2(b.center), b2(b.extent)}; }
-inline Triangle<Bounded2> b2(const Triangle<double>& t) { return {{b2(t.vertex[0]), b2(t.vertex[1]), b2(t.vertex[2])}}; }
-inline OrientedBox<Bounded2> b2(const OrientedBox<double>& b) {
-  return {b2(b.center), b2(b.extent), {b2(b.axis[0]), b2(b.axis[1]), b2(b.axis[2])}};
-}
-
-// The exact path: the truth's formulation (the book's cast; for an oriented box the solid's,
-// solid/obb.hpp: the book's frame transform assumes orthonormal axes) at Bounded2 (certain,
-// or it throws), then at CGAL::Gmpq.
-template <class Shot, class Solid>
-auto truth_cast(const Shot& x, const Solid& y) {
-  return book::cast(x, y, want_lambda_enter);
-}
-template <class Shot, class T>
-auto truth_cast(const Shot& x, const OrientedBox<T>& y) {
-  return solid::cast(x, y, want_lambda_enter);
-}
-template <class Shot, class Solid>
-double exact_enter(const Shot& x, const Solid& y) {
-  try {
-    const auto c = truth_cast(b2(x), b2(y));
-    return c.hit ? c.lambda_enter.rounded() : 0.0;
-  } catch (const uncertain&) {
-  }
-  const auto c = truth_cast(rational_inputs::toq(x), rational_inputs::toq(y));
-  return c.hit ? round_to<double>(c.lambda_enter) : 0.0;
-}
-
-// s = source - centre and r (target - source, or the direction) as exact pairs.
-template <class Shot>
-void pairs_of(const Shot& x, const Sphere<double>& sp, Pair<double> (&s)[3], Pair<double> (&r)[3]) {
-  for (int i = 0; i < 3; ++i) {
-    s[i] = robust::two_sum(x.source[i], -sp.center[i]);
-    if constexpr (std::is_same_v<Shot, Segment<double>>)
-      r[i] = robust::two_sum(x.target[i], -x.source[i]);
-    else
-      r[i] = {x.direction[i], 0.0};
-  }
-}
-
-// A double path's answer rounded: the value, or nothing when the path could not tell.
-inline std::optional<double> rounded(int st, const Bounded2& z) {
-  if (st == 0) return 0.0;
-  double v;
-  if (st == 1 && z.try_rounded(v)) return v;
-  return std::nullopt;
-}
-
-// The two double paths on a hit (stage 1: the Newton step, 2: the double words).
-template <class Shot>
-std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int stage) {
-  Pair<double> s[3], r[3];
-  pairs_of(x, sp, s, r);
-  Bounded2 z;
-  return rounded(stage == 1 ? sphere_step(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
-}
-
-// The classification's answer, then on a hit the double path (a value, or nothing when it
-// cannot tell), then the exact path.
-template <class Shot, class Solid, class Path>
-Entry entry_of(bool hit, const Shot& x, const Solid& y, bool* exact_used, Path double_path) {
-  Entry out;
-  if (exact_used) *exact_used = false;
-  if (!hit) return out;
-  out.hit = true;
-  if (const std::optional<double> v = double_path()) {
-    out.lambda_enter = *v;
-    return out;
-  }
-  if (exact_used) *exact_used = true;
-  out.lambda_enter = exact_enter(x, y);
-  return out;
-}
-
-template <class Shot>
-Entry sphere_enter(const Shot& x, const Sphere<double>& sp, bool* exact_used) {
-  return entry_of(staged::run(nullptr, x, sp), x, sp, exact_used, [&] {
-    Pair<double> s[3], r[3];
-    pairs_of(x, sp, s, r);
-    Bounded2 z;
-    if (const auto v = rounded(sphere_step(s, r, sp.radius, z), z)) return v;
-    return rounded(sphere_words(x, sp, s, r, z), z);
-  });
-}
-
-// The box's double path on a hit (header, "A box"): the value, or nothing when a sign or a
-// rounding is uncertain.
-template <class Shot>
-std::optional<double> box_double(const Shot& x, const Box<double>& box) {
-  using std::fabs;
-  constexpr double u = 0x1p-53, lo_lim = 0x1p-900, hi_lim = 0x1p900;
-  double best = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    // n = (c_i - source_i) -+ h_i = m + t exactly, t = me + pe rounded once (|t - t^| <= u |t^|)
-    const Pair<double> p = robust::two_sum(box.center[i], -x.source[i]);
-    const Pair<double> lower = robust::two_sum(p.hi, -box.extent[i]), upper = robust::two_sum(p.hi, box.extent[i]);
-    const double tl = lower.lo + p.lo, tu = upper.lo + p.lo;
-    // the source's outcode bits: the signs of n (certain when m dominates, or m = 0: then t
-    // is exact and its rounding keeps its sign)
-    auto sign = [](const Pair<double>& mm, double tt) -> int {
-      if (mm.hi == 0) return tt > 0 ? 1 : (tt < 0 ? -1 : 0);
-      if (fabs(mm.hi) > 2 * fabs(tt)) return mm.hi > 0 ? 1 : -1;
-      return 2;
-    };
-    const int sl = sign(lower, tl), su = sign(upper, tu);
-    if (sl == 2 || su == 2) return std::nullopt;
-    const bool below = sl > 0, above = su < 0;
-    if (!below && !above) continue;
-    const double m = below ? lower.hi : upper.hi, tn = below ? tl : tu;
-    // d = dh + dl exactly (a ray: dl = 0)
-    Pair<double> d;
-    if constexpr (std::is_same_v<Shot, Segment<double>>)
-      d = robust::two_sum(x.target[i], -x.source[i]);
-    else
-      d = {x.direction[i], 0.0};
-    if (!(fabs(m) >= lo_lim && fabs(m) <= hi_lim && fabs(d.hi) >= lo_lim && fabs(d.hi) <= hi_lim))
-      return std::nullopt;
-    // q1 = m / dh; the residual R = n - q1 d: m - P exact (P = fl(q1 dh) is within 2u of m),
-    // the small terms summed with three roundings
-    const double q1 = m / d.hi;
-    const Pair<double> P = robust::two_prod_split(q1, d.hi);
-    const double r0 = m - P.hi, qd = q1 * d.lo;
-    const double R = ((r0 - P.lo) + tn) - qd;
-    const double eR = 4 * u * (((fabs(r0) + fabs(P.lo)) + fabs(tn)) + fabs(qd)) * (1 + 8 * u);
-    // z = q1 + R_exact / d: q2 = R / dh off by eR / |d| + 2.1 u |q2| (dl, and q2's rounding)
-    const double q2 = R / d.hi;
-    const double E = 2 * (eR / (fabs(d.hi) * (1 - u)) + 2.1 * u * fabs(q2)) + under;
-    const Pair<double> z = robust::two_sum(q1, q2);
-    double v;
-    if (!(fabs(q1) >= lo_lim && fabs(q1) <= hi_lim) || !Bounded2::within(z.hi, z.lo, E).try_rounded(v))
-      return std::nullopt;
-    best = std::max(best, v);
-  }
-  return best;
-}
-
-template <class Shot>
-Entry box_enter(const Shot& x, const Box<double>& box, bool* exact_used) {
-  return entry_of(staged::run(nullptr, x, box), x, box, exact_used, [&] { return box_double(x, box); });
-}
-
-// ---- double words with a bound, for the triangle and the oriented box (header) ----
+// ---- double words with a bound, shared by the double paths (header) ----
 constexpr double uu = 0x1p-53, eta = under;
 
 // A double word v (v.hi = fl(v.hi + v.lo)) whose exact value lies within e of v.hi + v.lo.
@@ -543,6 +272,250 @@ void shot_pairs(const Shot& x, const Vec3<double>& o, Pair<double> (&so)[3], Pai
 }
 inline double largest(const Pair<double> (&a)[3]) {
   return std::max({std::fabs(a[0].hi), std::fabs(a[1].hi), std::fabs(a[2].hi)});
+}
+
+
+// The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
+// certainly), 1 with `out` set, or 2 when it cannot tell (the exact path then answers).
+inline int sphere_step(const Pair<double> (&s)[3], const Pair<double> (&r)[3], double rho, Bounded2& out) {
+  using std::fabs;
+  constexpr double u = uu, big = 0x1p300;
+  double S = 0, A = 0, B = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (!(fabs(s[i].hi) <= big && fabs(r[i].hi) <= big)) return 2;
+    S += s[i].hi * s[i].hi;
+    A += r[i].hi * r[i].hi;
+    B += s[i].hi * r[i].hi;
+  }
+  if (!(rho <= big && S >= 0x1p-600 && A >= 0x1p-600)) return 2;
+  // 1. the sign of c
+  const double rho2 = rho * rho;
+  const double c = S - rho2, ec = 8 * u * (S + rho2) + 8 * eta;
+  if (c < -ec) return 0;
+  if (!(c > ec)) return 2;
+  // 2. the stable root, without a division before the last: a D = a rho^2 - |s x r|^2
+  // (Lagrange's identity; |s x r| / |r| is the miss distance, its error u |s|)
+  const double x0 = s[1].hi * r[2].hi - s[2].hi * r[1].hi, x1 = s[2].hi * r[0].hi - s[0].hi * r[2].hi,
+               x2 = s[0].hi * r[1].hi - s[1].hi * r[0].hi;
+  const double aD = A * rho2 - ((x0 * x0 + x1 * x1) + x2 * x2);
+  const double z0 = c / (std::sqrt(std::max(aD, 0.0)) - B);
+  if (!(z0 >= 0x1p-600 && z0 <= 0x1p600)) return 2;
+  // 3. the residual at z0
+  Pair<double> w[3];
+  double ew[3], G = 0, W = 0, lows = 0;
+  affine_words(s, z0, r, w, ew);
+  for (int i = 0; i < 3; ++i) {
+    G += fabs(r[i].hi) * fabs(w[i].hi);
+    W += fabs(w[i].hi) * ew[i];
+    lows += fabs(r[i].hi) * (fabs(w[i].lo) + 2 * ew[i]);
+  }
+  const Pair<double> negP = robust::detail::rho2_minus_norm2(rho, w);
+  const double P0 = -(negP.hi + negP.lo);
+  const double W2 = w[0].hi * w[0].hi + w[1].hi * w[1].hi + w[2].hi * w[2].hi;
+  const double eP = 56 * u * u * (rho2 + W2) * (1 + 8 * u) + 2.01 * W + u * fabs(P0) + 64 * eta;
+  // 4. the step
+  const double g = -2 * (r[0].hi * w[0].hi + r[1].hi * w[1].hi + r[2].hi * w[2].hi);
+  const double eg = 2 * (5 * u * G * (1 + 4 * u) + lows) + 16 * eta;
+  const double g_lo = (g - eg) * (1 - 4 * u);
+  if (!(g_lo > 0)) return 2;
+  const double P_up = fabs(P0) + eP, inv = 1 / g_lo;  // (inv rounded: the factor 2 below covers it)
+  const double kappa = 4 * A * (1 + 8 * u) * P_up * inv * inv;
+  if (!(kappa <= 0.5)) return 2;
+  const double delta = P0 / g;
+  const double E = 2 * ((eP + fabs(P0) * eg * inv) * inv + u * fabs(delta) + 0.6 * kappa * P_up * inv) + eta;
+  const Pair<double> z = robust::two_sum(z0, delta);
+  out = Bounded2::within(z.hi, z.lo, E);
+  return std::isfinite(E) ? 1 : 2;
+}
+
+// The second double path (header, "the robust tier's double words"): z = c / q from
+// robust/ray_sphere.hpp's double words (the robust cast's own steps 0-4) and a bound on its
+// error from that header's items A-C, evaluated with computed upper bounds (and lower bounds
+// of the divisors) in place of the exact quantities. Same returns as sphere_step.
+template <class Shot>
+int sphere_words(const Shot& x, const Sphere<double>& sp, const Pair<double> (&s)[3], const Pair<double> (&r)[3],
+                 Bounded2& out) {
+  using std::fabs;
+  constexpr double u = 0x1p-53, E = under, tiny = 0x1p-1022;
+  if (!robust::in_certified_range(x, sp)) return 2;
+  const auto A = robust::detail::analyse(s, r, sp.radius, std::is_same_v<Shot, Segment<double>>);
+  const auto& L = A.L;
+  auto ok = [](double v) { return v == 0 || (std::isfinite(v) && fabs(v) >= tiny); };
+  if (A.zero || !ok(L.rho)) return 2;
+  for (int i = 0; i < 3; ++i)
+    if (!ok(L.s[i].hi) || !ok(L.s[i].lo) || !ok(L.r[i].hi) || !ok(L.r[i].lo)) return 2;
+  // item A's terms, as robust::detail::decide_cast computes them
+  const double S2 = (L.s[0].hi * L.s[0].hi + L.s[1].hi * L.s[1].hi + L.s[2].hi * L.s[2].hi) * (1 + 8 * u);
+  const double rho2 = L.rho * L.rho * (1 + 2 * u);
+  const double err_c = 55 * u * u * (S2 + rho2) + 32 * E;
+  if (A.c.hi < -2 * err_c) return 0;
+  const double c_lo = A.c.hi * (1 - 4 * u) - err_c;
+  if (!(c_lo > 0)) return 2;
+  const auto& Q = A.Q;
+  const double R2 = Q.a.hi * (1 + 8 * u) + 64 * E;
+  const double ns = std::sqrt(S2) * (1 + 2 * u), nr = std::sqrt(R2) * (1 + 2 * u);
+  const double err_a = 52 * u * u * R2 + 32 * E;
+  const double err_b = 51 * u * u * (ns * nr) + 32 * E;
+  const double a_lo = Q.a.hi * (1 - 4 * u) - err_a;
+  if (!(a_lo > 0) || !(Q.b.hi < -2 * err_b)) return 2;  // on a hit with c > 0, b < 0
+  const double L2 = (Q.lh[0] * Q.lh[0] + Q.lh[1] * Q.lh[1] + Q.lh[2] * Q.lh[2]) * (1 + 8 * u);
+  const double nl = std::sqrt(L2) * (1 + 2 * u);
+  const double e = 33 * u * u * ns;
+  const double delta = err_b / a_lo + fabs(Q.f.hi) * (1 + 4 * u) * (err_a / a_lo + 8 * u * u);
+  const double err_D = 56 * u * u * (rho2 + L2) + 2 * (nl + e) * e + e * e + delta * delta * R2 + 64 * E;
+  // step 4 of that header: q = |b| + X, X = sqrt(a D), z = c / q
+  const Pair<double> X = robust::sqrt_pair(robust::mul_pair(Q.a, Q.D));
+  const Pair<double> qs = robust::two_sum(-Q.b.hi, X.hi);
+  const Pair<double> q = robust::fast_two_sum(qs.hi, qs.lo + (X.lo - Q.b.lo));
+  const Pair<double> z = robust::div_pair(A.c, q);
+  // item B: |X^ - X| (X exact on the right-hand sides: solved for it, 1 / (1 - k) <= 1 + 2k)
+  const double rel_a = err_a / a_lo;
+  const double sq = std::sqrt(R2 * err_D) * (1 + 4 * u);
+  const double k = 0.51 * rel_a + 6.2 * u * u;
+  const double Xh = fabs(X.hi) * (1 + 2 * u);
+  double eX = (1.01 * sq + (Xh + sq) * k) * (1 + 2 * k);
+  const double D_lo = Q.D.hi * (1 - 4 * u) - err_D;
+  if (D_lo > 0) {
+    const double theta = 1.01 * (rel_a + err_D / D_lo) + 4 * u * u;
+    if (theta <= 0.4) {
+      const double m = 0.57 * theta + 4.1 * u * u;
+      eX = std::min(eX, Xh * m * (1 + 2 * m));
+    }
+  }
+  // item C
+  const double q_lo = q.hi * (1 - 4 * u) - (err_b + eX);
+  if (!(q_lo > 0)) return 2;
+  const double rel_q = (err_b + eX) / q_lo + 3.1 * u * u, rel_c = err_c / c_lo;
+  if (!(rel_q <= 0.1 && rel_c <= 0.1)) return 2;
+  const double rel_z = (rel_c + rel_q) / (1 - rel_q) + 10 * u * u;
+  const Pair<double> zn = robust::fast_two_sum(z.hi, z.lo);
+  const double bound = 2 * 1.35 * rel_z * fabs(zn.hi) + E;  // |z| <= 1.35 |zn.hi|; x 2: the bound's own rounding
+  if (!std::isfinite(bound) || !(fabs(zn.hi) >= 0x1p-960)) return 2;
+  out = Bounded2::within(zn.hi, zn.lo, bound);
+  return 1;
+}
+
+// The exact path: the truth's formulation (the book's cast; for an oriented box the solid's,
+// solid/obb.hpp: the book's frame transform assumes orthonormal axes) at Bounded2 (certain,
+// or it throws), then at CGAL::Gmpq.
+template <class Shot, class Solid>
+auto truth_cast(const Shot& x, const Solid& y) {
+  return book::cast(x, y, want_lambda_enter);
+}
+template <class Shot, class T>
+auto truth_cast(const Shot& x, const OrientedBox<T>& y) {
+  return solid::cast(x, y, want_lambda_enter);
+}
+template <class Shot, class Solid>
+double exact_enter(const Shot& x, const Solid& y) {
+  try {
+    const auto c = truth_cast(exactly<Bounded2>(x), exactly<Bounded2>(y));
+    return c.hit ? c.lambda_enter.rounded() : 0.0;
+  } catch (const uncertain&) {
+  }
+  const auto c = truth_cast(rational_inputs::toq(x), rational_inputs::toq(y));
+  return c.hit ? round_to<double>(c.lambda_enter) : 0.0;
+}
+
+// A double path's answer rounded: the value, or nothing when the path could not tell.
+inline std::optional<double> rounded(int st, const Bounded2& z) {
+  if (st == 0) return 0.0;
+  double v;
+  if (st == 1 && z.try_rounded(v)) return v;
+  return std::nullopt;
+}
+
+// The two double paths on a hit (stage 1: the Newton step, 2: the double words).
+template <class Shot>
+std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int stage) {
+  Pair<double> s[3], r[3];
+  shot_pairs(x, sp.center, s, r);
+  Bounded2 z;
+  return rounded(stage == 1 ? sphere_step(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
+}
+
+// The classification's answer, then on a hit the double path (a value, or nothing when it
+// cannot tell), then the exact path.
+template <class Shot, class Solid, class Path>
+Entry entry_of(bool hit, const Shot& x, const Solid& y, bool* exact_used, Path double_path) {
+  Entry out;
+  if (exact_used) *exact_used = false;
+  if (!hit) return out;
+  out.hit = true;
+  if (const std::optional<double> v = double_path()) {
+    out.lambda_enter = *v;
+    return out;
+  }
+  if (exact_used) *exact_used = true;
+  out.lambda_enter = exact_enter(x, y);
+  return out;
+}
+
+template <class Shot>
+Entry sphere_enter(const Shot& x, const Sphere<double>& sp, bool* exact_used) {
+  return entry_of(staged::run(nullptr, x, sp), x, sp, exact_used, [&] {
+    Pair<double> s[3], r[3];
+    shot_pairs(x, sp.center, s, r);
+    Bounded2 z;
+    if (const auto v = rounded(sphere_step(s, r, sp.radius, z), z)) return v;
+    return rounded(sphere_words(x, sp, s, r, z), z);
+  });
+}
+
+// The box's double path on a hit (header, "A box"): the value, or nothing when a sign or a
+// rounding is uncertain.
+template <class Shot>
+std::optional<double> box_double(const Shot& x, const Box<double>& box) {
+  using std::fabs;
+  constexpr double u = 0x1p-53, lo_lim = 0x1p-900, hi_lim = 0x1p900;
+  double best = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    // n = (c_i - source_i) -+ h_i = m + t exactly, t = me + pe rounded once (|t - t^| <= u |t^|)
+    const Pair<double> p = robust::two_sum(box.center[i], -x.source[i]);
+    const Pair<double> lower = robust::two_sum(p.hi, -box.extent[i]), upper = robust::two_sum(p.hi, box.extent[i]);
+    const double tl = lower.lo + p.lo, tu = upper.lo + p.lo;
+    // the source's outcode bits: the signs of n (certain when m dominates, or m = 0: then t
+    // is exact and its rounding keeps its sign)
+    auto sign = [](const Pair<double>& mm, double tt) -> int {
+      if (mm.hi == 0) return tt > 0 ? 1 : (tt < 0 ? -1 : 0);
+      if (fabs(mm.hi) > 2 * fabs(tt)) return mm.hi > 0 ? 1 : -1;
+      return 2;
+    };
+    const int sl = sign(lower, tl), su = sign(upper, tu);
+    if (sl == 2 || su == 2) return std::nullopt;
+    const bool below = sl > 0, above = su < 0;
+    if (!below && !above) continue;
+    const double m = below ? lower.hi : upper.hi, tn = below ? tl : tu;
+    // d = dh + dl exactly (a ray: dl = 0)
+    Pair<double> d;
+    if constexpr (std::is_same_v<Shot, Segment<double>>)
+      d = robust::two_sum(x.target[i], -x.source[i]);
+    else
+      d = {x.direction[i], 0.0};
+    if (!(fabs(m) >= lo_lim && fabs(m) <= hi_lim && fabs(d.hi) >= lo_lim && fabs(d.hi) <= hi_lim))
+      return std::nullopt;
+    // q1 = m / dh; the residual R = n - q1 d: m - P exact (P = fl(q1 dh) is within 2u of m),
+    // the small terms summed with three roundings
+    const double q1 = m / d.hi;
+    const Pair<double> P = robust::two_prod_split(q1, d.hi);
+    const double r0 = m - P.hi, qd = q1 * d.lo;
+    const double R = ((r0 - P.lo) + tn) - qd;
+    const double eR = 4 * u * (((fabs(r0) + fabs(P.lo)) + fabs(tn)) + fabs(qd)) * (1 + 8 * u);
+    // z = q1 + R_exact / d: q2 = R / dh off by eR / |d| + 2.1 u |q2| (dl, and q2's rounding)
+    const double q2 = R / d.hi;
+    const double E = 2 * (eR / (fabs(d.hi) * (1 - u)) + 2.1 * u * fabs(q2)) + under;
+    const Pair<double> z = robust::two_sum(q1, q2);
+    double v;
+    if (!(fabs(q1) >= lo_lim && fabs(q1) <= hi_lim) || !Bounded2::within(z.hi, z.lo, E).try_rounded(v))
+      return std::nullopt;
+    best = std::max(best, v);
+  }
+  return best;
+}
+
+template <class Shot>
+Entry box_enter(const Shot& x, const Box<double>& box, bool* exact_used) {
+  return entry_of(staged::run(nullptr, x, box), x, box, exact_used, [&] { return box_double(x, box); });
 }
 
 // The triangle's double path on a hit (header, "A triangle"): the value, or nothing.

@@ -169,26 +169,25 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   const auto rounded = [](const Inputs& in) { return oracle_truth_of<Spec>(in, 53, nullptr).cls; };
   rows.push_back({"oracle, classification", "", "exact", batch_over(prepare<Spec, double>(cases), oracle)});
   if (values) rows.push_back({"oracle, every output rounded", "", "exact", batch_over(uni, rounded)});
-  // a cast's hit and lambda_enter alone, correctly rounded (the row answers the hit; the value
-  // is kept from the optimizer by an empty asm statement that reads it)
-  const auto enter = [](const auto& ab) {
-    if constexpr (has_oracle_enter<Spec>) {
-      const oracle::Entry e = Spec::oracle_enter(ab.first, ab.second, nullptr);
-      asm volatile("" : : "r,m"(e.lambda_enter) : "memory");
-      return e.hit;
-    } else {
-      return false;
-    }
+  // a cast's hit and lambda_enter alone, correctly rounded: the row answers the hit, the value
+  // kept from the optimizer by an empty asm statement that reads it; from the prepared
+  // primitives where the spec has oracle::enter, else from the case's columns (as the
+  // every-output row)
+  const auto answered = [](const oracle::Entry& e) {
+    asm volatile("" : : "r,m"(e.lambda_enter) : "memory");
+    return e.hit;
   };
-  // (the casts without oracle::enter: from the case's columns, as the every-output row)
-  const auto enter_generic = [](const Inputs& in) {
-    if constexpr (is_cast<Spec>) {
-      const oracle::Entry e = oracle_enter_of<Spec>(in, nullptr);
-      asm volatile("" : : "r,m"(e.lambda_enter) : "memory");
-      return e.hit;
-    } else {
+  const auto enter = [answered](const auto& ab) {
+    if constexpr (has_oracle_enter<Spec>)
+      return answered(Spec::oracle_enter(ab.first, ab.second, nullptr));
+    else
       return false;
-    }
+  };
+  const auto enter_generic = [answered](const Inputs& in) {
+    if constexpr (is_cast<Spec>)
+      return answered(oracle_enter_of<Spec>(in, nullptr));
+    else
+      return false;
   };
   if constexpr (has_oracle_enter<Spec>)
     rows.push_back({"oracle, lambda_enter rounded", "", "exact", batch_over(prepare<Spec, double>(cases), enter)});
