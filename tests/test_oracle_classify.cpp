@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 using namespace cdref;
 using namespace cdref::fuzz;
@@ -368,4 +370,78 @@ TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][
         msg([&] { book::hit(Segment<double>{V(0, 0, 0), V(1, 0, 0)}, Sphere<double>{V(0, 0, 0), -1}); }));
   CHECK(msg([&] { oracle::enter(zero, Box<double>{V(0, 0, 0), V(1, -1, 1)}); }) ==
         msg([&] { book::hit(zero, Box<double>{V(0, 0, 0), V(1, -1, 1)}); }));
+}
+
+// The oracle's sphere queries and the robust tier's decisions on them at double run their
+// filter before the input checks (classify.hpp, staged::filter_first; robust/ray_sphere.hpp):
+// every bad value in every input slot must still be refused with the message check() gives,
+// also where the valid input it replaces is one the filter decides; valid extremes pass.
+TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-classify][errors]") {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double big = std::numeric_limits<double>::max();
+  // slots: 0-2 shot source (sphere A centre), 3-5 target or direction (A radius at 3), 6-8
+  // sphere or box centre, 9 radius (9-11 the box's extents)
+  struct Base {
+    double x[12];
+  };
+  const std::vector<Base> bases = {
+      {{-3, 0.5, 0.25, 3, 0.5, 0.25, 0, 0, 0, 1, 1, 1}},     // through the middle: a hit
+      {{-3, 2, 0.25, 3, 2, 0.25, 0, 0, 0, 1, 1, 1}},         // beside it: a miss
+      {{-3, 0.5, 0.25, -5, 0.5, 0.25, 0, 0, 0, 1, 1, 1}},    // pointing away: a miss
+      {{0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0, 0, 0, 1, 1, 1}},    // zero length (as a ray: zero direction)
+  };
+  std::vector<double> bad = {inf, -inf, nan, -1, -0x1p-1074, big, -big, 0x1p-1074, 0, -0.0};
+  int refused = 0, decided_by_filter = 0;
+  for (const Base& base : bases) {
+    for (int slot = 0; slot < 12; ++slot) {
+      for (double v : bad) {
+        double x[12];
+        std::copy(base.x, base.x + 12, x);
+        x[slot] = v;
+        const Vec3<double> p(x[0], x[1], x[2]), q(x[3], x[4], x[5]), c(x[6], x[7], x[8]), h(x[9], x[10], x[11]);
+        const Segment<double> seg{p, q};
+        const Ray<double> ray{p, q};
+        const Sphere<double> sp{c, x[9]}, spA{p, x[3]};
+        const Box<double> box{c, h};
+        CAPTURE(slot, v, base.x[0], base.x[3]);
+        // what the book's checks say, in the order they run
+        const std::string seg_sp = msg([&] { check(seg, "segment"), check(sp, "sphere"); });
+        const std::string ray_sp = msg([&] { check(ray, "ray"), check(sp, "sphere"); });
+        const std::string sp_sp = msg([&] { check(spA, "sphere A"), check(sp, "sphere B"); });
+        const std::string sp_box = msg([&] { check(spA, "sphere"), check(box, "box"); });
+        Stage st = Stage::rational;
+        CHECK(msg([&] { oracle::classify(seg, sp, &st); }) == seg_sp);
+        decided_by_filter += st == Stage::filter;
+        CHECK(msg([&] { oracle::classify(ray, sp); }) == ray_sp);
+        CHECK(msg([&] { oracle::classify_segment_sphere(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { oracle::classify(spA, sp); }) == sp_sp);
+        CHECK(msg([&] { oracle::classify(spA, box); }) == sp_box);
+        CHECK(msg([&] { oracle::enter(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { oracle::enter(ray, sp); }) == ray_sp);
+        CHECK(msg([&] { robust::decide(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { robust::hit(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { robust::decide(ray, sp); }) == ray_sp);
+        CHECK(msg([&] { robust::hit(ray, sp); }) == ray_sp);
+        CHECK(msg([&] { robust::decide_closest(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { robust::intersect(seg, sp); }) == seg_sp);
+        CHECK(msg([&] { robust::decide(spA, sp); }) == sp_sp);
+        CHECK(msg([&] { robust::intersect(spA, sp); }) == sp_sp);
+        CHECK(msg([&] { robust::decide(spA, box); }) == sp_box);
+        CHECK(msg([&] { robust::intersect(spA, box); }) == sp_box);
+        refused += seg_sp != "no exception";
+        // where the inputs are valid, the answers are the oracle's (the filter's own soundness:
+        // the campaign and fuzz tests)
+        if (ray_sp == "no exception") {
+          const robust::Decision d = robust::decide(ray, sp);
+          if (d.certain) CHECK(d.value == oracle::classify(ray, sp));
+        }
+        if (sp_box == "no exception") {
+          const robust::Decision d = robust::decide(spA, box);
+          if (d.certain) CHECK(d.value == oracle::classify(spA, box));
+        }
+      }
+    }
+  }
+  CHECK(refused > 100);           // the bad values were bad
+  CHECK(decided_by_filter > 100);  // and many of the valid neighbours went through the filter alone
 }

@@ -810,28 +810,66 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
   return rational(a, b, tag...);
 }
 
+// ---- The input checks folded into the filter: sphere-sphere, the sphere casts, Algorithm
+// 3.2, sphere-box ----
+// For these four filters a valid input pays the filter alone: the checks (a branch per vector)
+// cost as much as the filter's arithmetic on sphere-sphere and half of it on the casts. Sound
+// because each of them decides only where its range tests passed, and those tests fail on
+// every infinity or NaN among the inputs (an infinite or NaN operand makes the tested sum
+// infinite or NaN):
+//   sphere-sphere   m = |cA - cB|^2 + (rhoA + rhoB)^2 in range: every coordinate and radius;
+//   the casts       every decided path of hit_sphere_logic passes sigma's range test (|s|^2,
+//                   |r|^2 in [2^-480, 2^480], rho^2 <= 2^480: source, centre, target or
+//                   direction, radius; a ray's zero direction fails |r|^2 >= 2^-480), or, for a
+//                   segment whose target equals its source, ss_rho2's (source, centre, radius);
+//   Algorithm 3.2   sr's test on |s|^2 + |r|^2 first (source, centre, target), then ss_rho2's,
+//                   tt_rho2's or sigma's, each of which bounds rho^2 too;
+//   sphere-box      m = sum (|c_i - b_i| + h_i)^2 + rho^2: both centres, the extents, the radius.
+// What no range test sees, a negative radius or extent (its square or its sum with |c_i| can be
+// in range), is tested before the filter (a NaN fails that test too). Every input the filter
+// leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
+// wrong, the same message as before) and then all the stages, out of line.
+inline bool signs_valid(const Sphere<double>& s) { return s.radius >= 0; }
+inline bool signs_valid(const Box<double>& b) {
+  return (b.extent[0] >= 0) & (b.extent[1] >= 0) & (b.extent[2] >= 0);
+}
+inline bool signs_valid(const Segment<double>&) { return true; }
+inline bool signs_valid(const Ray<double>&) { return true; }  // a zero direction: sigma's range test
+
+template <class A, class B, class... Tag>
+[[gnu::noinline]] bool checked_run(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag) {
+  check(a, na);
+  check(b, nb);
+  return run(used, a, b, tag...);
+}
+// The classification with the checks after the filter (for the four pairs above only).
+template <class A, class B, class... Tag>
+bool filter_first(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag) {
+  if (signs_valid(a) && signs_valid(b)) {
+    const int r = filter(a, b, tag...);
+    if (r != unknown) [[likely]] {
+      if (used) *used = Stage::filter;
+      return r != 0;
+    }
+  }
+  return checked_run(used, a, na, b, nb, tag...);
+}
+
 }  // namespace staged
 
-// ---- the oracle: validation as the book does it, then the stages ----
+// ---- the oracle: validation as the book does it (after the filter where it is folded into
+// the filter's range tests, above), then the stages ----
 inline bool classify(const Sphere<double>& a, const Sphere<double>& b, Stage* used = nullptr) {
-  check(a, "sphere A");
-  check(b, "sphere B");
-  return staged::run(used, a, b);
+  return staged::filter_first(used, a, "sphere A", b, "sphere B");
 }
 inline bool classify(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
-  check(seg, "segment");
-  check(sp, "sphere");
-  return staged::run(used, seg, sp);
+  return staged::filter_first(used, seg, "segment", sp, "sphere");
 }
 inline bool classify(const Ray<double>& ray, const Sphere<double>& sp, Stage* used = nullptr) {
-  check(ray, "ray");
-  check(sp, "sphere");
-  return staged::run(used, ray, sp);
+  return staged::filter_first(used, ray, "ray", sp, "sphere");
 }
 inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
-  check(seg, "segment");
-  check(sp, "sphere");
-  return staged::run(used, seg, sp, staged::alg32{});
+  return staged::filter_first(used, seg, "segment", sp, "sphere", staged::alg32{});
 }
 inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
   check(a, "box A");
@@ -849,9 +887,7 @@ inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used
   return staged::run(used, ray, box);
 }
 inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
-  check(sp, "sphere");
-  check(box, "box");
-  return staged::run(used, sp, box);
+  return staged::filter_first(used, sp, "sphere", box, "box");
 }
 
 }  // namespace cdref::oracle

@@ -8,8 +8,10 @@
 // every-output path (the fan and polygon casts' row takes the truth's formulation asked for
 // lambda_enter alone: fuzz/cdref/fuzz/spec.hpp, oracle_enter_of).
 //
-// Each call: the input checks; the classification (oracle::classify: filter, double words,
-// expansions, rationals; each query's own stages); on a hit a double path whose error is
+// Each call: the input checks (for the sphere casts after the classification's filter, whose
+// range tests refuse what they would: classify.hpp, staged::filter_first); the classification
+// (oracle::classify: filter, double words, expansions, rationals; each query's own stages); on
+// a hit a double path whose error is
 // bounded rigorously, accepted when the exact value cannot lie on the other side of a rounding
 // midpoint (Bounded2::try_rounded); otherwise the truth's formulation at oracle::Bounded2, then
 // at CGAL::Gmpq.
@@ -451,9 +453,10 @@ Entry entry_of(bool hit, const Shot& x, const Solid& y, bool* exact_used, Path d
   return out;
 }
 
+// (the inputs checked by the classification: staged::filter_first, after its filter)
 template <class Shot>
-Entry sphere_enter(const Shot& x, const Sphere<double>& sp, bool* exact_used) {
-  return entry_of(staged::run(nullptr, x, sp), x, sp, exact_used, [&] {
+Entry sphere_enter(const Shot& x, const char* name, const Sphere<double>& sp, bool* exact_used) {
+  return entry_of(staged::filter_first(nullptr, x, name, sp, "sphere"), x, sp, exact_used, [&] {
     Pair<double> s[3], r[3];
     shot_pairs(x, sp.center, s, r);
     Bounded2 z;
@@ -604,14 +607,10 @@ Entry obb_enter(const Shot& x, const OrientedBox<double>& b, bool* exact_used) {
 // oracle::enter (oracle::Entry: stage.hpp): `exact_used` (optional) says whether the exact path answered. Inputs are checked as the
 // book checks them (cdref::invalid_input naming what is wrong).
 inline Entry enter(const Segment<double>& seg, const Sphere<double>& sp, bool* exact_used = nullptr) {
-  check(seg, "segment");
-  check(sp, "sphere");
-  return enter_detail::sphere_enter(seg, sp, exact_used);
+  return enter_detail::sphere_enter(seg, "segment", sp, exact_used);
 }
 inline Entry enter(const Ray<double>& ray, const Sphere<double>& sp, bool* exact_used = nullptr) {
-  check(ray, "ray");
-  check(sp, "sphere");
-  return enter_detail::sphere_enter(ray, sp, exact_used);
+  return enter_detail::sphere_enter(ray, "ray", sp, exact_used);
 }
 inline Entry enter(const Segment<double>& seg, const Box<double>& box, bool* exact_used = nullptr) {
   check(seg, "segment");

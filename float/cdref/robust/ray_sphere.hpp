@@ -156,6 +156,12 @@
 //       and the subtraction by 8u |s| + u |l^| as in stable/ray_sphere.hpp; El doubles their
 //       sum for the second-order terms), so D is off by (2 |l^| + El) El + 4u |l^|^2 + 2u rho^2
 //       + 2u |D^| + 8 eta.
+// decide() and hit() at double run it before the input checks (a valid input then pays the
+// filter alone; the checks are a third of the cost): it decides only where its range test
+// passed, which every infinity or NaN among the inputs fails (S from the source and the centre,
+// A from the target or the direction, which fails for a ray's zero direction too, rho^2 from
+// the radius), and a negative radius, which no range test sees, is tested first; everything
+// else takes the checks (the same messages) and then the filter again, out of line.
 // decide(), hit() and cast() all take its answer where it decides, so the three classify alike
 // everywhere (the double words' own value is certified only within in_certified_range,
 // decision.hpp). It answers where S and A lie in [2^emin / u, max / 64] and T, rho^2 below max / 64 (then
@@ -647,47 +653,79 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
 // The decision alone: the same computation as cast() (the range tests need the roots),
 // with none of the outputs assembled.
 template <class F>
-bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
+[[gnu::noinline]] bool hit_checked(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) return hit(detail::widened(seg), detail::widened(sp));
+  if constexpr (std::is_same_v<F, float>) return hit_checked(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return f > 0;
   return cast(seg, sp, 0).hit;
 }
+template <class F>
+bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (sp.radius >= F(0))  // the checks after the filter (header)
+      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
+        return f > 0;
+  return hit_checked(seg, sp);
+}
 
 template <class F>
-bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
+[[gnu::noinline]] bool hit_checked(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) return hit(detail::widened(ray), detail::widened(sp));
+  if constexpr (std::is_same_v<F, float>) return hit_checked(detail::widened(ray), detail::widened(sp));
   if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return f > 0;
   return cast(ray, sp, 0).hit;
+}
+template <class F>
+bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (sp.radius >= F(0))  // the checks after the filter (header)
+      if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) [[likely]]
+        return f > 0;
+  return hit_checked(ray, sp);
 }
 
 // The cast's classification with its certificate (decision.hpp; bound in the header): the
 // cast's own computation and a bound on each decisive sign.
 template <class F>
-Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
+[[gnu::noinline]] Decision decide_checked(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(seg), detail::widened(sp));
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
   return within_range(detail::decide_cast(s, r, sp, true), seg, sp);
 }
+template <class F>
+Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (sp.radius >= F(0))  // the checks after the filter (header)
+      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
+        return Decision{f > 0, true};
+  return decide_checked(seg, sp);
+}
 
 template <class F>
-Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
+[[gnu::noinline]] Decision decide_checked(const Ray<F>& ray, const Sphere<F>& sp) {
   check(ray, "ray");
   check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(ray), detail::widened(sp));
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(ray), detail::widened(sp));
   if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return Decision{f > 0, true};
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
   return within_range(detail::decide_cast(s, r, sp, false), ray, sp);
+}
+template <class F>
+Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (sp.radius >= F(0))  // the checks after the filter (header)
+      if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) [[likely]]
+        return Decision{f > 0, true};
+  return decide_checked(ray, sp);
 }
 
 }  // namespace cdref::robust

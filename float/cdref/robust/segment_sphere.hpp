@@ -343,14 +343,23 @@ Decision closest_decision(const Segment<F>& seg, const Sphere<F>& sp, const SegS
 
 // The book's intersect(Segment, Sphere) with its certificate (see the header).
 template <class F>
-Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
+[[gnu::noinline]] Decision decide_closest_checked(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
   // (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
-  if constexpr (std::is_same_v<F, float>) return decide_closest(detail::widened(seg), detail::widened(sp));
+  if constexpr (std::is_same_v<F, float>) return decide_closest_checked(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
   const auto L = detail::seg_sph_local(seg, sp);
   return detail::closest_decision(seg, sp, L, detail::seg_sph_solve(L));
+}
+// (at double the filter before the input checks, as the casts' decide(): ray_sphere.hpp)
+template <class F>
+Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (sp.radius >= F(0))
+      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
+        return Decision{f > 0, true};
+  return decide_closest_checked(seg, sp);
 }
 
 // (the same answer as decide_closest(): the filter, the branch's sign in F, the double words)

@@ -48,7 +48,11 @@
 // whenever |q| > 8u (W + rho^2) + 16u^2 C (computed in F: the slack covers its roundings
 // and the eta terms, 10u^2 m). Then the answer is certain without the expansions below; decide(),
 // intersect() and proximity() all take it where it decides, so the three classify alike
-// (the expansions' own value is certified only within in_certified_range, decision.hpp).
+// (the expansions' own value is certified only within in_certified_range, decision.hpp). At
+// double, decide() and intersect() run it before the input checks: m fails its range test for
+// every infinity or NaN among the centres and the radius (C and rho^2); the radius's sign and
+// the extents, which it does not see (an infinite extent clamps to v_i = 0), are tested first;
+// the rest takes the checks (the same messages) and the filter again, out of line.
 // decide() otherwise: outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
 // low terms scaled below the normal range; inside, intersect = true exactly. Never certain
 // when the first scaling lost bits (inputs 2^(emax+emin) apart). Exact touching (Q = 0 with
@@ -153,27 +157,56 @@ int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
 
 }  // namespace detail
 
+namespace detail {
+// What the filter's range test does not see (header): the radius's sign, and the extents (an
+// infinite extent clamps to an offset of 0).
 template <class F>
-bool intersect(const Sphere<F>& sp, const Box<F>& box) {
+bool sphere_box_unseen_valid(const Sphere<F>& sp, const Box<F>& box) {
+  constexpr F big = std::numeric_limits<F>::max();
+  return (sp.radius >= F(0)) & (box.extent[0] >= F(0)) & (box.extent[0] <= big) & (box.extent[1] >= F(0)) &
+         (box.extent[1] <= big) & (box.extent[2] >= F(0)) & (box.extent[2] <= big);
+}
+}  // namespace detail
+
+template <class F>
+[[gnu::noinline]] bool intersect_checked(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
-  if constexpr (std::is_same_v<F, float>) return intersect(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
+  if constexpr (std::is_same_v<F, float>) return intersect_checked(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
   if (const int f = detail::sphere_box_filter(sp, box)) return f < 0;
   const auto L = detail::sph_box_local(sp, box);
   return !L.outside || detail::sph_box_q(L).value <= F(0);
 }
+// (intersect() and decide(): the filter before the input checks at double, header)
+template <class F>
+bool intersect(const Sphere<F>& sp, const Box<F>& box) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (detail::sphere_box_unseen_valid(sp, box))
+      if (const int f = detail::sphere_box_filter(sp, box)) [[likely]]
+        return f < 0;
+  return intersect_checked(sp, box);
+}
 
 template <class F>
-Decision decide(const Sphere<F>& sp, const Box<F>& box) {
+[[gnu::noinline]] Decision decide_checked(const Sphere<F>& sp, const Box<F>& box) {
   check(sp, "sphere");
   check(box, "box");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
   if (const int f = detail::sphere_box_filter(sp, box)) return Decision{f < 0, true};
   const auto L = detail::sph_box_local(sp, box);
   if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
   const detail::Bounded<F> q = detail::sph_box_q(L);
   return within_range(Decision{q.value <= F(0), L.exact && q.sign() != 0}, sp, box);
 }
+template <class F>
+Decision decide(const Sphere<F>& sp, const Box<F>& box) {
+  if constexpr (!std::is_same_v<F, float>)
+    if (detail::sphere_box_unseen_valid(sp, box))
+      if (const int f = detail::sphere_box_filter(sp, box)) [[likely]]
+        return Decision{f < 0, true};
+  return decide_checked(sp, box);
+}
+
 
 template <class F>
 Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want_proximity) {

@@ -47,7 +47,10 @@
 // product. Then the answer is certain without the scaled pairs below (decide(), intersect()
 // and proximity() all take it where it decides, so the three classify alike everywhere: the
 // pairs' own value is certified only within in_certified_range, decision.hpp): every case but those
-// within about 8u (|v|^2 + s^2) of touching, at every range where the squares stay finite.
+// within about 8u (|v|^2 + s^2) of touching, at every range where the squares stay finite. At
+// double, decide() and intersect() run it before the input checks: its range test on m fails
+// for every infinity or NaN among the centres and radii, and negative radii are tested first;
+// the rest takes the checks (the same messages) and the filter again, out of line.
 // decide() otherwise: the sign of Q from dot2_cert (ray_sphere.hpp) with the scaling's absolute term:
 // certain iff |Q^| > 2u|Q^| + 288 u^2 S^ + K eta (K covers the subnormal low parts); if the
 // first scaling lost bits (inputs 2^(emax+emin) apart) it is never certain. When all of v
@@ -256,25 +259,42 @@ int sphere_sphere_filter(const Sphere<F>& a, const Sphere<F>& b) {
 }  // namespace detail
 
 template <class F>
-bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
+[[gnu::noinline]] bool intersect_checked(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
-  if constexpr (std::is_same_v<F, float>) return intersect(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
+  if constexpr (std::is_same_v<F, float>) return intersect_checked(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
   if (const int f = detail::sphere_sphere_filter(a, b)) return f < 0;
   const auto L = detail::sphere_sphere_local(a, b);
   return L.all_zero || detail::sphere_sphere_q(L).value <= F(0);
 }
+// (intersect() and decide(): the filter before the input checks at double, header)
+template <class F>
+bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
+  if constexpr (!std::is_same_v<F, float>)
+    if ((a.radius >= F(0)) & (b.radius >= F(0)))
+      if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
+        return f < 0;
+  return intersect_checked(a, b);
+}
 
 template <class F>
-Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
+[[gnu::noinline]] Decision decide_checked(const Sphere<F>& a, const Sphere<F>& b) {
   check(a, "sphere A");
   check(b, "sphere B");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(a), detail::widened(b));  // (decision.hpp, widened)
   if (const int f = detail::sphere_sphere_filter(a, b)) return Decision{f < 0, true};
   const auto L = detail::sphere_sphere_local(a, b);
   if (L.all_zero) return within_range(Decision{true, L.exact}, a, b);
   const detail::Bounded<F> q = detail::sphere_sphere_q(L);
   return within_range(Decision{q.value <= F(0), L.exact && q.sign() != 0}, a, b);
+}
+template <class F>
+Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
+  if constexpr (!std::is_same_v<F, float>)
+    if ((a.radius >= F(0)) & (b.radius >= F(0)))
+      if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
+        return Decision{f < 0, true};
+  return decide_checked(a, b);
 }
 
 template <class F>
