@@ -86,6 +86,7 @@
 #include <cdref/cdref.hpp>
 #include <cdref/exact.hpp>
 #include <cdref/oracle/box_cast_filter.hpp>
+#include <cdref/oracle/sphere_filter.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/ray_sphere.hpp>
@@ -98,9 +99,8 @@ namespace cdref::oracle {
 
 namespace staged {
 
-// (unknown, u, in_range and fsign: oracle/box_cast_filter.hpp)
-inline int le0(int s) { return s == unknown ? unknown : int(s <= 0); }
-inline int ge0(int s) { return s == unknown ? unknown : int(s >= 0); }
+// (unknown, u, in_range and fsign: oracle/box_cast_filter.hpp; le0, ge0, SphereFilter,
+// hit_sphere_logic and segment_sphere_logic: oracle/sphere_filter.hpp)
 
 // ---- stage 2: expansions ----
 template <int N>
@@ -354,76 +354,7 @@ inline int expansion(const Sphere<double>& a0, const Sphere<double>& b0) {
 }
 
 // ======================= ray / segment on a sphere =======================
-// Filter signs. Leaves s~ = fl(p - c), r~ = fl(target - source) (or the direction, exact),
-// t~ = fl(target - c); ss, rr, tt, rho2 their computed squares (sums left to right).
-struct SphereFilter {
-  double s[3], r[3], t[3], ss, rr, tt = 0, rho2;
-  bool rzero;
-  SphereFilter(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment) {
-    for (int i = 0; i < 3; ++i) {
-      s[i] = src[i] - sp.center[i];
-      r[i] = segment ? rt[i] - src[i] : rt[i];
-    }
-    rzero = segment && rt[0] == src[0] && rt[1] == src[1] && rt[2] == src[2];
-    ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
-    rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    rho2 = sp.radius * sp.radius;
-    if (segment) {
-      for (int i = 0; i < 3; ++i) t[i] = rt[i] - sp.center[i];
-      tt = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
-    }
-  }
-  // |x|^2 - rho^2: K = 6 as for sphere-sphere; bound 7u fl(xx + rho2).
-  static int sq_minus_rho2(double xx, double rho2) {
-    const double m = xx + rho2;
-    if (!in_range(m)) return unknown;
-    return fsign(xx - rho2, (7 * u) * m);
-  }
-  int ss_rho2() const { return sq_minus_rho2(ss, rho2); }
-  int tt_rho2() const { return sq_minus_rho2(tt, rho2); }
-  // a.b: K = 2 + 1 + 2 = 5, P+ = sum |a_i b_i|, bounded by the computed products' absolute
-  // values (1 + 4u): bound 6u fl(sum |fl(a_i b_i)|), component by component, so that a long
-  // vector against a short one is judged by their products and not by |a|^2 + |b|^2. The range
-  // check on aa + bb keeps the products below 2^1000; the absolute 2^-1060 covers three
-  // underflowing products (2^-1075 each).
-  static int dot(const double* a, const double* b, double aa, double bb) {
-    if (!in_range(aa + bb)) return unknown;
-    const double p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
-    return fsign(p0 + p1 + p2, (6 * u) * (std::fabs(p0) + std::fabs(p1) + std::fabs(p2)) + 0x1p-1060);
-  }
-  int sr() const { return dot(s, r, ss, rr); }
-  int tr() const { return dot(t, r, tt, rr); }
-  // sigma = rr rho^2 - |c|^2, c = s x r, with the error of c bounded component by component
-  // (the bound of a monomial expansion, 13u rr (rho^2 + 2 ss), grows like |s|^2 and decides
-  // nothing at range or near tangency). Each c_k = p - q, p = s_i r_j, q = s_j r_i, carries 4
-  // factors (two leaves, the product, the difference): |c~_k - c_k| <= e_k = gamma_4 m_k,
-  // m_k = |p| + |q| (exact; the computed ones are within 1 + 2u of it). Then
-  //   |sum c~_k^2 - sum c_k^2| <= sum e_k (2 |c~_k| + e_k),
-  // the computed cc adds gamma_3 cc (a square and two sums), rr rho^2 carries 7 factors (a
-  // leaf twice in each square, the square, two sums, rho^2, the product) and the final
-  // difference one more on each side:
-  //   |P~ - P| <= 9u rr rho2 + 5u (sum m_k (2 |c~_k| + 5u m_k) + cc)
-  // (9u > gamma_8, 5u > gamma_4 (1 + 2u) and gamma_3 + u; the bound's own evaluation loses a
-  // few u of itself, inside those margins). Near tangency (|c| ~ rho |r|) it is about
-  // u |r|^2 rho (9 rho + 17 |s|): the line is decided unless it passes within about
-  // u (5 rho + 9 |s|) of tangency, linear in |s| rather than quadratic. Ranges: ss, rr in
-  // [2^-480, 2^480] and rho2 <= 2^480 exclude overflow; an underflowing product (2^-1075)
-  // perturbs c_k absolutely and is multiplied by |c_k| <= 2^481: the absolute 2^-590 covers it.
-  int sigma() const {
-    if (!(ss >= 0x1p-480 && ss <= 0x1p480 && rr >= 0x1p-480 && rr <= 0x1p480 && rho2 <= 0x1p480)) return unknown;
-    double c[3], dev = 0, cc = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double p = s[i] * r[j], q = s[j] * r[i];
-      c[k] = p - q;
-      const double m = std::fabs(p) + std::fabs(q);
-      dev += m * (2 * std::fabs(c[k]) + (5 * u) * m);
-      cc += c[k] * c[k];
-    }
-    const double rrr = rr * rho2;
-    return fsign(rrr - cc, (9 * u) * rrr + (5 * u) * (dev + cc) + 0x1p-590);
-  }
-};
+// The filter (SphereFilter) and the two algorithms' logic over signs: oracle/sphere_filter.hpp.
 
 // Exact signs of the same polynomials (inputs already scaled into stage 2's range).
 struct SphereExact {
@@ -522,39 +453,6 @@ struct SphereStaged {
   int tr() const { const int s = f.tr(); return s != unknown ? s : x.tr(); }
   int sigma() const { const int s = f.sigma(); return s != unknown ? s : x.sigma(); }
 };
-
-// Algorithm 3.1's decision (book::hit), over filtered or exact signs.
-template <class P>
-int hit_sphere_logic(const P& p, bool bounded) {
-  if (p.rzero) return le0(p.ss_rho2());
-  const int sg = p.sigma();
-  if (sg == unknown) return unknown;
-  if (sg < 0) return 0;
-  int ahead = le0(p.sr());  // lambda_2 >= 0
-  if (ahead != 1) {
-    const int in = le0(p.ss_rho2());
-    ahead = in == 1 ? 1 : (ahead == 0 && in == 0 ? 0 : unknown);
-  }
-  if (!bounded || ahead == 0) return ahead;
-  int before = ge0(p.tr());  // lambda_1 <= 1
-  if (before != 1) {
-    const int in = le0(p.tt_rho2());
-    before = in == 1 ? 1 : (before == 0 && in == 0 ? 0 : unknown);
-  }
-  if (before == 0) return 0;
-  return ahead == 1 && before == 1 ? 1 : unknown;
-}
-// Algorithm 3.2's decision (book::intersect(Segment, Sphere)).
-template <class P>
-int segment_sphere_logic(const P& p) {
-  const int sr = p.sr();
-  if (sr == unknown) return unknown;
-  if (sr >= 0) return le0(p.ss_rho2());  // delta <= 0: s is closest
-  const int tr = p.tr();
-  if (tr == unknown) return unknown;
-  if (tr <= 0) return le0(p.tt_rho2());  // delta >= |r|^2: t is closest
-  return ge0(p.sigma());
-}
 
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
   return hit_sphere_logic(SphereFilter(seg.source, seg.target, sp, true), true);

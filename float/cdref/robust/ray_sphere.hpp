@@ -141,7 +141,11 @@
 // but wrong never. (Those float figures are of the formulation at F = float, on pairs of
 // floats; float now runs the double version: 0.05% and 0.09% uncertain for the ray and segment
 // casts, `cdref campaign --impl robust-float --n 300 --seed 3`, 2026-11-24.)
-// The filter first (cast_filter: hit() and decide() try it before the double words). The same
+// The filter first (cast_filter: hit() and decide() try it before the double words). At double
+// the oracle's first stage runs before it (oracle/sphere_filter.hpp: sigma = |r|^2 rho^2 -
+// |s x r|^2 with its error bounded component by component, no division; its band near
+// tangency is about u (5 rho + 9 |s|), within its own range tests), and this one only where
+// that leaves the case open. The same
 // formula on the stable tier's arithmetic in F, each quantity with a bound that covers the
 // rounding of the inputs' differences (s_i = fl(source_i - centre_i) off by u |s_i|, for a
 // segment r_i = fl(t_i - source_i) off by u |r_i|) and of its own evaluation:
@@ -182,6 +186,8 @@
 #include <cmath>
 
 #include <limits>
+
+#include <cdref/oracle/sphere_filter.hpp>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -564,7 +570,7 @@ Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<
 // arithmetic's signs and their bounds, 0 where it is not. `to` is the target (bounded: a
 // segment) or the direction (a ray).
 template <class F>
-int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, bool bounded) {
+int cast_filter_own(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, bool bounded) {
   using std::fabs;
   constexpr F u = unit_roundoff<F>();
   constexpr F eta = std::numeric_limits<F>::denorm_min();  // constexpr: no run-time conversion
@@ -619,6 +625,18 @@ int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, boo
   yes &= int(D > ED);
   no |= int(D < -ED);
   return yes - no;  // (never both: yes needs every conjunct certainly true)
+}
+
+// The filter every entry point takes (header): at double the oracle's first stage, then the
+// one above where that leaves the case open; at other types the one above.
+template <class F>
+int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, bool bounded) {
+  if constexpr (std::is_same_v<F, double>) {
+    const int o = oracle::staged::sphere_cast_filter(from, to, sp, bounded);
+    if (o != oracle::staged::unknown) [[likely]]
+      return o ? 1 : -1;
+  }
+  return cast_filter_own(from, to, sp, bounded);
 }
 
 }  // namespace detail
