@@ -729,7 +729,7 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 // wrong, the same message as before) and then all the stages, out of line.
 inline bool signs_valid(const Sphere<double>& s) { return s.radius >= 0; }
 inline bool signs_valid(const Box<double>& b) {
-  return (b.extent[0] >= 0) & (b.extent[1] >= 0) & (b.extent[2] >= 0);
+  return b.extent[0] >= 0 && b.extent[1] >= 0 && b.extent[2] >= 0;
 }
 inline bool signs_valid(const Segment<double>&) { return true; }
 inline bool signs_valid(const Ray<double>&) { return true; }  // a zero direction: sigma's range test

@@ -163,8 +163,8 @@ namespace detail {
 template <class F>
 bool sphere_box_unseen_valid(const Sphere<F>& sp, const Box<F>& box) {
   constexpr F big = std::numeric_limits<F>::max();
-  return (sp.radius >= F(0)) & (box.extent[0] >= F(0)) & (box.extent[0] <= big) & (box.extent[1] >= F(0)) &
-         (box.extent[1] <= big) & (box.extent[2] >= F(0)) & (box.extent[2] <= big);
+  return sp.radius >= F(0) && box.extent[0] >= F(0) && box.extent[0] <= big && box.extent[1] >= F(0) &&
+         box.extent[1] <= big && box.extent[2] >= F(0) && box.extent[2] <= big;
 }
 }  // namespace detail
 

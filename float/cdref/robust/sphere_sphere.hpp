@@ -271,7 +271,7 @@ template <class F>
 template <class F>
 bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
   if constexpr (!std::is_same_v<F, float>)
-    if ((a.radius >= F(0)) & (b.radius >= F(0)))
+    if (a.radius >= F(0) && b.radius >= F(0))
       if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
         return f < 0;
   return intersect_checked(a, b);
@@ -291,7 +291,7 @@ template <class F>
 template <class F>
 Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
   if constexpr (!std::is_same_v<F, float>)
-    if ((a.radius >= F(0)) & (b.radius >= F(0)))
+    if (a.radius >= F(0) && b.radius >= F(0))
       if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
         return Decision{f < 0, true};
   return decide_checked(a, b);
