@@ -9,6 +9,7 @@
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/enter.hpp>
+#include <cdref/robust/box_box.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -390,8 +391,8 @@ TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][
 TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-classify][errors]") {
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   const double big = std::numeric_limits<double>::max();
-  // slots: 0-2 shot source (sphere A centre), 3-5 target or direction (A radius at 3), 6-8
-  // sphere or box centre, 9 radius (9-11 the box's extents)
+  // slots: 0-2 shot source (sphere A's or box A's centre), 3-5 target or direction (A's radius
+  // at 3, box A's extents), 6-8 sphere or box centre, 9 radius (9-11 the box's extents)
   struct Base {
     double x[12];
   };
@@ -413,13 +414,14 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
         const Segment<double> seg{p, q};
         const Ray<double> ray{p, q};
         const Sphere<double> sp{c, x[9]}, spA{p, x[3]};
-        const Box<double> box{c, h};
+        const Box<double> box{c, h}, boxA{p, q};
         CAPTURE(slot, v, base.x[0], base.x[3]);
         // what the book's checks say, in the order they run
         const std::string seg_sp = msg([&] { check(seg, "segment"), check(sp, "sphere"); });
         const std::string ray_sp = msg([&] { check(ray, "ray"), check(sp, "sphere"); });
         const std::string sp_sp = msg([&] { check(spA, "sphere A"), check(sp, "sphere B"); });
         const std::string sp_box = msg([&] { check(spA, "sphere"), check(box, "box"); });
+        const std::string box_box = msg([&] { check(boxA, "box A"), check(box, "box B"); });
         Stage st = Stage::rational;
         CHECK(msg([&] { oracle::classify(seg, sp, &st); }) == seg_sp);
         decided_by_filter += st == Stage::filter;
@@ -439,6 +441,10 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
         CHECK(msg([&] { robust::intersect(spA, sp); }) == sp_sp);
         CHECK(msg([&] { robust::decide(spA, box); }) == sp_box);
         CHECK(msg([&] { robust::intersect(spA, box); }) == sp_box);
+        CHECK(msg([&] { oracle::classify(boxA, box); }) == box_box);
+        CHECK(msg([&] { robust::intersect(boxA, box); }) == box_box);
+        CHECK(msg([&] { robust::decide(boxA, box); }) == box_box);
+        if (box_box == "no exception") CHECK(robust::intersect(boxA, box) == oracle::classify(boxA, box));
         refused += seg_sp != "no exception";
         // where the inputs are valid, the answers are the oracle's (the filter's own soundness:
         // the campaign and fuzz tests)

@@ -709,8 +709,8 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 }
 
 // ---- The input checks folded into the filter: sphere-sphere, the sphere casts, Algorithm
-// 3.2, sphere-box ----
-// For these four filters a valid input pays the filter alone: the checks (a branch per vector)
+// 3.2, sphere-box, box-box ----
+// For these five filters a valid input pays the filter alone: the checks (a branch per vector)
 // cost as much as the filter's arithmetic on sphere-sphere and half of it on the casts. Sound
 // because each of them decides only where its range tests passed, and those tests fail on
 // every infinity or NaN among the inputs (an infinite or NaN operand makes the tested sum
@@ -722,7 +722,10 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 //                   segment whose target equals its source, ss_rho2's (source, centre, radius);
 //   Algorithm 3.2   sr's test on |s|^2 + |r|^2 first (source, centre, target), then ss_rho2's,
 //                   tt_rho2's or sigma's, each of which bounds rho^2 too;
-//   sphere-box      m = sum (|c_i - b_i| + h_i)^2 + rho^2: both centres, the extents, the radius.
+//   sphere-box      m = sum (|c_i - b_i| + h_i)^2 + rho^2: both centres, the extents, the radius;
+//   box-box         per axis m = |cA - cB| + eA + eB in range, or 0 (with eA, eB >= 0 both
+//                   extents and the difference are then 0, and a difference of two infinities
+//                   is NaN): both centres and both extents.
 // What no range test sees, a negative radius or extent (its square or its sum with |c_i| can be
 // in range), is tested before the filter (a NaN fails that test too). Every input the filter
 // leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
@@ -740,7 +743,7 @@ template <class A, class B, class... Tag>
   check(b, nb);
   return run(used, a, b, tag...);
 }
-// The classification with the checks after the filter (for the four pairs above only).
+// The classification with the checks after the filter (for the five pairs above only).
 template <class A, class B, class... Tag>
 bool filter_first(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag) {
   if (signs_valid(a) && signs_valid(b)) {
@@ -770,9 +773,7 @@ inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<dou
   return staged::filter_first(used, seg, "segment", sp, "sphere", staged::alg32{});
 }
 inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
-  check(a, "box A");
-  check(b, "box B");
-  return staged::run(used, a, b);
+  return staged::filter_first(used, a, "box A", b, "box B");
 }
 inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
   check(seg, "segment");

@@ -29,6 +29,7 @@
 #include <cdref/book/box_box.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
+#include <limits>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -55,23 +56,34 @@ bool abs_diff_at_most_sum(F a, F b, F c, F d) {
 }  // namespace detail
 
 template <class F>
-bool intersect(const Box<F>& a, const Box<F>& b) {
+[[gnu::noinline]] bool intersect_checked(const Box<F>& a, const Box<F>& b) {
   check(a, "box A");
   check(b, "box B");
-  // Where no axis has |dh| = eh, monotone rounding decides every axis from dh and eh alone
-  // (an infinite side included): the three answers combined without branches. A tie on any
-  // axis takes the exact comparison above on every axis.
-  bool all = true, tie = false;
+  for (int i = 0; i < 3; ++i)
+    if (!detail::abs_diff_at_most_sum(a.center[i], b.center[i], a.extent[i], b.extent[i])) return false;
+  return true;
+}
+
+// Where no axis has |dh| = eh, monotone rounding decides every axis from dh and eh alone: the
+// three answers combined without branches, and the input checks folded into the same loop (a
+// valid input pays no separate pass over its coordinates): |dh| + eh is finite only where both
+// centres' coordinates and both extents on that axis are (an infinity or a NaN makes it
+// infinite or NaN), and the extents' signs are tested beside it. A tie on any axis, a sum that
+// overflows and every bad input take the checks (their messages) and the exact comparison
+// above on every axis, out of line.
+template <class F>
+bool intersect(const Box<F>& a, const Box<F>& b) {
+  constexpr F big = std::numeric_limits<F>::max();
+  bool all = true, tie = false, valid = true;
   for (int i = 0; i < 3; ++i) {
     const F ad = std::fabs(F(a.center[i] - b.center[i])), eh = a.extent[i] + b.extent[i];
     all &= ad < eh;
     tie |= ad == eh;
+    valid &= int(F(ad + eh) <= big) & int(a.extent[i] >= F(0)) & int(b.extent[i] >= F(0));
   }
-  if (!tie) [[likely]]
+  if (valid && !tie) [[likely]]
     return all;
-  for (int i = 0; i < 3; ++i)
-    if (!detail::abs_diff_at_most_sum(a.center[i], b.center[i], a.extent[i], b.extent[i])) return false;
-  return true;
+  return intersect_checked(a, b);
 }
 
 // Exact (see above): always certain.
