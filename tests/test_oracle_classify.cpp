@@ -251,9 +251,15 @@ bool same_double(double a, double b) { return a == b && std::signbit(a) == std::
 template <class Shot, class Solid>
 std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
   namespace ed = oracle::enter_detail;
-  if constexpr (std::is_same_v<Solid, Sphere<double>>)
-    return ed::sphere_double(x, y, stage);
-  else if constexpr (std::is_same_v<Solid, Box<double>>)
+  if constexpr (std::is_same_v<Solid, Sphere<double>>) {
+    const std::optional<double> v = ed::sphere_double(x, y, stage);
+    if (stage == 1 && ed::cpu_fma()) {  // the Newton step with fused products: alike, bit for bit
+      const std::optional<double> f = ed::fused_double(x, y);
+      REQUIRE(f.has_value() == v.has_value());
+      if (v) REQUIRE(same_double(*f, *v));
+    }
+    return v;
+  } else if constexpr (std::is_same_v<Solid, Box<double>>)
     return stage == 1 ? ed::box_double(x, y) : std::nullopt;
   else {
     if (stage != 1) return std::nullopt;

@@ -169,21 +169,13 @@ struct Word {
   double e;
 };
 
-// The exact product of two doubles as a pair, two ways with the same result (every product
-// here has its operands in [2^-600, 2^600] or is zero, so both are exact): Dekker's over
-// Veltkamp's split (17 flops, any CPU) and one fused multiply-add. A build without -mfma has
-// std::fma as a library call, so the oriented-box and triangle paths, about 60 and 20 products
-// a call, are compiled twice and the fused copy is taken where the CPU has the instruction
-// (enter_fused below).
-struct SplitProduct {
-  static Pair<double> prod(double a, double b) { return robust::two_prod_split(a, b); }
-};
-struct FusedProduct {
-  static Pair<double> prod(double a, double b) {
-    const double p = a * b;
-    return {p, __builtin_fma(a, b, -p)};
-  }
-};
+// The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
+// every product here has its operands in [2^-600, 2^600] or is zero, so both give the same
+// pair). A build without -mfma has std::fma as a library call, so the sphere's Newton step and
+// the oriented-box and triangle paths (about 7, 60 and 20 products a call) are compiled twice
+// and the fused copy is taken where the CPU has the instruction (fused_double below).
+using robust::FusedProduct;
+using robust::SplitProduct;
 
 // a_j b_k - a_k b_j for exact pairs: the products of the high parts exact, the four cross
 // terms and the lows in double (7 terms, 6 additions, 4 rounded products: 8u of their
@@ -300,6 +292,7 @@ inline double largest(const Pair<double> (&a)[3]) {
 
 // The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
 // certainly), 1 with `out` set, or 2 when it cannot tell (the exact path then answers).
+template <class Mul = SplitProduct>
 inline int sphere_step(const Pair<double> (&s)[3], const Pair<double> (&r)[3], double rho, Bounded2& out) {
   using std::fabs;
   constexpr double u = uu, big = 0x1p300;
@@ -326,13 +319,13 @@ inline int sphere_step(const Pair<double> (&s)[3], const Pair<double> (&r)[3], d
   // 3. the residual at z0
   Pair<double> w[3];
   double ew[3], G = 0, W = 0, lows = 0;
-  affine_words(s, z0, r, w, ew);
+  affine_words<Mul>(s, z0, r, w, ew);
   for (int i = 0; i < 3; ++i) {
     G += fabs(r[i].hi) * fabs(w[i].hi);
     W += fabs(w[i].hi) * ew[i];
     lows += fabs(r[i].hi) * (fabs(w[i].lo) + 2 * ew[i]);
   }
-  const Pair<double> negP = robust::detail::rho2_minus_norm2(rho, w);
+  const Pair<double> negP = robust::detail::rho2_minus_norm2<double, Mul>(rho, w);
   const double P0 = -(negP.hi + negP.lo);
   const double W2 = w[0].hi * w[0].hi + w[1].hi * w[1].hi + w[2].hi * w[2].hi;
   const double eP = 56 * u * u * (rho2 + W2) * (1 + 8 * u) + 2.01 * W + u * fabs(P0) + 64 * eta;
@@ -454,7 +447,60 @@ std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int
   Pair<double> s[3], r[3];
   shot_pairs(x, sp.center, s, r);
   Bounded2 z;
-  return rounded(stage == 1 ? sphere_step(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
+  return rounded(stage == 1 ? sphere_step<SplitProduct>(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
+}
+// The Newton step alone, with the products of Mul.
+template <class Mul, class Shot>
+std::optional<double> sphere_first(const Shot& x, const Sphere<double>& sp) {
+  Pair<double> s[3], r[3];
+  shot_pairs(x, sp.center, s, r);
+  Bounded2 z;
+  return rounded(sphere_step<Mul>(s, r, sp.radius, z), z);
+}
+
+// (the triangle's and the oriented box's double paths: below)
+template <class Mul = SplitProduct, class Shot>
+std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri);
+template <class Mul = SplitProduct, class Shot>
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b);
+
+// The first double path of a solid, with the products of Mul.
+template <class Mul, class Shot, class Solid>
+std::optional<double> first_double(const Shot& x, const Solid& y) {
+  if constexpr (std::is_same_v<Solid, Sphere<double>>)
+    return sphere_first<Mul>(x, y);
+  else if constexpr (std::is_same_v<Solid, Triangle<double>>)
+    return triangle_double<Mul>(x, y);
+  else
+    return obb_double<Mul>(x, y);
+}
+
+// The double path with fused products where the CPU has them (x86-64: a copy compiled for the
+// FMA extension, every call inside it inlined, chosen at run time; a build with -mfma or on
+// another architecture: the split copy, or std::fma as the compiler provides it).
+#if (defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))) && !defined(__FMA__)
+template <class Shot, class Solid>
+[[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y) {
+  return first_double<FusedProduct>(x, y);
+}
+inline bool cpu_fma() { return __builtin_cpu_supports("fma"); }
+#else
+template <class Shot, class Solid>
+std::optional<double> fused_double(const Shot& x, const Solid& y) {
+  return first_double<FusedProduct>(x, y);
+}
+constexpr bool cpu_fma() {
+#ifdef __FMA__
+  return true;
+#else
+  return false;
+#endif
+}
+#endif
+template <class Shot, class Solid>
+std::optional<double> solid_double(const Shot& x, const Solid& y) {
+  if (cpu_fma()) return fused_double(x, y);
+  return first_double<SplitProduct>(x, y);
 }
 
 // The classification's answer, then on a hit the double path (a value, or nothing when it
@@ -478,10 +524,10 @@ Entry entry_of(bool hit, const Shot& x, const Solid& y, bool* exact_used, Path d
 template <class Shot>
 Entry sphere_enter(const Shot& x, const char* name, const Sphere<double>& sp, bool* exact_used) {
   return entry_of(staged::filter_first(nullptr, x, name, sp, "sphere"), x, sp, exact_used, [&] {
+    if (const auto v = solid_double(x, sp)) return v;  // the Newton step
     Pair<double> s[3], r[3];
     shot_pairs(x, sp.center, s, r);
     Bounded2 z;
-    if (const auto v = rounded(sphere_step(s, r, sp.radius, z), z)) return v;
     return rounded(sphere_words(x, sp, s, r, z), z);
   });
 }
@@ -543,7 +589,7 @@ Entry box_enter(const Shot& x, const Box<double>& box, bool* exact_used) {
 }
 
 // The triangle's double path on a hit (header, "A triangle"): the value, or nothing.
-template <class Mul = SplitProduct, class Shot>
+template <class Mul, class Shot>
 std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri) {
   if (!robust::in_certified_range(x, tri)) return std::nullopt;
   const Vec3<double>& v0 = tri.vertex[0];
@@ -561,7 +607,7 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
 }
 
 // The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
-template <class Mul = SplitProduct, class Shot>
+template <class Mul, class Shot>
 std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
   using std::fabs;
   if (!robust::in_certified_range(x, b)) return std::nullopt;
@@ -611,43 +657,6 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
     best = std::max(best, *v);
   }
   return best;
-}
-
-// The double path with fused products where the CPU has them (x86-64: a copy compiled for the
-// FMA extension, every call inside it inlined, chosen at run time; a build with -mfma or on
-// another architecture: the split copy, or std::fma as the compiler provides it).
-#if (defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))) && !defined(__FMA__)
-template <class Shot, class Solid>
-[[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y) {
-  if constexpr (std::is_same_v<Solid, Triangle<double>>)
-    return triangle_double<FusedProduct>(x, y);
-  else
-    return obb_double<FusedProduct>(x, y);
-}
-inline bool cpu_fma() { return __builtin_cpu_supports("fma"); }
-#else
-template <class Shot, class Solid>
-std::optional<double> fused_double(const Shot& x, const Solid& y) {
-  if constexpr (std::is_same_v<Solid, Triangle<double>>)
-    return triangle_double<FusedProduct>(x, y);
-  else
-    return obb_double<FusedProduct>(x, y);
-}
-constexpr bool cpu_fma() {
-#ifdef __FMA__
-  return true;
-#else
-  return false;
-#endif
-}
-#endif
-template <class Shot, class Solid>
-std::optional<double> solid_double(const Shot& x, const Solid& y) {
-  if (cpu_fma()) return fused_double(x, y);
-  if constexpr (std::is_same_v<Solid, Triangle<double>>)
-    return triangle_double<SplitProduct>(x, y);
-  else
-    return obb_double<SplitProduct>(x, y);
 }
 
 template <class Shot>

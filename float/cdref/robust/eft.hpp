@@ -104,6 +104,20 @@ Pair<F> two_prod_split(F a, F b) {
   return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
 }
 
+// The exact product as a policy, two ways with the same pair wherever the product is exact
+// (operands far from overflow and from the subnormal range): Dekker's over Veltkamp's split
+// (17 flops, inline on any CPU) or one fused multiply-add (a library call in a build without
+// -mfma; an instruction in code compiled for the FMA extension: oracle/enter.hpp takes such a
+// copy where the CPU has it).
+struct SplitProduct {
+  template <class F>
+  static Pair<F> prod(F a, F b) { return two_prod_split(a, b); }
+};
+struct FusedProduct {
+  template <class F>
+  static Pair<F> prod(F a, F b) { return two_prod(a, b); }
+};
+
 template <class F>
 Pair<F> mul_pair(const Pair<F>& x, const Pair<F>& y) {
   const Pair<F> p = two_prod_split(x.hi, y.hi);

@@ -256,10 +256,10 @@ Pair<F> c_dw(const LocalDW<F>& L) {
 // rho^2 - |l|^2 for double words l_i: the exact squares of rho and the high parts summed by a
 // two_sum chain, their lows, the chain's errors and 2 lh.ll in F (item A: within 55.5 u^2
 // (rho^2 + |l|^2), the l.l lows dropped).
-template <class F>
+template <class F, class Mul = SplitProduct>
 Pair<F> rho2_minus_norm2(F rho, const Pair<F> (&l)[3]) {
-  const Pair<F> pr = two_prod_split(rho, rho), q0 = two_prod_split(l[0].hi, l[0].hi),
-                q1 = two_prod_split(l[1].hi, l[1].hi), q2 = two_prod_split(l[2].hi, l[2].hi);
+  const Pair<F> pr = Mul::prod(rho, rho), q0 = Mul::prod(l[0].hi, l[0].hi), q1 = Mul::prod(l[1].hi, l[1].hi),
+                q2 = Mul::prod(l[2].hi, l[2].hi);
   const Pair<F> dh1 = two_sum(pr.hi, F(-q0.hi)), dh2 = two_sum(dh1.hi, F(-q1.hi)), dh3 = two_sum(dh2.hi, F(-q2.hi));
   const F dx = l[0].hi * l[0].lo + l[1].hi * l[1].lo + l[2].hi * l[2].lo;
   const F dlo = F(F(pr.lo - q0.lo) - F(q1.lo + q2.lo)) + F(F(dh1.lo + dh2.lo) + dh3.lo) - F(2) * dx;
