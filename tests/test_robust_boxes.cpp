@@ -551,7 +551,7 @@ TEMPLATE_TEST_CASE("robust ray-box decide() beyond the exact range", "[robust-bo
 // The stable tier of the box casts (float/cdref/stable/ray_box.hpp): the slab test in the
 // box's frame, plain F arithmetic. Its header says where it can misclassify: a pair of the
 // decisive values (0 or a near parameter against 1 or a far parameter) within the sum of their
-// error bounds E(t) = 3u |t| + u |f_i| / |r_i| (f = source - centre), or, for a direction
+// error bounds E(t) = 4u |t| + u |f_i| / |r_i| (f = source - centre), or, for a direction
 // component 0, the source within u |f_i| of that plane. On generated cases of every family, every
 // misclassified case lies in one of those bands, computed exactly (Gmpq); the cast's
 // classification equals hit().
@@ -614,7 +614,7 @@ TEMPLATE_TEST_CASE("stable box casts: every misclassification lies in the header
             const Q t_lo = (-h - f) / r[k], t_hi = (h - f) / r[k];
             const bool down = r[k] < Q(0);
             const long double ef = u * mag(f) / mag(r[k]);
-            auto E = [&](const Q& t) { return 1.05L * (3 * u * mag(t) + ef); };
+            auto E = [&](const Q& t) { return 1.05L * (4 * u * mag(t) + ef); };
             as.push_back(down ? std::pair{t_hi, E(t_hi)} : std::pair{t_lo, E(t_lo)});
             bs.push_back(down ? std::pair{t_lo, E(t_lo)} : std::pair{t_hi, E(t_hi)});
           }

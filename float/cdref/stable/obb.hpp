@@ -19,8 +19,9 @@
 // Error bound of the cast (first order in u, the unit roundoff of F). Moving into the frame
 // rounds s - c once (u |s - c|) and each dot product with an axis (3u |a_i| |s - c| with
 // |a_i| = 1 to rounding), so f_i is off by about 4u |s - c| and r'_i by 3u |r|; the slab's
-// crossing parameters (-+h_i - f_i) / r'_i are then off by
-//     3u |t| + 4u |s - c| / |r'_i| + 3u |t| |r| / |r'_i|,
+// crossing parameters (-+h_i - f_i) / r'_i (a product by the reciprocal: stable/ray_box.hpp)
+// are then off by
+//     4u |t| + 4u |s - c| / |r'_i| + 3u |t| |r| / |r'_i|,
 // and a shot is decided right outside the bands where two of them (or 0, or 1 for a segment)
 // are within the sum of their errors. Against the exact parallelepiped (the truth: axes
 // given as floats are orthonormal only to rounding) the transpose is not the inverse: the

@@ -1,16 +1,18 @@
 // cdref/stable/ray_box.hpp - ray and segment casts on an axis-aligned box as careful float code
 // writes them: the slab test of Kay and Kajiya in the box's frame (as in pbrt-v4's
-// Bounds3::IntersectP, less its reciprocal; Williams, Barrus, Morley and Shirley, "An efficient
+// Bounds3::IntersectP, with its reciprocal of the direction; Williams, Barrus, Morley and Shirley, "An efficient
 // and robust ray-box intersection algorithm", 2005): plain F arithmetic, no certificate. Same
 // signatures and results as cdref::book (hit, cast; a segment s->t or a ray s + lambda d).
 //
 // Formulation (f = source - centre, each component rounded once; r the direction: t - s for
 // a segment, d for a ray; h the extent):
-//  1. Per axis i the crossing parameters of the two planes, t_lo = (-h_i - f_i) / r_i and
-//     t_hi = (h_i - f_i) / r_i; the near one is t_lo when r_i is positive (sign bit clear,
-//     +0 included) and t_hi otherwise. With r_i = 0 they are infinities of the right sign
+//  1. Per axis i the crossing parameters of the two planes, t_lo = (-h_i - f_i) v_i and
+//     t_hi = (h_i - f_i) v_i with v_i = 1 / r_i rounded once (the quotients themselves where
+//     v_i overflows, |r_i| below 2^-1024 at double); the near one is t_lo when r_i is positive
+//     (sign bit clear, +0 included) and t_hi otherwise. With r_i = 0, v_i is an infinity of
+//     r_i's sign and they are infinities of the right sign
 //     (the source outside the slab: +inf near or -inf far, a miss; inside: -inf near and
-//     +inf far, no constraint), and NaN (0 / 0) when the source lies on a plane: that plane
+//     +inf far, no constraint), and NaN (0 inf) when the source lies on a plane: that plane
 //     constrains nothing, as for the book's closed box (every comparison below is written
 //     so that a NaN loses).
 //  2. lambda_enter = max(0, near_i), lambda_exit = min(1 (segment) or +inf (ray), far_i);
@@ -25,23 +27,24 @@
 // fractions, cross-multiplied: the products overflow and underflow where the parameters do
 // not (book-double's predicate is wrong on 6,843 of the magnitude family's 30,000 ray casts,
 // `cdref campaign --query ray-box-cast --family magnitude --impl book-double`), and its outcode
-// branches cost time. Here each parameter is one quotient and the test is branch-free. Why
-// division and not pbrt's precomputed 1 / d: the reciprocal overflows for subnormal
-// directions (|d_i| < 2^-1024 at double) and adds a rounding; one query divides six times, a
-// traversal of many boxes would precompute it. Measured (`cdref_bench
+// branches cost time. Here each parameter is one product by the direction's reciprocal (three
+// divisions a query instead of six; a traversal of many boxes would precompute them) and the
+// test is branch-free but for the reciprocal's overflow (subnormal directions), which adds
+// one rounding to each parameter. Measured (`cdref_bench
 // --benchmark_filter='box-cast/uniform-0/(bare|stable-double-unchecked)'`, g++ 12 Release, this
-// 2-core machine, 2026-11-23, medians of 3): the unchecked classification 1.22x the book's
-// unchecked one on the segment and 0.95x on the ray; with pbrt's reciprocal (and a division
-// where it overflows) 1.02x and 0.76x. Why f = s - c first rather than pbrt's corners
+// 2-core machine, 2026-11-23, medians of 3): the unchecked classification with six quotients
+// 1.22x the book's unchecked one on the segment and 0.95x on the ray; with the reciprocal 1.02x
+// and 0.76x (the report of 52dcb4e had the quotients' segment cast at 2.17x its `bare`). Why f = s - c first rather than pbrt's corners
 // c -+ h: the corner's rounding, u |c_i|, does not shrink as the source nears the box, while
 // the rounding of f is u |f_i| <= u (|h_i -+ f_i| + h_i), of the size of the numerator and
 // the box (and s - c is exact when s_i and c_i are within a factor 2: a source on a face plane
 // of a box near it stays on it).
 //
 // Error bound (first order in u, the unit roundoff of F). Each computed parameter is
-//     t^ = (-+h_i - f_i (1 + d0))(1 + d1) / (r_i (1 + d2)) (1 + d3),
-// d2 = 0 for a ray (r = d is an input), so, with f_i = s_i - c_i exactly,
-//     |t^ - t| <= E(t) = 3u |t| + u |f_i| / |r_i|   (<= 4u |t| + u h_i / |r_i|).
+//     t^ = (-+h_i - f_i (1 + d0))(1 + d1) (1 + d3) (1 + d4) / (r_i (1 + d2)),
+// d2 = 0 for a ray (r = d is an input), d3 the reciprocal's rounding and d4 the product's
+// (where the quotient is taken, one of them), so, with f_i = s_i - c_i exactly,
+//     |t^ - t| <= E(t) = 4u |t| + u |f_i| / |r_i|   (<= 5u |t| + u h_i / |r_i|).
 // The exact answer is "every a in {0, near_i} is <= every b in {1 (segment), far_j}", and the
 // computed one is the same test on t^: they differ only if some pair (a, b) is in the wrong
 // order, that is |a - b| <= E(a) + E(b). For r_i = 0 only the rounding of f_i can move the
@@ -67,7 +70,7 @@
 // through an edge). cdref's stable tier reports its best estimate instead, whose error is the
 // band above, and the campaign measures both sides (false hits and false misses).
 //
-// Outputs: lambda_enter has relative error 3u + u |f_i| / |h_i -+ f_i|: a few ulps unless the
+// Outputs: lambda_enter has relative error 4u + u |f_i| / |h_i -+ f_i|: a few ulps unless the
 // source is near the entering plane relative to its distance from the centre. The point's face
 // coordinate is correctly rounded; the others carry lambda's error times |r_j| plus two
 // roundings.
@@ -75,6 +78,7 @@
 
 #include <cdref/book/common.hpp>
 #include <cmath>
+#include <limits>
 
 namespace cdref::stable {
 
@@ -92,7 +96,16 @@ template <class F>
 Slab<F> slab(const Vec3<F>& f, const Vec3<F>& r, const Vec3<F>& h, bool bounded) {
   Slab<F> k{F(0), bounded ? F(1) : std::numeric_limits<F>::infinity(), -1, false};
   for (int i = 0; i < 3; ++i) {
-    const F t_lo = (-h[i] - f[i]) / r[i], t_hi = (h[i] - f[i]) / r[i];
+    // one reciprocal a component (pbrt's), the quotients where it overflows (r_i subnormal)
+    const F inv = F(1) / r[i];
+    F t_lo, t_hi;
+    if (std::fabs(inv) <= std::numeric_limits<F>::max() || r[i] == F(0)) [[likely]] {
+      t_lo = (-h[i] - f[i]) * inv;
+      t_hi = (h[i] - f[i]) * inv;
+    } else {
+      t_lo = (-h[i] - f[i]) / r[i];
+      t_hi = (h[i] - f[i]) / r[i];
+    }
     const bool down = std::signbit(r[i]);
     const F near = down ? t_hi : t_lo, far = down ? t_lo : t_hi;
     if (near > k.enter) k.enter = near, k.face = 2 * i + (down ? 1 : 0);
