@@ -74,6 +74,16 @@ for q in queries:
     # non-finite inputs, which must be refused
     with open(os.path.join(d, "nan.bin"), "wb") as f:
         f.write(b"\xff" + struct.pack("<d", float("nan")) + cases[0][2:])
+    # the last input negative (a radius or an extent for the Section 3.1-3.2 queries), or
+    # infinite, and an infinity in the middle: the filters that run before the input checks
+    # must leave every one of them to the checks
+    inputs = [cases[0][i:i + 2] for i in range(0, len(cases[0]), 2)]
+    inf, ninf = b"\xff" + struct.pack("<d", float("inf")), b"\xff" + struct.pack("<d", float("-inf"))
+    for name, at, enc in (("negative-last", -1, bytes([0, 0xff])), ("inf-last", -1, inf), ("inf-middle", len(inputs) // 2, ninf)):
+        bad = list(inputs)
+        bad[at] = enc
+        with open(os.path.join(d, f"{name}.bin"), "wb") as f:
+            f.write(b"".join(bad))
 
 d = os.path.join(root, "casefile")
 os.makedirs(d, exist_ok=True)
