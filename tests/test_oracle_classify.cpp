@@ -10,6 +10,7 @@
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/enter.hpp>
 #include <cdref/robust/box_box.hpp>
+#include <cdref/robust/ray_box.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -428,6 +429,8 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
         const std::string sp_sp = msg([&] { check(spA, "sphere A"), check(sp, "sphere B"); });
         const std::string sp_box = msg([&] { check(spA, "sphere"), check(box, "box"); });
         const std::string box_box = msg([&] { check(boxA, "box A"), check(box, "box B"); });
+        const std::string seg_box = msg([&] { check(seg, "segment"), check(box, "box"); });
+        const std::string ray_box = msg([&] { check(ray, "ray"), check(box, "box"); });
         Stage st = Stage::rational;
         CHECK(msg([&] { oracle::classify(seg, sp, &st); }) == seg_sp);
         decided_by_filter += st == Stage::filter;
@@ -451,6 +454,16 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
         CHECK(msg([&] { robust::intersect(boxA, box); }) == box_box);
         CHECK(msg([&] { robust::decide(boxA, box); }) == box_box);
         if (box_box == "no exception") CHECK(robust::intersect(boxA, box) == oracle::classify(boxA, box));
+        CHECK(msg([&] { oracle::classify(seg, box); }) == seg_box);
+        CHECK(msg([&] { oracle::classify(ray, box); }) == ray_box);
+        CHECK(msg([&] { oracle::enter(seg, box); }) == seg_box);
+        CHECK(msg([&] { oracle::enter(ray, box); }) == ray_box);
+        CHECK(msg([&] { robust::decide(seg, box); }) == seg_box);
+        CHECK(msg([&] { robust::hit(ray, box); }) == ray_box);
+        if (ray_box == "no exception") {
+          const robust::Decision d = robust::decide(ray, box);
+          if (d.certain) CHECK(d.value == oracle::classify(ray, box));
+        }
         refused += seg_sp != "no exception";
         // where the inputs are valid, the answers are the oracle's (the filter's own soundness:
         // the campaign and fuzz tests)

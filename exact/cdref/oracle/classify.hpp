@@ -709,8 +709,8 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 }
 
 // ---- The input checks folded into the filter: sphere-sphere, the sphere casts, Algorithm
-// 3.2, sphere-box, box-box ----
-// For these five filters a valid input pays the filter alone: the checks (a branch per vector)
+// 3.2, sphere-box, box-box, the box casts ----
+// For these filters a valid input pays the filter alone: the checks (a branch per vector)
 // cost as much as the filter's arithmetic on sphere-sphere and half of it on the casts. Sound
 // because each of them decides only where its range tests passed, and those tests fail on
 // every infinity or NaN among the inputs (an infinite or NaN operand makes the tested sum
@@ -726,6 +726,11 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 //   box-box         per axis m = |cA - cB| + eA + eB in range, or 0 (with eA, eB >= 0 both
 //                   extents and the difference are then 0, and a difference of two infinities
 //                   is NaN): both centres and both extents.
+//   the box casts   hit_box_logic takes every outcode's sign before it decides anything, and
+//                   outcode_sign refuses |L~| > 2^1000, NaN included: L~ = fl(p_i - c_i) -+ h_i
+//                   at the source and (a segment) at the target cover both points, the centre
+//                   and the extents; a ray's direction only enters through its signs and the
+//                   pairs, so it is tested first (finite, not zero) with the extents' signs.
 // What no range test sees, a negative radius or extent (its square or its sum with |c_i| can be
 // in range), is tested before the filter (a NaN fails that test too). Every input the filter
 // leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
@@ -736,6 +741,14 @@ inline bool signs_valid(const Box<double>& b) {
 }
 inline bool signs_valid(const Segment<double>&) { return true; }
 inline bool signs_valid(const Ray<double>&) { return true; }  // a zero direction: sigma's range test
+template <class A, class B>
+bool unseen_valid(const A& a, const B& b) {
+  return signs_valid(a) && signs_valid(b);
+}
+inline bool unseen_valid(const Ray<double>& r, const Box<double>& b) {  // the direction too
+  const Vec3<double>& d = r.direction;
+  return signs_valid(b) && (d[0] - d[0]) + (d[1] - d[1]) + (d[2] - d[2]) == 0 && (d[0] != 0 || d[1] != 0 || d[2] != 0);
+}
 
 template <class A, class B, class... Tag>
 [[gnu::noinline]] bool checked_run(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag) {
@@ -743,10 +756,10 @@ template <class A, class B, class... Tag>
   check(b, nb);
   return run(used, a, b, tag...);
 }
-// The classification with the checks after the filter (for the five pairs above only).
+// The classification with the checks after the filter (for the pairs above only).
 template <class A, class B, class... Tag>
 bool filter_first(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag) {
-  if (signs_valid(a) && signs_valid(b)) {
+  if (unseen_valid(a, b)) {
     const int r = filter(a, b, tag...);
     if (r != unknown) [[likely]] {
       if (used) *used = Stage::filter;
@@ -776,14 +789,10 @@ inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = n
   return staged::filter_first(used, a, "box A", b, "box B");
 }
 inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
-  check(seg, "segment");
-  check(box, "box");
-  return staged::run(used, seg, box);
+  return staged::filter_first(used, seg, "segment", box, "box");
 }
 inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used = nullptr) {
-  check(ray, "ray");
-  check(box, "box");
-  return staged::run(used, ray, box);
+  return staged::filter_first(used, ray, "ray", box, "box");
 }
 inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
   return staged::filter_first(used, sp, "sphere", box, "box");

@@ -8,12 +8,12 @@
 // every-output path (the fan and polygon casts' row takes the truth's formulation asked for
 // lambda_enter alone: fuzz/cdref/fuzz/spec.hpp, oracle_enter_of).
 //
-// Each call: the input checks (for the sphere casts after the classification's filter, whose
-// range tests refuse what they would: classify.hpp, staged::filter_first); the classification
-// (oracle::classify: filter, double words, expansions, rationals; each query's own stages); on
-// a hit a double path whose error is
-// bounded rigorously, accepted when the exact value cannot lie on the other side of a rounding
-// midpoint (Bounded2::try_rounded); otherwise the truth's formulation at oracle::Bounded2, then
+// Each call: the input checks (for the sphere and box casts after the classification's
+// filter, whose range tests refuse what they would: classify.hpp, staged::filter_first); the
+// classification (oracle::classify: filter, double words, expansions, rationals; each query's
+// own stages); on a hit a double path whose error is bounded rigorously, accepted when the
+// exact value cannot lie on the other side of a rounding midpoint (Bounded2::try_rounded);
+// otherwise the truth's formulation at oracle::Bounded2, then
 // at CGAL::Gmpq.
 //
 // ---- A sphere, first: one Newton step from the stable root, certified a posteriori ---------
@@ -584,8 +584,9 @@ std::optional<double> box_double(const Shot& x, const Box<double>& box) {
 }
 
 template <class Shot>
-Entry box_enter(const Shot& x, const Box<double>& box, bool* exact_used) {
-  return entry_of(staged::run(nullptr, x, box), x, box, exact_used, [&] { return box_double(x, box); });
+Entry box_enter(const Shot& x, const char* name, const Box<double>& box, bool* exact_used) {
+  return entry_of(staged::filter_first(nullptr, x, name, box, "box"), x, box, exact_used,
+                  [&] { return box_double(x, box); });
 }
 
 // The triangle's double path on a hit (header, "A triangle"): the value, or nothing.
@@ -680,14 +681,10 @@ inline Entry enter(const Ray<double>& ray, const Sphere<double>& sp, bool* exact
   return enter_detail::sphere_enter(ray, "ray", sp, exact_used);
 }
 inline Entry enter(const Segment<double>& seg, const Box<double>& box, bool* exact_used = nullptr) {
-  check(seg, "segment");
-  check(box, "box");
-  return enter_detail::box_enter(seg, box, exact_used);
+  return enter_detail::box_enter(seg, "segment", box, exact_used);
 }
 inline Entry enter(const Ray<double>& ray, const Box<double>& box, bool* exact_used = nullptr) {
-  check(ray, "ray");
-  check(box, "box");
-  return enter_detail::box_enter(ray, box, exact_used);
+  return enter_detail::box_enter(ray, "ray", box, exact_used);
 }
 inline Entry enter(const Segment<double>& seg, const Triangle<double>& tri, bool* exact_used = nullptr) {
   check(seg, "segment");

@@ -479,6 +479,16 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
 // pairs in double against static bounds) before the steps above: 1 (a hit), 0 (a miss) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it (decide(), hit() and the cast classify alike).
+// What the first stage's range tests do not see: the extents' signs, a ray's direction
+// (finite, not zero).
+template <class F>
+bool unseen_valid(const Box<F>& box) {
+  return box.extent[0] >= F(0) && box.extent[1] >= F(0) && box.extent[2] >= F(0);
+}
+template <class F>
+bool direction_valid(const Vec3<F>& d) {
+  return F(F(d[0] - d[0]) + F(d[1] - d[1])) + F(d[2] - d[2]) == F(0) && (d[0] != F(0) || d[1] != F(0) || d[2] != F(0));
+}
 template <class F>
 int first_stage(const Segment<F>& seg, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(seg, box);
@@ -519,21 +529,43 @@ Cast<F> cast(const Ray<F>& ray, const Box<F>& box, unsigned w = want_cast) {
 }
 
 template <class F>
-Decision decide(const Segment<F>& seg, const Box<F>& box) {
+[[gnu::noinline]] Decision decide_checked(const Segment<F>& seg, const Box<F>& box) {
   check(seg, "segment");
   check(box, "box");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(seg), detail::widened(box));
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(seg), detail::widened(box));
   if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(seg.source, seg.target, box, true, 0).decision;
 }
+// (at double the first stage before the input checks: its outcodes' range tests refuse every
+// infinity or NaN of the points, the centre and the extents, oracle/classify.hpp; the extents'
+// signs tested first)
+template <class F>
+Decision decide(const Segment<F>& seg, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, double>)
+    if (box_detail::unseen_valid(box))
+      if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) [[likely]]
+        return {f != 0, true};
+  return decide_checked(seg, box);
+}
 
 template <class F>
-Decision decide(const Ray<F>& ray, const Box<F>& box) {
+[[gnu::noinline]] Decision decide_checked(const Ray<F>& ray, const Box<F>& box) {
   check(ray, "ray");
   check(box, "box");
-  if constexpr (std::is_same_v<F, float>) return decide(detail::widened(ray), detail::widened(box));
+  if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(ray), detail::widened(box));
   if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(ray.source, ray.direction, box, false, 0).decision;
+}
+// (at double the first stage before the input checks: its outcodes' range tests refuse every
+// infinity or NaN of the points, the centre and the extents, oracle/classify.hpp; the extents'
+// signs and the direction tested first)
+template <class F>
+Decision decide(const Ray<F>& ray, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, double>)
+    if (box_detail::unseen_valid(box) && box_detail::direction_valid(ray.direction))
+      if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) [[likely]]
+        return {f != 0, true};
+  return decide_checked(ray, box);
 }
 
 // The decision alone (the first stage, else the parameters of step 5; the outputs are not needed).
