@@ -590,24 +590,7 @@ inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
 }
 
 // ======================= sphere-box =======================
-// Filter: with c~ = fl(centre - box centre), x~_i = fl(|c~_i| - h_i), v~_i = max(0, x~_i)
-// (= |v_i| whichever branch: max(0, .) is 1-Lipschitz, so |v~_i - v_i| <= |x~_i - x_i| <=
-// gamma_2 w_i, w_i = |c_i| + h_i, and v~_i, v_i <= w_i (1 + gamma_2)), P = fl(sum v~_i^2 - rho2).
-// |P~ - P| <= sum |v~_i^2 - v_i^2| + gamma_4 (sum v~_i^2 + rho^2)
-//          <= (2 gamma_2 + gamma_4 + O(u^2)) (sum w_i^2 + rho^2) <= 8u (1 + 10u) (...):
-// bound 9u fl(sum w~_i^2 + rho2), w~_i = fl(|c~_i| + h_i).
-inline int filter(const Sphere<double>& sp, const Box<double>& box) {
-  double vv = 0, ww = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double c = std::fabs(sp.center[i] - box.center[i]), h = box.extent[i];
-    const double x = c - h, v = x > 0 ? x : 0.0, w = c + h;
-    vv += v * v;
-    ww += w * w;
-  }
-  const double rho2 = sp.radius * sp.radius, m = ww + rho2;
-  if (!in_range(m)) return unknown;
-  return le0(fsign(vv - rho2, (9 * u) * m));
-}
+// The filter: oracle/sphere_filter.hpp.
 inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
   Sphere<double> sp;
   Box<double> box;

@@ -1,9 +1,9 @@
 // cdref/oracle/sphere_filter.hpp - the first stage of the classification oracle for a segment
-// or a ray cast on a sphere (Algorithm 3.1) and for Algorithm 3.2 (exact/cdref/oracle/
+// or a ray cast on a sphere (Algorithm 3.1), for Algorithm 3.2 and for sphere-box (exact/cdref/oracle/
 // classify.hpp holds the other stages, the polynomials these signs decide and the model of the
 // bounds: u = 2^-53, gamma_K, the range checks). Plain double arithmetic on the query's inputs,
 // so that both the oracle and the robust tier's certified decisions at double
-// (robust/ray_sphere.hpp, robust/segment_sphere.hpp) run it first: where it decides (1 a hit,
+// (robust/ray_sphere.hpp, robust/segment_sphere.hpp, robust/sphere_box.hpp) run it first: where it decides (1 a hit,
 // 0 a miss; `unknown` leaves the case to the next stage), its answer is the book's at an exact
 // type. The logic over signs (hit_sphere_logic, segment_sphere_logic) is the oracle's for its
 // exact stages too.
@@ -127,6 +127,26 @@ int segment_sphere_logic(const P& p) {
 inline int sphere_cast_filter(const Vec3<double>& from, const Vec3<double>& to, const Sphere<double>& sp,
                               bool segment) {
   return hit_sphere_logic(SphereFilter(from, to, sp, segment), segment);
+}
+
+// Sphere-box (Section 3.2.2). Filter: with c~ = fl(centre - box centre), x~_i = fl(|c~_i| - h_i),
+// v~_i = max(0, x~_i)
+// (= |v_i| whichever branch: max(0, .) is 1-Lipschitz, so |v~_i - v_i| <= |x~_i - x_i| <=
+// gamma_2 w_i, w_i = |c_i| + h_i, and v~_i, v_i <= w_i (1 + gamma_2)), P = fl(sum v~_i^2 - rho2).
+// |P~ - P| <= sum |v~_i^2 - v_i^2| + gamma_4 (sum v~_i^2 + rho^2)
+//          <= (2 gamma_2 + gamma_4 + O(u^2)) (sum w_i^2 + rho^2) <= 8u (1 + 10u) (...):
+// bound 9u fl(sum w~_i^2 + rho2), w~_i = fl(|c~_i| + h_i).
+inline int filter(const Sphere<double>& sp, const Box<double>& box) {
+  double vv = 0, ww = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::fabs(sp.center[i] - box.center[i]), h = box.extent[i];
+    const double x = c - h, v = x > 0 ? x : 0.0, w = c + h;
+    vv += v * v;
+    ww += w * w;
+  }
+  const double rho2 = sp.radius * sp.radius, m = ww + rho2;
+  if (!in_range(m)) return unknown;
+  return le0(fsign(vv - rho2, (9 * u) * m));
 }
 
 }  // namespace cdref::oracle::staged

@@ -36,8 +36,9 @@
 //     c + delta sign e_i equals it exactly): half an ulp; on the sphere c - rho sign e_i:
 //     half an ulp. sign(0) = +1 as in the book.
 //
-// decide() and intersect() first try a filter on the stable tier's arithmetic (the book's, in
-// F): c_i = fl(centre_i - box centre_i), v_i = fl(-+h_i - c_i) where c_i is clamped (else 0),
+// decide() and intersect() first try a filter on the stable tier's arithmetic (at double the
+// oracle's first stage before it, oracle/sphere_filter.hpp; this one where that leaves the
+// case open; the book's, in F): c_i = fl(centre_i - box centre_i), v_i = fl(-+h_i - c_i) where c_i is clamped (else 0),
 // q = fl(fl(v.v) - fl(rho^2)). With round to nearest c_i is off by at most u |c_i|, and the
 // clamp's offset is 1-Lipschitz in c, so the exact v_i differs from the computed one by at
 // most delta_i = u (|c_i| + |v_i|) (the rounding of v_i included; a coordinate clamped on one
@@ -63,6 +64,8 @@
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
+
+#include <cdref/oracle/sphere_filter.hpp>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -137,7 +140,7 @@ Bounded<F> sph_box_q(const SphBoxLocal<F>& L) {
 // The filter of the header: +1 (Q > 0: apart) or -1 (Q < 0: meeting) where the sign of Q is
 // certain from the stable tier's arithmetic, 0 where it is not.
 template <class F>
-int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
+int sphere_box_filter_own(const Sphere<F>& sp, const Box<F>& box) {
   F vv(0), w(0), cc(0);
   for (int i = 0; i < 3; ++i) {
     const F c = sp.center[i] - box.center[i], h = box.extent[i];
@@ -153,6 +156,19 @@ int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
   if (!(m <= std::numeric_limits<F>::max() / F(4) && m >= std::numeric_limits<F>::min() / u)) return 0;
   const F e = F(8) * u * (w + ss) + F(16) * u * u * cc;
   return int(q > e) - int(q < -e);
+}
+
+// The filter every entry point takes (header): at double the oracle's first stage
+// (oracle/sphere_filter.hpp: |v| from max(0, |c_i| - h_i), its bound from sum (|c_i| + h_i)^2),
+// then the one above where that leaves the case open; at other types the one above.
+template <class F>
+int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, double>) {
+    const int o = oracle::staged::filter(sp, box);
+    if (o != oracle::staged::unknown) [[likely]]
+      return o ? -1 : 1;
+  }
+  return sphere_box_filter_own(sp, box);
 }
 
 }  // namespace detail
