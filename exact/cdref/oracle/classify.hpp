@@ -455,10 +455,10 @@ struct SphereStaged {
 };
 
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
-  return hit_sphere_logic(SphereFilter(seg.source, seg.target, sp, true), true);
+  return sphere_cast_filter(seg.source, seg.target, sp, true);
 }
 inline int filter(const Ray<double>& ray, const Sphere<double>& sp) {
-  return hit_sphere_logic(SphereFilter(ray.source, ray.direction, sp, false), false);
+  return sphere_cast_filter(ray.source, ray.direction, sp, false);
 }
 struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp, alg32) {
