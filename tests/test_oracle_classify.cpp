@@ -391,8 +391,9 @@ TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][
         msg([&] { book::hit(zero, Box<double>{V(0, 0, 0), V(1, -1, 1)}); }));
 }
 
-// The oracle's sphere queries and the robust tier's decisions on them at double run their
-// filter before the input checks (classify.hpp, staged::filter_first; robust/ray_sphere.hpp):
+// The oracle's sphere, box-box and box-cast queries and the robust tier's decisions on them at
+// double run their filter before the input checks (classify.hpp, staged::filter_first;
+// robust/ray_sphere.hpp, sphere_sphere.hpp, sphere_box.hpp, box_box.hpp, ray_box.hpp):
 // every bad value in every input slot must still be refused with the message check() gives,
 // also where the valid input it replaces is one the filter decides; valid extremes pass.
 TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-classify][errors]") {
@@ -409,7 +410,8 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
       {{-3, 0.5, 0.25, -5, 0.5, 0.25, 0, 0, 0, 1, 1, 1}},    // pointing away: a miss
       {{0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0, 0, 0, 1, 1, 1}},    // zero length (as a ray: zero direction)
   };
-  std::vector<double> bad = {inf, -inf, nan, -1, -0x1p-1074, big, -big, 0x1p-1074, 0, -0.0};
+  // bad values and valid extremes (a zero or subnormal radius or extent, the largest doubles)
+  const std::vector<double> bad = {inf, -inf, nan, -1, -0x1p-1074, big, -big, 0x1p-1074, 0, -0.0};
   int refused = 0, decided_by_filter = 0;
   for (const Base& base : bases) {
     for (int slot = 0; slot < 12; ++slot) {
