@@ -718,10 +718,8 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 // in range), is tested before the filter (a NaN fails that test too). Every input the filter
 // leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
 // wrong, the same message as before) and then all the stages, out of line.
+// (signs_valid(Box) and direction_valid: oracle/box_cast_filter.hpp)
 inline bool signs_valid(const Sphere<double>& s) { return s.radius >= 0; }
-inline bool signs_valid(const Box<double>& b) {
-  return b.extent[0] >= 0 && b.extent[1] >= 0 && b.extent[2] >= 0;
-}
 inline bool signs_valid(const Segment<double>&) { return true; }
 inline bool signs_valid(const Ray<double>&) { return true; }  // a zero direction: sigma's range test
 template <class A, class B>
@@ -729,8 +727,7 @@ bool unseen_valid(const A& a, const B& b) {
   return signs_valid(a) && signs_valid(b);
 }
 inline bool unseen_valid(const Ray<double>& r, const Box<double>& b) {  // the direction too
-  const Vec3<double>& d = r.direction;
-  return signs_valid(b) && (d[0] - d[0]) + (d[1] - d[1]) + (d[2] - d[2]) == 0 && (d[0] != 0 || d[1] != 0 || d[2] != 0);
+  return signs_valid(b) && direction_valid(r.direction);
 }
 
 template <class A, class B, class... Tag>

@@ -289,7 +289,6 @@ inline double largest(const Pair<double> (&a)[3]) {
   return std::max({std::fabs(a[0].hi), std::fabs(a[1].hi), std::fabs(a[2].hi)});
 }
 
-
 // The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
 // certainly), 1 with `out` set, or 2 when it cannot tell (the exact path then answers).
 template <class Mul = SplitProduct>
@@ -442,13 +441,6 @@ inline std::optional<double> rounded(int st, const Bounded2& z) {
 }
 
 // The two double paths on a hit (stage 1: the Newton step, 2: the double words).
-template <class Shot>
-std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int stage) {
-  Pair<double> s[3], r[3];
-  shot_pairs(x, sp.center, s, r);
-  Bounded2 z;
-  return rounded(stage == 1 ? sphere_step<SplitProduct>(s, r, sp.radius, z) : sphere_words(x, sp, s, r, z), z);
-}
 // The Newton step alone, with the products of Mul.
 template <class Mul, class Shot>
 std::optional<double> sphere_first(const Shot& x, const Sphere<double>& sp) {
@@ -456,6 +448,18 @@ std::optional<double> sphere_first(const Shot& x, const Sphere<double>& sp) {
   shot_pairs(x, sp.center, s, r);
   Bounded2 z;
   return rounded(sphere_step<Mul>(s, r, sp.radius, z), z);
+}
+// The double words alone.
+template <class Shot>
+std::optional<double> sphere_second(const Shot& x, const Sphere<double>& sp) {
+  Pair<double> s[3], r[3];
+  shot_pairs(x, sp.center, s, r);
+  Bounded2 z;
+  return rounded(sphere_words(x, sp, s, r, z), z);
+}
+template <class Shot>
+std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int stage) {
+  return stage == 1 ? sphere_first<SplitProduct>(x, sp) : sphere_second(x, sp);
 }
 
 // (the triangle's and the oriented box's double paths: below)
@@ -525,10 +529,7 @@ template <class Shot>
 Entry sphere_enter(const Shot& x, const char* name, const Sphere<double>& sp, bool* exact_used) {
   return entry_of(staged::filter_first(nullptr, x, name, sp, "sphere"), x, sp, exact_used, [&] {
     if (const auto v = solid_double(x, sp)) return v;  // the Newton step
-    Pair<double> s[3], r[3];
-    shot_pairs(x, sp.center, s, r);
-    Bounded2 z;
-    return rounded(sphere_words(x, sp, s, r, z), z);
+    return sphere_second(x, sp);
   });
 }
 

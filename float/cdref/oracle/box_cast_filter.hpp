@@ -29,6 +29,14 @@ inline constexpr double u = 0x1p-53;
 inline bool in_range(double m) { return m >= 0x1p-960 && m <= 0x1p1000; }
 inline int fsign(double p, double bound) { return p > bound ? 1 : (p < -bound ? -1 : unknown); }
 
+// What the box casts' range tests below do not see, tested before them where the input checks
+// come after (classify.hpp, filter_first; robust/ray_box.hpp): the extents' signs, and a ray's
+// direction (finite, not zero), which enters only through its signs and the pairs.
+inline bool signs_valid(const Box<double>& b) { return b.extent[0] >= 0 && b.extent[1] >= 0 && b.extent[2] >= 0; }
+inline bool direction_valid(const Vec3<double>& d) {
+  return (d[0] - d[0]) + (d[1] - d[1]) + (d[2] - d[2]) == 0 && (d[0] != 0 || d[1] != 0 || d[2] != 0);
+}
+
 // Outcode filter for q~ = fl(p - c): L~ = fl(q~ + h) (lower plane), U~ = fl(q~ - h) (upper).
 // |L~ - L| <= u |q~ + h| + u |q~| (fl(x) = x / (1 + delta)) and |q~ + h| <= |L~| / (1 - u), so
 // the sign of L~ is certain when |L~| > 2u |q~| = fl(2^-52 |q~|): (1 - 2u) 2u > u. That

@@ -479,16 +479,6 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
 // pairs in double against static bounds) before the steps above: 1 (a hit), 0 (a miss) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it (decide(), hit() and the cast classify alike).
-// What the first stage's range tests do not see: the extents' signs, a ray's direction
-// (finite, not zero).
-template <class F>
-bool unseen_valid(const Box<F>& box) {
-  return box.extent[0] >= F(0) && box.extent[1] >= F(0) && box.extent[2] >= F(0);
-}
-template <class F>
-bool direction_valid(const Vec3<F>& d) {
-  return F(F(d[0] - d[0]) + F(d[1] - d[1])) + F(d[2] - d[2]) == F(0) && (d[0] != F(0) || d[1] != F(0) || d[2] != F(0));
-}
 template <class F>
 int first_stage(const Segment<F>& seg, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(seg, box);
@@ -542,7 +532,7 @@ template <class F>
 template <class F>
 Decision decide(const Segment<F>& seg, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>)
-    if (box_detail::unseen_valid(box))
+    if (oracle::staged::signs_valid(box))
       if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) [[likely]]
         return {f != 0, true};
   return decide_checked(seg, box);
@@ -562,7 +552,7 @@ template <class F>
 template <class F>
 Decision decide(const Ray<F>& ray, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>)
-    if (box_detail::unseen_valid(box) && box_detail::direction_valid(ray.direction))
+    if (oracle::staged::signs_valid(box) && oracle::staged::direction_valid(ray.direction))
       if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) [[likely]]
         return {f != 0, true};
   return decide_checked(ray, box);

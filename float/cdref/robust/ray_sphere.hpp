@@ -639,6 +639,17 @@ int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, boo
   return cast_filter_own(from, to, sp, bounded);
 }
 
+// The filter as hit() and decide() (and segment_sphere.hpp's decide_closest()) take it before
+// their input checks (header): 0 where it does not decide or does not apply (at float, which
+// runs at double after its checks; a negative or NaN radius, which no range test sees).
+template <class F>
+int unchecked_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, bool bounded) {
+  if constexpr (std::is_same_v<F, float>)
+    return 0;
+  else
+    return sp.radius >= F(0) ? cast_filter(from, to, sp, bounded) : 0;
+}
+
 }  // namespace detail
 
 // (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
@@ -680,10 +691,8 @@ template <class F>
 }
 template <class F>
 bool hit(const Segment<F>& seg, const Sphere<F>& sp) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (sp.radius >= F(0))  // the checks after the filter (header)
-      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
-        return f > 0;
+  if (const int f = detail::unchecked_filter(seg.source, seg.target, sp, true)) [[likely]]  // (checks after it)
+    return f > 0;
   return hit_checked(seg, sp);
 }
 
@@ -697,10 +706,8 @@ template <class F>
 }
 template <class F>
 bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (sp.radius >= F(0))  // the checks after the filter (header)
-      if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) [[likely]]
-        return f > 0;
+  if (const int f = detail::unchecked_filter(ray.source, ray.direction, sp, false)) [[likely]]  // (checks after it)
+    return f > 0;
   return hit_checked(ray, sp);
 }
 
@@ -719,10 +726,8 @@ template <class F>
 }
 template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (sp.radius >= F(0))  // the checks after the filter (header)
-      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
-        return Decision{f > 0, true};
+  if (const int f = detail::unchecked_filter(seg.source, seg.target, sp, true)) [[likely]]  // (checks after it)
+    return Decision{f > 0, true};
   return decide_checked(seg, sp);
 }
 
@@ -739,10 +744,8 @@ template <class F>
 }
 template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (sp.radius >= F(0))  // the checks after the filter (header)
-      if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) [[likely]]
-        return Decision{f > 0, true};
+  if (const int f = detail::unchecked_filter(ray.source, ray.direction, sp, false)) [[likely]]  // (checks after it)
+    return Decision{f > 0, true};
   return decide_checked(ray, sp);
 }
 

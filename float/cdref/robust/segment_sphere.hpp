@@ -355,10 +355,8 @@ template <class F>
 // (at double the filter before the input checks, as the casts' decide(): ray_sphere.hpp)
 template <class F>
 Decision decide_closest(const Segment<F>& seg, const Sphere<F>& sp) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (sp.radius >= F(0))
-      if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) [[likely]]
-        return Decision{f > 0, true};
+  if (const int f = detail::unchecked_filter(seg.source, seg.target, sp, true)) [[likely]]
+    return Decision{f > 0, true};
   return decide_closest_checked(seg, sp);
 }
 

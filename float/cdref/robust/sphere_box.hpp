@@ -182,6 +182,15 @@ bool sphere_box_unseen_valid(const Sphere<F>& sp, const Box<F>& box) {
   return sp.radius >= F(0) && box.extent[0] >= F(0) && box.extent[0] <= big && box.extent[1] >= F(0) &&
          box.extent[1] <= big && box.extent[2] >= F(0) && box.extent[2] <= big;
 }
+// The filter as intersect() and decide() take it before their input checks: 0 where it does
+// not decide or does not apply (at float; inputs it does not see valid).
+template <class F>
+int unchecked_filter(const Sphere<F>& sp, const Box<F>& box) {
+  if constexpr (std::is_same_v<F, float>)
+    return 0;
+  else
+    return sphere_box_unseen_valid(sp, box) ? sphere_box_filter(sp, box) : 0;
+}
 }  // namespace detail
 
 template <class F>
@@ -196,10 +205,8 @@ template <class F>
 // (intersect() and decide(): the filter before the input checks at double, header)
 template <class F>
 bool intersect(const Sphere<F>& sp, const Box<F>& box) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (detail::sphere_box_unseen_valid(sp, box))
-      if (const int f = detail::sphere_box_filter(sp, box)) [[likely]]
-        return f < 0;
+  if (const int f = detail::unchecked_filter(sp, box)) [[likely]]
+    return f < 0;
   return intersect_checked(sp, box);
 }
 
@@ -216,10 +223,8 @@ template <class F>
 }
 template <class F>
 Decision decide(const Sphere<F>& sp, const Box<F>& box) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (detail::sphere_box_unseen_valid(sp, box))
-      if (const int f = detail::sphere_box_filter(sp, box)) [[likely]]
-        return Decision{f < 0, true};
+  if (const int f = detail::unchecked_filter(sp, box)) [[likely]]
+    return Decision{f < 0, true};
   return decide_checked(sp, box);
 }
 

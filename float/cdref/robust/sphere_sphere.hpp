@@ -256,6 +256,16 @@ int sphere_sphere_filter(const Sphere<F>& a, const Sphere<F>& b) {
   return int(q > e) - int(q < -e);
 }
 
+// The filter as intersect() and decide() take it before their input checks (header): 0 where
+// it does not decide or does not apply (at float; a negative or NaN radius).
+template <class F>
+int unchecked_filter(const Sphere<F>& a, const Sphere<F>& b) {
+  if constexpr (std::is_same_v<F, float>)
+    return 0;
+  else
+    return a.radius >= F(0) && b.radius >= F(0) ? sphere_sphere_filter(a, b) : 0;
+}
+
 }  // namespace detail
 
 template <class F>
@@ -270,10 +280,8 @@ template <class F>
 // (intersect() and decide(): the filter before the input checks at double, header)
 template <class F>
 bool intersect(const Sphere<F>& a, const Sphere<F>& b) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (a.radius >= F(0) && b.radius >= F(0))
-      if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
-        return f < 0;
+  if (const int f = detail::unchecked_filter(a, b)) [[likely]]
+    return f < 0;
   return intersect_checked(a, b);
 }
 
@@ -290,10 +298,8 @@ template <class F>
 }
 template <class F>
 Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
-  if constexpr (!std::is_same_v<F, float>)
-    if (a.radius >= F(0) && b.radius >= F(0))
-      if (const int f = detail::sphere_sphere_filter(a, b)) [[likely]]
-        return Decision{f < 0, true};
+  if (const int f = detail::unchecked_filter(a, b)) [[likely]]
+    return Decision{f < 0, true};
   return decide_checked(a, b);
 }
 
