@@ -9,6 +9,7 @@
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/triangle_triangle.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <algorithm>
@@ -482,4 +483,125 @@ TEST_CASE("the checks after the filter refuse what check() refuses", "[oracle-cl
   }
   CHECK(refused > 100);           // the bad values were bad
   CHECK(decided_by_filter > 100);  // and many of the valid neighbours went through the filter alone
+}
+
+namespace {
+// A shot or a triangle pair: each stage that decides equals the book at Gmpq; returns the
+// answer and the stage that gave it.
+template <class A>
+bool tri_hand(const A& a, const Triangle<double>& t, Stage* st) {
+  int rat, exp, fil;
+  bool got;
+  if constexpr (std::is_same_v<A, Triangle<double>>) {
+    namespace tt = oracle::triangle_triangle;
+    rat = tt::at_stage(Stage::rational, a, t), exp = tt::at_stage(Stage::expansion, a, t);
+    fil = tt::at_stage(Stage::filter, a, t);
+    got = oracle::classify(a, t, st);
+    if (exp != tt::unknown) REQUIRE(exp == rat);
+    if (fil != tt::unknown) REQUIRE(fil == rat);
+  } else {
+    namespace rt = oracle::ray_triangle;
+    rat = rt::at_stage(Stage::rational, a, t), exp = rt::at_stage(Stage::expansion, a, t);
+    fil = rt::at_stage(Stage::filter, a, t);
+    got = oracle::classify(a, t, st);
+    if (exp != rt::unknown) REQUIRE(exp == rat);
+    if (fil != rt::unknown) REQUIRE(fil == rat);
+  }
+  REQUIRE(int(got) == rat);
+  return got;
+}
+}  // namespace
+
+TEST_CASE("the triangle filter's exact second look: shots through vertices and edges, touching ends, on a grid",
+          "[oracle-classify][triangle-cast]") {
+  Stage st = Stage::rational;
+  // A triangle 10^12 from the origin: there doubles are multiples of 2^-13 (2^-12 above 2^40),
+  // so every difference below is exact and every triple product fits in 53 bits.
+  const double X = 1e12, Y = -3e12, Z = 7e11;
+  const Triangle<double> far{{V(X, Y, Z), V(X + 2, Y, Z + 0.5), V(X + 0.25, Y + 3, Z - 1)}};
+  const Vec3<double> src = V(X - 1, Y + 0.75, Z + 4);
+  for (int k = 0; k < 3; ++k) {
+    // through vertex k exactly, and through the midpoint of edge (k, k+1) exactly
+    const Vec3<double> vk = far.vertex[k], mid = 0.5 * (far.vertex[k] + far.vertex[(k + 1) % 3]);
+    for (const Vec3<double>& aim : {vk, mid}) {
+      INFO("k " << k);
+      CHECK(tri_hand(Ray<double>{src, aim - src}, far, &st));
+      CHECK(st == Stage::filter);
+      CHECK_FALSE(tri_hand(Ray<double>{src, src - aim}, far, &st));  // turned away
+      CHECK(st == Stage::filter);
+      CHECK(tri_hand(Segment<double>{src, aim}, far, &st));          // ending on it: lambda = 1
+      CHECK(st == Stage::filter);
+      CHECK(tri_hand(Segment<double>{aim, src}, far, &st));          // leaving from it: lambda = 0
+      CHECK(st == Stage::filter);
+      CHECK_FALSE(tri_hand(Segment<double>{src, src + 0.5 * (aim - src)}, far, &st));  // stopping short
+      CHECK(st == Stage::filter);
+      // just past the vertex or the edge, a grid step outward: a miss
+      const Vec3<double> c = (1.0 / 3) * (far.vertex[0] + far.vertex[1] + far.vertex[2]);
+      const Vec3<double> out = aim + 0x1p-12 * (aim - c).normalized();
+      tri_hand(Ray<double>{src, out - src}, far, &st);
+    }
+  }
+  // The source in the triangle's plane, outside it, aimed across the plane: Ns = 0 with the shot
+  // not in the plane (a hit at lambda = 0 only if the source is in the triangle).
+  const Triangle<double> flat{{V(0, 0, 0), V(4, 0, 0), V(0, 4, 0)}};
+  CHECK(tri_hand(Ray<double>{V(1, 1, 0), V(0, 0, 1)}, flat, &st));      // from inside, leaving
+  CHECK(st == Stage::filter);
+  CHECK(tri_hand(Ray<double>{V(2, 2, 0), V(1, 3, -2)}, flat, &st));     // from the hypotenuse
+  CHECK(st == Stage::filter);
+  CHECK_FALSE(tri_hand(Ray<double>{V(3, 3, 0), V(1, 1, 5)}, flat, &st));  // from outside, in the plane
+  CHECK(st == Stage::filter);
+  CHECK(tri_hand(Segment<double>{V(0, 0, 3), V(0, 0, 0)}, flat, &st));  // ending on a vertex
+  CHECK(st == Stage::filter);
+  // Shots in the plane (all three w_k exactly 0) are left to the next stages.
+  CHECK(tri_hand(Ray<double>{V(-1, 1, 0), V(1, 0, 0)}, flat, &st));
+  CHECK(st != Stage::filter);
+  // Underflow: a triangle of size 2^-400 through a vertex. The products of three coordinates
+  // underflow, so the exact look must not decide; only the later stages do.
+  const double m = 0x1p-400;
+  const Triangle<double> tiny{{V(0, 0, m), V(4 * m, 0, m), V(0, 4 * m, m)}};
+  CHECK(tri_hand(Ray<double>{V(m, m, 3 * m), V(-m, -m, -2 * m)}, tiny, &st));
+  CHECK(tri_hand(Segment<double>{V(m, m, 3 * m), V(0, 0, m)}, tiny, &st));
+  CHECK(st != Stage::filter);
+  // Inexact differences (decimal coordinates): the look steps aside, the answer stays right.
+  const Triangle<double> dec{{V(0.1, 0.2, 0.3), V(1.1, 0.2, 0.3), V(0.1, 1.7, 0.3)}};
+  tri_hand(Ray<double>{V(0.7, 0.9, 2.1), V(0.1, 0.2, 0.3) - V(0.7, 0.9, 2.1)}, dec, &st);
+  tri_hand(Segment<double>{V(0.7, 0.9, 2.1), V(0.1, 0.2, 0.3)}, dec, &st);
+  // Two triangles touching at a vertex, and along an edge, 10^12 from the origin.
+  const Triangle<double> tipped{{far.vertex[0], V(X - 3, Y - 2, Z + 5), V(X - 1, Y + 2, Z + 6)}};
+  CHECK(tri_hand(tipped, far, &st));
+  CHECK(st == Stage::filter);
+  const Triangle<double> hinged{{far.vertex[0], far.vertex[1], V(X + 1, Y - 2, Z + 5)}};
+  CHECK(tri_hand(hinged, far, &st));
+  CHECK(st == Stage::filter);
+  const Triangle<double> apart{{far.vertex[0] + V(0, 0, 0x1p-12), V(X - 3, Y - 2, Z + 5), V(X - 1, Y + 2, Z + 6)}};
+  tri_hand(apart, far, &st);
+}
+
+TEST_CASE("the exact look checks each product: an underflow or a split that overflows is not exact",
+          "[oracle-classify][triangle-cast]") {
+  namespace ev = oracle::ray_triangle::exact_eval;
+  const auto product_ok = [](auto mul_policy, double a, double b) {
+    bool ok = true;
+    ev::mul<decltype(mul_policy)>(a, b, ok);
+    return ok;
+  };
+  for (int fused = 0; fused < 2; ++fused) {
+    if (fused && !robust::cpu_fma()) continue;  // std::fma as a library call would still do, slowly
+    const auto ok = [&](double a, double b) {
+      return fused ? product_ok(robust::FusedProduct{}, a, b) : product_ok(robust::SplitProduct{}, a, b);
+    };
+    CHECK(ok(3, 5));
+    CHECK(ok(0x1p-400, 0x1p-400));           // 2^-800: exact, far from the subnormals
+    CHECK(ok(0, 0x1p-1074));                 // zero through a zero factor
+    CHECK_FALSE(ok(0x1p-600, 0x1p-500));     // 2^-1100 underflows to 0: its error term reads 0 too
+    CHECK_FALSE(ok(1 + 0x1p-52, 0x1p-1060)); // a subnormal product that loses bits
+    CHECK_FALSE(ok(0x1p995, 1));             // Dekker's split would overflow
+    CHECK_FALSE(ok(1 + 0x1p-52, 1 + 0x1p-52));  // an ordinary rounded product
+  }
+  // A triple product whose terms underflow is not taken as exact, though its value reads 0.
+  const double a[3] = {0x1p-400, 0, 0}, b[3] = {0, 0x1p-400, 0}, c[3] = {0, 0, 0x1p-400};
+  CHECK(ev::triple<robust::SplitProduct>(a, b, c) == oracle::ray_triangle::unknown);
+  const double g[3] = {0x1p-300, 0, 0}, h[3] = {0, 0x1p-300, 0}, k[3] = {0, 0, 0x1p-300};
+  CHECK(ev::triple<robust::SplitProduct>(g, h, k) == 1);  // 2^-900: exact
+  CHECK(ev::triple<robust::SplitProduct>(g, k, h) == -1);
 }

@@ -482,23 +482,16 @@ std::optional<double> first_double(const Shot& x, const Solid& y) {
 // The double path with fused products where the CPU has them (x86-64: a copy compiled for the
 // FMA extension, every call inside it inlined, chosen at run time; a build with -mfma or on
 // another architecture: the split copy, or std::fma as the compiler provides it).
-#if (defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))) && !defined(__FMA__)
+using robust::cpu_fma;
+#if CDREF_FMA_CLONES
 template <class Shot, class Solid>
 [[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y) {
   return first_double<FusedProduct>(x, y);
 }
-inline bool cpu_fma() { return __builtin_cpu_supports("fma"); }
 #else
 template <class Shot, class Solid>
 std::optional<double> fused_double(const Shot& x, const Solid& y) {
   return first_double<FusedProduct>(x, y);
-}
-constexpr bool cpu_fma() {
-#ifdef __FMA__
-  return true;
-#else
-  return false;
-#endif
 }
 #endif
 template <class Shot, class Solid>
