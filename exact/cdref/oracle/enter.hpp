@@ -143,6 +143,7 @@
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/oracle/stage.hpp>
+#include <cdref/oracle/word_bounds.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cmath>
 #include <optional>
@@ -153,74 +154,7 @@ namespace enter_detail {
 
 using robust::Pair;
 
-// The bounds' allowance for underflow, per product or quotient that may leave the normal
-// range: the derivations need the smallest subnormal, 2^-1074, and take the smallest normal
-// number instead (larger, so still a bound): an addition with a subnormal operand can cost a
-// microcode assist on x86 (measured standalone, one run each: an oriented-box ray cast at
-// 10^12, 462 -> 423 ns a call).
-constexpr double under = 0x1p-1022;
-
-// ---- double words with a bound, shared by the double paths (header) ----
-constexpr double uu = 0x1p-53, eta = under;
-
-// A double word v (v.hi = fl(v.hi + v.lo)) whose exact value lies within e of v.hi + v.lo.
-struct Word {
-  Pair<double> v;
-  double e;
-};
-
-// The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
-// every product here has its operands in [2^-600, 2^600] or is zero, so both give the same
-// pair). A build without -mfma has std::fma as a library call, so the sphere's Newton step and
-// the oriented-box and triangle paths (about 7, 60 and 20 products a call) are compiled twice
-// and the fused copy is taken where the CPU has the instruction (fused_double below).
-using robust::FusedProduct;
-using robust::SplitProduct;
-
-// a_j b_k - a_k b_j for exact pairs: the products of the high parts exact, the four cross
-// terms and the lows in double (7 terms, 6 additions, 4 rounded products: 8u of their
-// magnitudes), the lows' products dropped (<= 2u^2 (|a_j b_k| + |a_k b_j|)).
-template <class Mul = SplitProduct>
-inline Word cross_term(const Pair<double>& aj, const Pair<double>& bk, const Pair<double>& ak, const Pair<double>& bj) {
-  using std::fabs;
-  const Pair<double> P1 = Mul::prod(aj.hi, bk.hi), P2 = Mul::prod(ak.hi, bj.hi);
-  const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
-  const double a1 = aj.hi * bk.lo, b1 = aj.lo * bk.hi, a2 = ak.hi * bj.lo, b2 = ak.lo * bj.hi;
-  const double lo = ((S.lo + P1.lo) - P2.lo) + ((a1 + b1) - (a2 + b2));
-  const double M = fabs(P1.hi) + fabs(P2.hi);
-  return {robust::two_sum(S.hi, lo),
-          8 * uu * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
-              2 * uu * uu * M * (1 + 4 * uu) + 16 * eta};
-}
-template <class Mul = SplitProduct>
-inline void cross_words(const Pair<double> (&a)[3], const Pair<double> (&b)[3], Word (&n)[3]) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    n[i] = cross_term<Mul>(a[j], b[k], a[k], b[j]);
-  }
-}
-
-// x . y for double words x_i (within ex_i of the exact) and y_i: the products of the high
-// parts exact, summed by two_sum; the lows (11 terms: 10 additions, 6 rounded products) in
-// double; the lows' products x.lo y.lo dropped; x^, y^ against the exact x, y propagated.
-template <class Mul = SplitProduct>
-inline Word dot_words(const Pair<double> (&x)[3], const double (&ex)[3], const Word (&y)[3]) {
-  using std::fabs;
-  const Pair<double> Q0 = Mul::prod(x[0].hi, y[0].v.hi), Q1 = Mul::prod(x[1].hi, y[1].v.hi),
-                     Q2 = Mul::prod(x[2].hi, y[2].v.hi);
-  const Pair<double> H1 = robust::two_sum(Q0.hi, Q1.hi), H2 = robust::two_sum(H1.hi, Q2.hi);
-  double lows = (Q0.lo + Q1.lo) + (Q2.lo + (H1.lo + H2.lo));
-  double lows_abs = fabs(Q0.lo) + fabs(Q1.lo) + fabs(Q2.lo) + fabs(H1.lo) + fabs(H2.lo);
-  double prop = 0, dropped = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double a = x[i].hi * y[i].v.lo, b = x[i].lo * y[i].v.hi;
-    lows += a + b;
-    lows_abs += fabs(a) + fabs(b);
-    dropped += fabs(x[i].lo) * fabs(y[i].v.lo);
-    prop += (fabs(x[i].hi) + fabs(x[i].lo)) * y[i].e + (fabs(y[i].v.hi) + fabs(y[i].v.lo) + y[i].e) * ex[i];
-  }
-  return {robust::two_sum(H2.hi, lows), (12 * uu * lows_abs + 1.01 * (dropped + prop)) * (1 + 8 * uu) + 64 * eta};
-}
+using namespace word_bounds;
 
 // w = x + l d for exact pairs x, d and a double l, as double words with their bounds.
 template <class Mul = SplitProduct>
@@ -234,11 +168,6 @@ inline void affine_words(const Pair<double> (&x)[3], double l, const Pair<double
     w[i] = robust::two_sum(T.hi, ((T.lo + x[i].lo) + P.lo) + zl);
     ew[i] = 4 * uu * (((fabs(T.lo) + fabs(x[i].lo)) + fabs(P.lo)) + fabs(zl)) + 8 * eta;
   }
-}
-
-// A lower bound of |x| for the word x (0 when its sign is not certain), and its sign.
-inline double magnitude_lo(const Word& x) {
-  return std::max(0.0, ((std::fabs(x.v.hi) - std::fabs(x.v.lo)) * (1 - 2 * uu) - x.e) * (1 - 2 * uu));
 }
 
 // The plane's parameter lambda* = l0 - g(l0) / D, g(l) = n . (x + l d) + off linear in l
@@ -628,10 +557,7 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
   double best = 0.0;
   for (int i = 0; i < 3; ++i) {
     // H_i = delta h_i as a word: the product of the high parts exact, delta.lo h_i rounded
-    const Pair<double> P = Mul::prod(delta.v.hi, b.extent[i]);
-    const double hl = delta.v.lo * b.extent[i];
-    const Word H{robust::two_sum(P.hi, P.lo + hl),
-                 (delta.e * b.extent[i] + 2 * uu * (fabs(P.lo) + fabs(hl))) * (1 + 4 * uu) + 4 * eta};
+    const Word H = scale_word<Mul>(delta, b.extent[i]);
     const Word U = dot_words<Mul>(sc, zero, n[i]);  // the source's coordinate
     // U + H < 0: outside the lower face; U - H > 0: outside the upper one (certain signs)
     auto side = [&](double sg) -> int {

@@ -1,0 +1,247 @@
+// cdref/oracle/word_bounds.hpp - double words that carry a rigorous bound on their distance from
+// an exact value, and the second stage they give the casts on an oriented box. Shared by the
+// oracle's correctly rounded lambda_enter (exact/cdref/oracle/enter.hpp, whose header derives
+// cross_term, dot_words and the bounds' allowance for underflow) and by the classification of a
+// segment or a ray cast on an oriented box (the oracle's stage 2, exact/cdref/oracle/
+// separating_axes.hpp, and the robust tier's certified decision, robust/separating_axes.hpp).
+//
+// A Word {v, e}: v = v.hi + v.lo, normalized (v.hi = fl(v.hi + v.lo)), and the exact value
+// within e of it. Each operation below rounds a few low-order terms, each off by at most u of
+// its computed magnitude (fl(x) = x / (1 + delta), |delta| <= u), and propagates its operands'
+// bounds; the bound itself is computed from nonnegative terms and enlarged by (1 + 4u) or
+// (1 + 8u) for its own roundings, and by a multiple of 2^-1022 for roundings that underflow
+// (each off by at most 2^-1075).
+//   add_words(x, y, s)  x + s y, s = +-1: the highs by Two-Sum, t = fl(x.lo + s y.lo) and
+//                       r = fl(S.lo + t) rounded (u |t| + u |r|), renormalized exactly:
+//                       e = x.e + y.e + 2u (|t| + |r|);
+//   mul_words(x, y)     the highs' product exact (Mul), a = fl(x.hi y.lo), b = fl(x.lo y.hi),
+//                       c = fl(a + b), l = fl(P.lo + c) rounded, x.lo y.lo dropped, and
+//                       |XY - x^ y^| <= |x^| y.e + (|y^| + y.e) x.e:
+//                       e = 2u (|a| + |b| + |c| + |l|) + |x.lo y.lo| + |x^| y.e + (|y^| + y.e) x.e;
+//   scale_word(x, h)    x h for a double h: the highs' product exact, x.lo h rounded;
+//   sign_of(x)          certain when magnitude_lo(x) > 0: |x.hi| - |x.lo| exceeds e (then the
+//                       exact value has the sign of x.hi), `unknown` otherwise (an exact 0 too:
+//                       every bound here is positive).
+//
+// ---- Algorithm 3.3 on an oriented box, in face coordinates, on double words ----------------
+// The first stage (box_cast_filter.hpp, ObbFilter) decides the cast from the signs of the
+// outcodes Y_i -+ H_i, a ray's d_i, and the pairs N_a d_j - N_b d_i in the box's face coordinates
+// Y_i = n_i . (p - c), H_i = h_i |delta| (its header derives why Algorithm 3.3 on [-H, H] there is
+// the solid's cast). Its bounds grow with the magnitudes: from 10^12 box sizes away a rounding of
+// p - c alone is 10^-4 box sizes, and shots that pass a face, an edge or a corner closer than
+// that are left undecided. Here the same quantities are double words: p - c and t - c exact
+// pairs (Two-Sum), the normals n_i = a_{i+1} x a_{i+2} by cross_words, delta = a_0 . n_0 (its
+// sign certain, n turned so that delta > 0: the box is then [-H, H] with H_i = delta h_i, as the
+// sign of delta only swaps a symmetric box's planes), Y_i by dot_words, Y -+ H and d_i = Y_t -
+// Y_s (segment) or n_i . r (ray) by add_words, the pairs by mul_words and add_words; each sign
+// is sign_of, and hit_box_logic (box_cast_filter.hpp) decides from them exactly as stage 1
+// does. Their bounds are of order u^2 of the magnitudes, so that only shots within about 10^-20
+// box sizes of a face's plane at 10^12 are left to the next stage (the robust tier's double
+// words on the solid's own cast, robust/separating_axes.hpp). Range: every input at most 2^100
+// in magnitude (a pair is of degree 7 in them: no value overflows); below, the allowance for
+// underflow only widens the bounds.
+#pragma once
+
+#include <algorithm>
+#include <cdref/oracle/box_cast_filter.hpp>
+#include <cdref/primitives.hpp>
+#include <cdref/robust/eft.hpp>
+#include <cmath>
+
+namespace cdref::oracle::word_bounds {
+
+using robust::Pair;
+
+// The bounds' allowance for underflow, per product or quotient that may leave the normal
+// range: the derivations need the smallest subnormal, 2^-1074, and take the smallest normal
+// number instead (larger, so still a bound): an addition with a subnormal operand can cost a
+// microcode assist on x86 (measured standalone, one run each: an oriented-box ray cast at
+// 10^12, 462 -> 423 ns a call).
+constexpr double under = 0x1p-1022;
+
+constexpr double uu = 0x1p-53, eta = under;
+
+// A double word v (v.hi = fl(v.hi + v.lo)) whose exact value lies within e of v.hi + v.lo.
+struct Word {
+  Pair<double> v;
+  double e;
+};
+
+// The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
+// every product here has its operands in [2^-600, 2^600] or is zero, so both give the same
+// pair). A build without -mfma has std::fma as a library call, so the paths built on these
+// (oracle/enter.hpp's sphere, oriented-box and triangle paths, about 7, 60 and 20 products a
+// call; the oriented-box casts' classification below) are compiled twice and the fused copy is
+// taken where the CPU has the instruction (robust::cpu_fma).
+using robust::FusedProduct;
+using robust::SplitProduct;
+
+// a_j b_k - a_k b_j for exact pairs: the products of the high parts exact, the four cross
+// terms and the lows in double (7 terms, 6 additions, 4 rounded products: 8u of their
+// magnitudes), the lows' products dropped (<= 2u^2 (|a_j b_k| + |a_k b_j|)).
+template <class Mul = SplitProduct>
+inline Word cross_term(const Pair<double>& aj, const Pair<double>& bk, const Pair<double>& ak, const Pair<double>& bj) {
+  using std::fabs;
+  const Pair<double> P1 = Mul::prod(aj.hi, bk.hi), P2 = Mul::prod(ak.hi, bj.hi);
+  const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
+  const double a1 = aj.hi * bk.lo, b1 = aj.lo * bk.hi, a2 = ak.hi * bj.lo, b2 = ak.lo * bj.hi;
+  const double lo = ((S.lo + P1.lo) - P2.lo) + ((a1 + b1) - (a2 + b2));
+  const double M = fabs(P1.hi) + fabs(P2.hi);
+  return {robust::two_sum(S.hi, lo),
+          8 * uu * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
+              2 * uu * uu * M * (1 + 4 * uu) + 16 * eta};
+}
+template <class Mul = SplitProduct>
+inline void cross_words(const Pair<double> (&a)[3], const Pair<double> (&b)[3], Word (&n)[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    n[i] = cross_term<Mul>(a[j], b[k], a[k], b[j]);
+  }
+}
+
+// x . y for double words x_i (within ex_i of the exact) and y_i: the products of the high
+// parts exact, summed by two_sum; the lows (11 terms: 10 additions, 6 rounded products) in
+// double; the lows' products x.lo y.lo dropped; x^, y^ against the exact x, y propagated.
+template <class Mul = SplitProduct>
+inline Word dot_words(const Pair<double> (&x)[3], const double (&ex)[3], const Word (&y)[3]) {
+  using std::fabs;
+  const Pair<double> Q0 = Mul::prod(x[0].hi, y[0].v.hi), Q1 = Mul::prod(x[1].hi, y[1].v.hi),
+                     Q2 = Mul::prod(x[2].hi, y[2].v.hi);
+  const Pair<double> H1 = robust::two_sum(Q0.hi, Q1.hi), H2 = robust::two_sum(H1.hi, Q2.hi);
+  double lows = (Q0.lo + Q1.lo) + (Q2.lo + (H1.lo + H2.lo));
+  double lows_abs = fabs(Q0.lo) + fabs(Q1.lo) + fabs(Q2.lo) + fabs(H1.lo) + fabs(H2.lo);
+  double prop = 0, dropped = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double a = x[i].hi * y[i].v.lo, b = x[i].lo * y[i].v.hi;
+    lows += a + b;
+    lows_abs += fabs(a) + fabs(b);
+    dropped += fabs(x[i].lo) * fabs(y[i].v.lo);
+    prop += (fabs(x[i].hi) + fabs(x[i].lo)) * y[i].e + (fabs(y[i].v.hi) + fabs(y[i].v.lo) + y[i].e) * ex[i];
+  }
+  return {robust::two_sum(H2.hi, lows), (12 * uu * lows_abs + 1.01 * (dropped + prop)) * (1 + 8 * uu) + 64 * eta};
+}
+
+// A lower bound of |x| for the word x (0 when its sign is not certain), and its sign.
+inline double magnitude_lo(const Word& x) {
+  return std::max(0.0, ((std::fabs(x.v.hi) - std::fabs(x.v.lo)) * (1 - 2 * uu) - x.e) * (1 - 2 * uu));
+}
+
+template <class Mul = SplitProduct>
+inline Word scale_word(const Word& x, double h) {
+  using std::fabs;
+  const Pair<double> P = Mul::prod(x.v.hi, h);
+  const double hl = x.v.lo * h;
+  return {robust::two_sum(P.hi, P.lo + hl), (x.e * fabs(h) + 2 * uu * (fabs(P.lo) + fabs(hl))) * (1 + 4 * uu) + 4 * eta};
+}
+inline Word add_words(const Word& x, const Word& y, double sg) {
+  using std::fabs;
+  const Pair<double> S = robust::two_sum(x.v.hi, sg * y.v.hi);
+  const double t = x.v.lo + sg * y.v.lo, r = S.lo + t;
+  return {robust::two_sum(S.hi, r), (x.e + y.e + 2 * uu * (fabs(t) + fabs(r))) * (1 + 4 * uu)};
+}
+template <class Mul = SplitProduct>
+inline Word mul_words(const Word& x, const Word& y) {
+  using std::fabs;
+  const Pair<double> P = Mul::prod(x.v.hi, y.v.hi);
+  const double a = x.v.hi * y.v.lo, b = x.v.lo * y.v.hi, c = a + b, l = P.lo + c;
+  const double ax = fabs(x.v.hi) + fabs(x.v.lo), ay = fabs(y.v.hi) + fabs(y.v.lo);
+  const double e = 2 * uu * (((fabs(a) + fabs(b)) + fabs(c)) + fabs(l)) + fabs(x.v.lo) * fabs(y.v.lo) + ax * y.e +
+                   (ay + y.e) * x.e;
+  return {robust::two_sum(P.hi, l), e * (1 + 8 * uu) + 8 * eta};
+}
+inline int sign_of(const Word& x) { return magnitude_lo(x) > 0 ? (x.v.hi > 0 ? 1 : -1) : staged::unknown; }
+inline Word negated(const Word& x) { return {{-x.v.hi, -x.v.lo}, x.e}; }
+
+// Stage 2 of a cast on an oriented box (header): the signs of ObbFilter on double words.
+template <class Mul>
+struct ObbWords {
+  Word sL[3], sU[3], tL[3], tU[3], d[3];
+  bool bounded, ok = false;
+  ObbWords(const Vec3<double>& src, const Vec3<double>& rt, const OrientedBox<double>& b, bool segment)
+      : bounded(segment) {
+    using std::fabs;
+    double m = 0;
+    for (int i = 0; i < 3; ++i) {
+      m = std::max({m, fabs(src[i]), fabs(rt[i]), fabs(b.center[i]), fabs(b.extent[i])});
+      for (int k = 0; k < 3; ++k) m = std::max(m, fabs(b.axis[k][i]));
+    }
+    if (!(m <= 0x1p100)) return;  // NaN and infinities too
+    Pair<double> a[3][3], xs[3], xt[3];
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) a[k][i] = {b.axis[k][i], 0.0};
+    Word n[3][3];
+    for (int i = 0; i < 3; ++i) cross_words<Mul>(a[(i + 1) % 3], a[(i + 2) % 3], n[i]);
+    const double zero[3] = {0, 0, 0};
+    Word delta = dot_words<Mul>(a[0], zero, n[0]);
+    if (!(magnitude_lo(delta) > 0)) return;  // degenerate axes, or too close to: the next stage
+    if (delta.v.hi < 0) {
+      delta = negated(delta);
+      for (auto& ni : n)
+        for (auto& c : ni) c = negated(c);
+    }
+    for (int c = 0; c < 3; ++c) {
+      xs[c] = robust::two_sum(src[c], -b.center[c]);
+      xt[c] = segment ? robust::two_sum(rt[c], -b.center[c]) : Pair<double>{rt[c], 0.0};
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Word H = scale_word<Mul>(delta, b.extent[i]);
+      const Word ys = dot_words<Mul>(xs, zero, n[i]), yt = dot_words<Mul>(xt, zero, n[i]);
+      sL[i] = add_words(ys, H, 1);
+      sU[i] = add_words(ys, H, -1);
+      if (segment) {
+        tL[i] = add_words(yt, H, 1);
+        tU[i] = add_words(yt, H, -1);
+        d[i] = add_words(yt, ys, -1);
+      } else {
+        d[i] = yt;
+      }
+    }
+    ok = true;
+  }
+  int src_lo(int i) const { return sign_of(sL[i]); }
+  int src_hi(int i) const { return sign_of(sU[i]); }
+  int tgt_lo(int i) const { return sign_of(tL[i]); }
+  int tgt_hi(int i) const { return sign_of(tU[i]); }
+  int dir_sign(int i) const { return sign_of(d[i]); }  // never a certain 0
+  // sign(lambda_a - lambda_b) for an entering plane a and an exiting plane b, as ObbFilter's
+  int compare(int a, int b) const {
+    const int i = a / 2, j = b / 2;
+    const Word Na = negated(a % 2 == 0 ? sL[i] : sU[i]), Nb = negated(b % 2 == 0 ? sL[j] : sU[j]);
+    const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? -1 : 1);
+    const int r = sign_of(add_words(mul_words<Mul>(Na, d[j]), mul_words<Mul>(Nb, d[i]), -1));
+    return r == staged::unknown ? staged::unknown : sigma * r;
+  }
+};
+
+template <class Mul>
+int obb_cast(const Vec3<double>& src, const Vec3<double>& rt, const OrientedBox<double>& b, bool segment) {
+  const ObbWords<Mul> w(src, rt, b, segment);
+  return w.ok ? staged::hit_box_logic(w) : staged::unknown;
+}
+#if CDREF_FMA_CLONES
+[[gnu::target("fma"), gnu::flatten, gnu::noinline]] inline int obb_cast_fused(const Vec3<double>& src,
+                                                                             const Vec3<double>& rt,
+                                                                             const OrientedBox<double>& b,
+                                                                             bool segment) {
+  return obb_cast<FusedProduct>(src, rt, b, segment);
+}
+#endif
+// 1 a hit, 0 a miss, staged::unknown: the next stage.
+[[gnu::noinline]] inline int obb_cast_any(const Vec3<double>& src, const Vec3<double>& rt,
+                                          const OrientedBox<double>& b, bool segment) {
+#if CDREF_FMA_CLONES
+  if (robust::cpu_fma()) return obb_cast_fused(src, rt, b, segment);
+  return obb_cast<SplitProduct>(src, rt, b, segment);
+#else
+  if constexpr (robust::cpu_fma()) return obb_cast<FusedProduct>(src, rt, b, segment);
+  return obb_cast<SplitProduct>(src, rt, b, segment);
+#endif
+}
+inline int obb_cast_words(const Segment<double>& s, const OrientedBox<double>& b) {
+  return obb_cast_any(s.source, s.target, b, true);
+}
+inline int obb_cast_words(const Ray<double>& r, const OrientedBox<double>& b) {
+  return obb_cast_any(r.source, r.direction, b, false);
+}
+
+}  // namespace cdref::oracle::word_bounds
