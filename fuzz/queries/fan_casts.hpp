@@ -9,6 +9,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/robust/ray_triangle.hpp>
 #include <cdref/stable/ray_triangle.hpp>
@@ -99,6 +100,11 @@ struct FanCastQuery {
       u.certain = u.certain && d.certain;
     }
     return u;
+  }
+  // the smallest of the triangles' correctly rounded lambda_enter (each checks its inputs)
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const spec::Fan<double>& f, bool* exact_used) {
+    return cdref::oracle::enter_first(
+        f.triangles(), [&](int k, bool* e) { return cdref::oracle::enter(a, f.triangle(k), e); }, exact_used);
   }
   static bool oracle(const Shot<double>& a, const spec::Fan<double>& f, cdref::oracle::Stage* st) {
     cdref::oracle::Stage worst = cdref::oracle::Stage::filter;

@@ -10,6 +10,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
+#include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/polygon.hpp>
 #include <cdref/robust/polygon.hpp>
 #include <cdref/stable/polygon.hpp>
@@ -102,6 +103,9 @@ struct PolygonCast {
   }
   static bool oracle(const Shot<double>& a, const Polygon<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Polygon<double>& b, bool* exact_used) {
+    return cdref::oracle::enter(a, b, exact_used);
   }
   static int stage(cdref::oracle::Stage s, const Shot<double>& a, const Polygon<double>& b) {
     return cdref::oracle::polygon::at_stage(s, a, b);

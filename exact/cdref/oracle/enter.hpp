@@ -2,11 +2,11 @@
 // oracle::enter(shot, solid) is round-to-nearest of the lambda_enter that the book's cast
 // returns at an exact type (0 on a miss, and 0 when the source lies in the solid), for the
 // casts on a sphere (Algorithm 3.1), on an axis-aligned box (Algorithm 3.3), on an oriented
-// box (the solid's cast, solid/obb.hpp: the truth where the axes are not exactly orthonormal)
-// and on a triangle (Section 3.4, Moller-Trumbore). It is the one output a ray tracer takes
-// from a cast, and `cdref report` prices it beside the oracle's classification and its
-// every-output path (the fan and polygon casts' row takes the truth's formulation asked for
-// lambda_enter alone: fuzz/cdref/fuzz/spec.hpp, oracle_enter_of).
+// box (the solid's cast, solid/obb.hpp: the truth where the axes are not exactly orthonormal),
+// on a triangle (Section 3.4, Moller-Trumbore) and on a union of triangles (a polygon's fan, a
+// mesh's fan: enter_first, the smallest of the triangles' values). It is the one output a ray
+// tracer takes from a cast, and `cdref report` prices it beside the oracle's classification and
+// its every-output path.
 //
 // Each call: the input checks (for the sphere and box casts after the classification's
 // filter, whose range tests refuse what they would: classify.hpp, staged::filter_first); the
@@ -615,6 +615,37 @@ inline Entry enter(const Ray<double>& ray, const Triangle<double>& tri, bool* ex
   check(ray, "ray");
   check(tri, "triangle");
   return enter_detail::triangle_enter(ray, tri, exact_used);
+}
+// A shot against a union of triangles (a polygon's fan, a mesh's fan): the book's cast takes the
+// smallest lambda_enter over the triangles hit, and rounding is monotone, so the smallest of the
+// triangles' correctly rounded values is the union's (each triangle's classification and double
+// path as above; exact_used when any triangle took the exact path). `enter_k(k, bool*)` is
+// triangle k's Entry, k < count.
+template <class EnterK>
+Entry enter_first(int count, EnterK enter_k, bool* exact_used = nullptr) {
+  Entry out;
+  if (exact_used) *exact_used = false;
+  for (int k = 0; k < count; ++k) {
+    bool e = false;
+    const Entry t = enter_k(k, &e);
+    if (exact_used) *exact_used = *exact_used || e;
+    if (!t.hit) continue;
+    if (!out.hit || t.lambda_enter < out.lambda_enter) out.lambda_enter = t.lambda_enter;
+    out.hit = true;
+  }
+  return out;
+}
+inline Entry enter(const Segment<double>& seg, const Polygon<double>& p, bool* exact_used = nullptr) {
+  check(seg, "segment");
+  check(p);
+  return enter_first(
+      p.triangles(), [&](int k, bool* e) { return enter_detail::triangle_enter(seg, p.triangle(k), e); }, exact_used);
+}
+inline Entry enter(const Ray<double>& ray, const Polygon<double>& p, bool* exact_used = nullptr) {
+  check(ray, "ray");
+  check(p);
+  return enter_first(
+      p.triangles(), [&](int k, bool* e) { return enter_detail::triangle_enter(ray, p.triangle(k), e); }, exact_used);
 }
 inline Entry enter(const Segment<double>& seg, const OrientedBox<double>& b, bool* exact_used = nullptr) {
   check(seg, "segment");

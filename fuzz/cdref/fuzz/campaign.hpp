@@ -156,8 +156,9 @@ struct QueryInfo {
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_classify;
   // A cast's classification and lambda_enter alone (cls = pred, v[0]; the other values 0),
   // lambda_enter correctly rounded to double (0 on a miss): oracle::enter (exact/cdref/oracle/
-  // enter.hpp) for the sphere, box, oriented-box and triangle casts, the classification oracle
-  // and the truth asked for lambda_enter alone for the fan and polygon casts; empty for the
+  // enter.hpp) for the sphere, box, oriented-box, triangle, fan and polygon casts (a cast whose
+  // descriptor has none: the classification oracle and the truth asked for lambda_enter alone,
+  // spec.hpp's oracle_enter_of); empty for the
   // queries that are not casts.
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_enter;
   // A stage of the classification oracle alone (0 filter, 1 expansion, 2 rational): the

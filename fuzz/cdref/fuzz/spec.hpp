@@ -427,8 +427,8 @@ constexpr bool has_oracle_enter = requires(const Inputs& in, bool* e) {
       -> std::same_as<oracle::Entry>;
 };
 
-// Every cast's hit and lambda_enter alone: oracle::enter where the spec has it (the sphere and
-// box casts), otherwise the oracle's classification, then on a hit the truth's formulation
+// Every cast's hit and lambda_enter alone: oracle::enter where the spec has it (every cast
+// cdref has), otherwise the oracle's classification, then on a hit the truth's formulation
 // asked for lambda_enter alone, on oracle::Bounded2 (certain, or it throws) and then at
 // CGAL::Gmpq, rounded correctly to double.
 template <class R>
