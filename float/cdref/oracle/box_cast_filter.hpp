@@ -292,6 +292,17 @@ struct ObbFilter {
     const int r = sign_of(Na * d[j] - Nb * d[i], 17 * u * (ps[i] * dp[j] + ps[j] * dp[i]) + fc);
     return r == unknown ? unknown : sigma * r;
   }
+  // sign(lambda_a - lambda_b) for two entering planes of different axes, on a shot that hits:
+  // each is crossed, so d has the sign of its role (entering the lower plane d > 0, the upper
+  // d < 0), and lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j), the same expression and
+  // bound as compare() (oracle/enter.hpp picks the entering face with it)
+  int compare_entering(int a, int b) const {
+    const int i = a / 2, j = b / 2;
+    const double Na = -(a % 2 == 0 ? sL[i] : sU[i]), Nb = -(b % 2 == 0 ? sL[j] : sU[j]);
+    const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? 1 : -1);
+    const int r = sign_of(Na * d[j] - Nb * d[i], 17 * u * (ps[i] * dp[j] + ps[j] * dp[i]) + fc);
+    return r == unknown ? unknown : sigma * r;
+  }
   // hit_box_logic's loop over every (entering, exiting) pair at once, each as compare() above
   // (each sign sigma folded into its plane's numerator and d), without branches on the data.
   int pairs(unsigned bs, unsigned bt) const {
