@@ -1,7 +1,8 @@
-// bench/bench_campaign.cpp - throughput of a ray-sphere campaign (the book at double against
-// the truth from the oracle), in cases per second on one core, with every output graded and
-// with the classification alone (--outputs cls), and what it is made of: case generation, the
-// book at double, the exact truth, the oracle (all outputs, and the classification alone).
+// bench/bench_campaign.cpp - throughput of a campaign of the segment cast on a sphere (the book
+// at double against the truth from the oracle), in cases per second on one core, with every
+// output graded and with the classification alone (--outputs cls), and what it is made of:
+// case generation, the book at double, the exact truth, the oracle (all outputs, and the
+// classification alone); the same campaigns of the ray cast (campaign_ray).
 // Ratios from one run are the figures to quote; Debian's libbenchmark is a debug build (its
 // own overhead is per iteration, small next to these bodies).
 #include <benchmark/benchmark.h>
@@ -15,18 +16,24 @@ namespace {
 const Query cast = query_by_name("segment-sphere-cast");
 const Family& fam(const char* name) { return family_by_name(cast, name); }
 
-void campaign(benchmark::State& st, const char* family, bool classification_only) {
+void campaign_of(benchmark::State& st, Query q, const char* family, bool classification_only) {
   const std::uint64_t n = 4096;
   Spec s;
   s.classification_only = classification_only;
-  s.queries = {cast};
+  s.queries = {q};
   s.impls = {"book-double"};
   s.families = {family};
-  s.scales = {fam(family).scales.front()};
+  s.scales = {family_by_name(q, family).scales.front()};
   s.n = n;
   s.threads = 1;
   for (auto _ : st) benchmark::DoNotOptimize(run(s));
   st.SetItemsProcessed(st.iterations() * std::int64_t(n));
+}
+void campaign(benchmark::State& st, const char* family, bool classification_only) {
+  campaign_of(st, cast, family, classification_only);
+}
+void campaign_ray(benchmark::State& st, const char* family, bool classification_only) {
+  campaign_of(st, query_by_name("ray-sphere-cast"), family, classification_only);
 }
 
 void generate(benchmark::State& st) {
@@ -94,6 +101,10 @@ BENCHMARK_CAPTURE(campaign, uniform, "uniform", false)->Unit(benchmark::kMillise
 BENCHMARK_CAPTURE(campaign, long_range, "long-range", false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(campaign, uniform_classification_only, "uniform", true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(campaign, long_range_classification_only, "long-range", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign_ray, uniform, "uniform", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign_ray, long_range, "long-range", false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign_ray, uniform_classification_only, "uniform", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(campaign_ray, long_range_classification_only, "long-range", true)->Unit(benchmark::kMillisecond);
 BENCHMARK(generate);
 BENCHMARK(book_double);
 BENCHMARK(exact_truth);
