@@ -540,8 +540,11 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
 }
 
 // The entering face first, in double (header, "An oriented box": the filter's outcodes and its
-// comparisons of entering planes), then that face's parameter alone on double words: 2, 0 or 1
-// (the plane through the face, lower or upper) and nothing when the filter cannot tell.
+// comparisons of entering planes), then that face's parameter alone on double words. Only on a
+// shot that hits (the caller, obb_double, runs after the classification): the sign of each
+// entering plane's d follows from its role only there. entering_face gives the plane (2i lower,
+// 2i + 1 upper, in the filter's unturned frame: only i is used), -1 for a source in the box, and
+// nothing when the filter cannot tell.
 template <class Shot>
 std::optional<int> entering_face(const Shot& x, const OrientedBox<double>& b) {
   constexpr bool segment = std::is_same_v<Shot, Segment<double>>;

@@ -68,8 +68,9 @@ struct Word {
 };
 
 // The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
-// every product here has its operands in [2^-600, 2^600] or is zero, so both give the same
-// pair). A build without -mfma has std::fma as a library call, so the paths built on these
+// where the operands lie in [2^-600, 2^600] or one is zero, as in oracle/enter.hpp's paths, both
+// give the same pair; ObbWords has no lower range guard, and a product whose error term
+// underflows may differ between the two by less than the 2^-1022 each bound allows for it). A build without -mfma has std::fma as a library call, so the paths built on these
 // (oracle/enter.hpp's sphere, oriented-box and triangle paths, about 7, 60 and 20 products a
 // call; the oriented-box casts' classification below) are compiled twice and the fused copy is
 // taken where the CPU has the instruction (robust::cpu_fma).
