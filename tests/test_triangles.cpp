@@ -811,3 +811,37 @@ TEMPLATE_TEST_CASE("stable polygon casts: a shot through a fan diagonal always h
     std::cout << "stable polygon casts at " << typeid(F).name() << ": " << meets << " shots through a diagonal, lost "
               << stable_lost << " (book: " << book_lost << ")\n";
 }
+
+TEMPLATE_TEST_CASE("stable polygon-sphere without checks decides as the nearest fan triangle's test",
+                   "[polygon][stable]", float, double) {
+  // stable::unchecked::intersect stops at the first fan triangle within rho^2; the stable
+  // tier's answer is the nearest triangle's test (book::detail::nearest_triangle). Equal on
+  // every family, the far magnitudes (squares that overflow) included, and equal to the checked
+  // stable::intersect wherever that takes the input.
+  using F = TestType;
+  const fuzz::Query q = fuzz::query_by_name("polygon-sphere");
+  std::uint64_t n = 0, hits = 0;
+  for (const fuzz::Family& f : fuzz::families(q))
+    for (int k : f.scales)
+      for (std::uint64_t i = 0; i < 100; ++i) {
+        const fuzz::Inputs in = fuzz::make_case(3, q, f, k, i);
+        Polygon<F> p;
+        p.n = int(in[0]);
+        for (int v = 0; v < p.n; ++v) p.vertex[v] = Vec3<F>(F(in[1 + 3 * v]), F(in[2 + 3 * v]), F(in[3 + 3 * v]));
+        const Sphere<F> s{Vec3<F>(F(in[25]), F(in[26]), F(in[27])), F(in[28])};
+        INFO(f.name << "/" << k << " case " << i);
+        const bool fast = stable::unchecked::intersect(s, p);
+        REQUIRE(fast == book::detail::sphere_triangle_intersect(s, p.triangle(book::detail::nearest_triangle(p, s.center))));
+        bool checked;
+        try {
+          checked = stable::intersect(s, p);
+        } catch (const invalid_input&) {
+          continue;
+        }
+        REQUIRE(fast == checked);
+        ++n;
+        hits += fast;
+      }
+  REQUIRE(n > 3000);  // every family and scale, 100 cases each, those the checked query takes
+  REQUIRE(hits > n / 10);
+}

@@ -49,9 +49,21 @@ Cast<F> cast(const Ray<F>& r, const Polygon<F>& p, unsigned w = want_all) {
 }
 
 namespace unchecked {
+// The nearest fan triangle's test, |x - c|^2 <= rho^2 for its closest point x: that squared
+// distance is the smallest of the fan's (nearest_triangle's own values, each computed once),
+// so it is within rho^2 exactly when some triangle's is, and the first such ends the loop. (A
+// NaN distance, from inputs whose squares overflow, is never taken as the nearest after the
+// first triangle; a NaN first one is, and its test fails: as nearest_triangle's.)
 template <class F>
 bool intersect(const Sphere<F>& s, const Polygon<F>& p) {
-  return book::detail::sphere_triangle_intersect(s, p.triangle(book::detail::nearest_triangle(p, s.center)));
+  const F rr = s.radius * s.radius;
+  for (int k = 0; k < p.triangles(); ++k) {
+    const Vec3<F> x = book::detail::closest_on_triangle(p.triangle(k), s.center);
+    const F d = Vec3<F>(x - s.center).squaredNorm();
+    if (d <= rr) return true;
+    if (k == 0 && d != d) return false;
+  }
+  return false;
 }
 template <class Shot, class F>
 bool hit(const Shot& s, const Polygon<F>& p) {
