@@ -656,3 +656,53 @@ TEST_CASE("the oriented-box casts' double words decide as the solid at Gmpq, and
   CHECK(decided > 100 * words_left);
   CHECK(left_by_filter > 0);  // the long-range cases the static bounds cannot call are here
 }
+
+TEST_CASE("the oriented-box casts refuse what check() refuses, a bad value in every slot",
+          "[oracle-classify][errors][obb]") {
+  // oracle::classify and oracle::enter on a segment or a ray and an oriented box: the message of
+  // the book's checks in their order, for a NaN, an infinity, a negative or huge value in each
+  // input, on frames that are valid, and on frames whose axes are exactly dependent.
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double big = std::numeric_limits<double>::max();
+  // slots: 0-2 source, 3-5 target or direction, 6-8 centre, 9-11 extents, 12-20 the three axes
+  struct Base {
+    double x[21];
+  };
+  const std::vector<Base> bases = {
+      {{-3, 0.5, 0.25, 3, 0.5, 0.25, 0, 0, 0, 1, 2, 0.5, 0.6, 0.8, 0, -0.8, 0.6, 0, 0, 0, 1}},    // a hit
+      {{-3, 4, 0.25, 3, 4, 0.25, 0, 0, 0, 1, 2, 0.5, 0.6, 0.8, 0, -0.8, 0.6, 0, 0, 0, 1}},        // a miss
+      {{-3, 0.5, 0.25, -5, 0.5, 0.25, 0, 0, 0, 1, 2, 0.5, 0.6, 0.8, 0, -0.8, 0.6, 0, 0, 0, 1}},  // away
+      {{0.1, 0.2, 0.3, 0.1, 0.2, 0.3, 0, 0, 0, 1, 2, 0.5, 1, 1, 0, 0, 1, 1, 1, 2, 1}},            // zero length; a2 = a0 + a1
+      {{-3, 0.5, 0.25, 3, 0.5, 0.25, 0, 0, 0, 1, 2, 0.5, 1, 0, 0, 1, 0, 0, 0, 0, 1}},            // a repeated axis
+  };
+  const std::vector<double> bad = {inf, -inf, nan, -1, -0x1p-1074, big, -big, 0x1p-1074, 0, -0.0};
+  int refused = 0, decided = 0;
+  for (const Base& base : bases)
+    for (int slot = 0; slot < 21; ++slot)
+      for (double v : bad) {
+        double x[21];
+        std::copy(base.x, base.x + 21, x);
+        x[slot] = v;
+        const Vec3<double> p(x[0], x[1], x[2]), q(x[3], x[4], x[5]);
+        const OrientedBox<double> b{Vec3<double>(x[6], x[7], x[8]), Vec3<double>(x[9], x[10], x[11]),
+                                    {Vec3<double>(x[12], x[13], x[14]), Vec3<double>(x[15], x[16], x[17]),
+                                     Vec3<double>(x[18], x[19], x[20])}};
+        const Segment<double> seg{p, q};
+        const Ray<double> ray{p, q};
+        CAPTURE(slot, v, base.x[3], base.x[12]);
+        const std::string seg_b = msg([&] { check(seg, "segment"), check(b, "oriented box"); });
+        const std::string ray_b = msg([&] { check(ray, "ray"), check(b, "oriented box"); });
+        Stage st = Stage::rational;
+        CHECK(msg([&] { oracle::classify(seg, b, &st); }) == seg_b);
+        decided += seg_b == "no exception" && st == Stage::filter;
+        CHECK(msg([&] { oracle::classify(ray, b); }) == ray_b);
+        CHECK(msg([&] { oracle::enter(seg, b); }) == seg_b);
+        CHECK(msg([&] { oracle::enter(ray, b); }) == ray_b);
+        refused += (seg_b != "no exception") + (ray_b != "no exception");
+        // where the inputs are valid, the answer is every stage's (the rational one here)
+        if (seg_b == "no exception" && std::fabs(x[0]) < 1e100 && std::fabs(x[3]) < 1e100)
+          CHECK(oracle::classify(seg, b) == oracle::sat::at_stage(Stage::rational, seg, b));
+      }
+  CHECK(refused > 300);
+  CHECK(decided > 100);
+}
