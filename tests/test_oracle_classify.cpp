@@ -502,23 +502,17 @@ namespace {
 // answer and the stage that gave it.
 template <class A>
 bool tri_hand(const A& a, const Triangle<double>& t, Stage* st) {
-  int rat, exp, fil;
-  bool got;
-  if constexpr (std::is_same_v<A, Triangle<double>>) {
-    namespace tt = oracle::triangle_triangle;
-    rat = tt::at_stage(Stage::rational, a, t), exp = tt::at_stage(Stage::expansion, a, t);
-    fil = tt::at_stage(Stage::filter, a, t);
-    got = oracle::classify(a, t, st);
-    if (exp != tt::unknown) REQUIRE(exp == rat);
-    if (fil != tt::unknown) REQUIRE(fil == rat);
-  } else {
-    namespace rt = oracle::ray_triangle;
-    rat = rt::at_stage(Stage::rational, a, t), exp = rt::at_stage(Stage::expansion, a, t);
-    fil = rt::at_stage(Stage::filter, a, t);
-    got = oracle::classify(a, t, st);
-    if (exp != rt::unknown) REQUIRE(exp == rat);
-    if (fil != rt::unknown) REQUIRE(fil == rat);
-  }
+  static_assert(oracle::ray_triangle::unknown == oracle::triangle_triangle::unknown);
+  const auto at = [&](Stage s) {
+    if constexpr (std::is_same_v<A, Triangle<double>>)
+      return oracle::triangle_triangle::at_stage(s, a, t);
+    else
+      return oracle::ray_triangle::at_stage(s, a, t);
+  };
+  const int rat = at(Stage::rational), exp = at(Stage::expansion), fil = at(Stage::filter);
+  const bool got = oracle::classify(a, t, st);
+  if (exp != oracle::ray_triangle::unknown) REQUIRE(exp == rat);
+  if (fil != oracle::ray_triangle::unknown) REQUIRE(fil == rat);
   REQUIRE(int(got) == rat);
   return got;
 }
