@@ -121,15 +121,14 @@
 //
 // ---- An oriented box: the solid's faces, each a plane as the triangle's ---------------------
 // The truth is the solid's cast (solid/obb.hpp): with the face normals n_i = a_{i+1} x a_{i+2},
-// turned by sign(delta), delta = a_0 . n_0, the box is [-H, H] in U_i = n_i . (p - c), H_i =
-// |delta| h_i, and Algorithm 3.3 runs there: lambda_enter is the largest lambda over the faces
-// the source lies outside of (U_i(s) < -H_i or > H_i), the parameter where U_i(s + lambda d) =
-// -+H_i. Each n_i is a cross product of exact doubles (cross_term, its cross terms 0), delta a
-// dot_words of a_0 and n_0 whose sign must be certain, H_i = delta h_i a double word (the
-// product of the high parts exact, delta.lo h_i rounded: 2u of the two, plus delta's bound times
-// h_i). The outcode bits are the certain signs of U_i(s) + H_i and U_i(s) - H_i (a two_sum of
-// the high parts, the rest in double: 2u of it, plus both bounds; an exact zero is on the face,
-// not outside it); undecided: the exact path. A face's plane is g(l) = n_i . (s - c + l d) -+ H_i,
+// turned by sign(delta), delta = a_i . n_i (the same determinant for every i), the box is
+// [-H, H] in U_i = n_i . (p - c), H_i = |delta| h_i, and Algorithm 3.3 runs there: lambda_enter
+// is the largest lambda over the faces the source lies outside of (U_i(s) < -H_i or > H_i), the
+// parameter where U_i(s + lambda d) = -+H_i. Face by face (face_entry): n_i a cross product of
+// exact doubles (cross_term, its cross terms 0), delta a dot_words of a_i and n_i whose sign
+// must be certain, H_i = delta h_i a double word (scale_word, word_bounds.hpp). The outcode bits
+// are the certain signs of U_i(s) + H_i and U_i(s) - H_i (add_words and sign_of: never an exact
+// 0, so a source on a face is uncertain); undecided: the exact path. A face's plane is g(l) = n_i . (s - c + l d) -+ H_i,
 // linear in l: plane_parameter with the offset -+H_i. Rounding is monotone, so the largest of
 // the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
 // at most 2^200 (H_i is of degree 4).
@@ -137,9 +136,8 @@
 // ObbFilter) in double gives the outcodes with certain signs and, for two entering planes a, b,
 // the sign of lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j) (on a hit each entering
 // plane is crossed, so d has the sign of its role) against the bound it derives for its pairs.
-// Where those calls are certain, lambda_enter is the parameter of the largest, and only its
-// normal, delta = a_i . n_i (the same determinant for every i), H_i, U_i and that plane's
-// parameter are formed on double words (about 22 exact products instead of 60); no entering
+// Where those calls are certain, lambda_enter is that face's entry alone (about 22 exact
+// products instead of some 60 for three faces); no entering
 // plane: the source is in the box, lambda_enter = 0. Where the filter cannot tell (two faces
 // entered at nearly the same parameter, an outcode near 0), every face as above.
 //
@@ -562,7 +560,7 @@ std::optional<int> entering_face(const Shot& x, const OrientedBox<double>& b) {
       const int lo = f.src_lo(i), hi = f.src_hi(i);
       if (lo == staged::unknown || hi == staged::unknown) {
         open = true;
-        break;
+        continue;
       }
       const int plane = lo < 0 ? 2 * i : hi > 0 ? 2 * i + 1 : -1;
       if (plane < 0) continue;
@@ -580,18 +578,14 @@ std::optional<int> entering_face(const Shot& x, const OrientedBox<double>& b) {
   }
   return std::nullopt;
 }
-template <class Mul, class Shot>
-std::optional<double> obb_one_face(const Shot& x, const OrientedBox<double>& b) {
-  const std::optional<int> face = entering_face(x, b);
-  if (!face) return std::nullopt;
-  if (*face < 0) return 0.0;  // the source in the box
-  const int i = *face / 2;
-  Pair<double> sc[3], d[3], a[3][3];
-  shot_pairs(x, b.center, sc, d);
-  for (int k = 0; k < 3; ++k)
-    for (int c = 0; c < 3; ++c) a[k][c] = {b.axis[k][c], 0.0};
-  // n_i = a_{i+1} x a_{i+2}, delta = a_i . n_i (the same determinant for every i), turned so
-  // that delta > 0, and the face's plane as in obb_double below
+// Face i's entry on double words (header, "An oriented box"): n_i = a_{i+1} x a_{i+2}, delta =
+// a_i . n_i (the same determinant for every i) turned so that delta > 0, H_i = delta h_i, the
+// source's coordinate U_i and its certain outcode, then the plane's parameter; 0 where the
+// source lies between the face's two planes (no entry through them), nothing where a sign or
+// the rounding is uncertain.
+template <class Mul>
+std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],
+                                 const Pair<double> (&a)[3][3], double h, int i) {
   Word n[3];
   cross_words<Mul>(a[(i + 1) % 3], a[(i + 2) % 3], n);
   const double zero[3] = {0, 0, 0};
@@ -601,10 +595,12 @@ std::optional<double> obb_one_face(const Shot& x, const OrientedBox<double>& b) 
     delta = negated(delta);
     for (auto& c : n) c = negated(c);
   }
-  const Word H = scale_word<Mul>(delta, b.extent[i]);
+  const Word H = scale_word<Mul>(delta, h);
   const Word U = dot_words<Mul>(sc, zero, n);
+  // U + H < 0: outside the lower plane; U - H > 0: outside the upper one (sign_of is never 0)
   const int lower = sign_of(add_words(U, H, 1)), upper = sign_of(add_words(U, H, -1));
-  if (lower == staged::unknown || upper == staged::unknown || (lower >= 0 && upper <= 0)) return std::nullopt;
+  if (lower == staged::unknown || upper == staged::unknown) return std::nullopt;
+  if (lower > 0 && upper < 0) return 0.0;
   return plane_parameter<Mul>(sc, d, n, U, lower < 0 ? H : negated(H));
 }
 
@@ -621,38 +617,15 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
     m = std::max({m, largest(a[k]), fabs(b.extent[k])});
   }
   if (!(m <= 0x1p200)) return std::nullopt;
-  if (const auto v = obb_one_face<Mul>(x, b)) return v;  // most hits; the faces one by one where it cannot tell
-  // the face normals n_i = a_{i+1} x a_{i+2}, delta = a_0 . n_0, turned so that delta > 0
-  Word n[3][3];
-  for (int i = 0; i < 3; ++i) cross_words<Mul>(a[(i + 1) % 3], a[(i + 2) % 3], n[i]);
-  const double zero[3] = {0, 0, 0};
-  Word delta = dot_words<Mul>(a[0], zero, n[0]);
-  if (!(magnitude_lo(delta) > 0)) return std::nullopt;
-  if (delta.v.hi < 0) {
-    delta.v = {-delta.v.hi, -delta.v.lo};
-    for (auto& ni : n)
-      for (auto& c : ni) c.v = {-c.v.hi, -c.v.lo};
+  // most hits: the entering face picked in double, its parameter alone
+  if (const std::optional<int> face = entering_face(x, b)) {
+    if (*face < 0) return 0.0;  // the source in the box
+    if (const auto v = face_entry<Mul>(sc, d, a, b.extent[*face / 2], *face / 2)) return v;
   }
+  // the others: every face, the largest entry (rounding is monotone)
   double best = 0.0;
   for (int i = 0; i < 3; ++i) {
-    // H_i = delta h_i as a word: the product of the high parts exact, delta.lo h_i rounded
-    const Word H = scale_word<Mul>(delta, b.extent[i]);
-    const Word U = dot_words<Mul>(sc, zero, n[i]);  // the source's coordinate
-    // U + H < 0: outside the lower face; U - H > 0: outside the upper one (certain signs)
-    auto side = [&](double sg) -> int {
-      const Pair<double> S = robust::two_sum(U.v.hi, sg * H.v.hi);
-      const double rest = S.lo + (U.v.lo + sg * H.v.lo);
-      const double v = S.hi + rest;
-      const double e = (U.e + H.e + 2 * uu * (fabs(rest) + fabs(v))) * (1 + 4 * uu);
-      if (v == 0 && e == 0) return 0;
-      if (fabs(v) * (1 - 2 * uu) > e) return v > 0 ? 1 : -1;
-      return 2;
-    };
-    const int lower = side(1), upper = side(-1);
-    if (lower == 2 || upper == 2) return std::nullopt;
-    if (lower >= 0 && upper <= 0) continue;  // between the two faces: no entry through them
-    const Word off = lower < 0 ? H : Word{{-H.v.hi, -H.v.lo}, H.e};
-    const auto v = plane_parameter<Mul>(sc, d, n[i], U, off);
+    const auto v = face_entry<Mul>(sc, d, a, b.extent[i], i);
     if (!v) return std::nullopt;
     best = std::max(best, *v);
   }
