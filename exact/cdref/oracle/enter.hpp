@@ -402,17 +402,18 @@ std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int
 template <class Mul = SplitProduct, class Shot>
 std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri);
 template <class Mul = SplitProduct, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b);
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, std::optional<int> face);
 
-// The first double path of a solid, with the products of Mul.
-template <class Mul, class Shot, class Solid>
-std::optional<double> first_double(const Shot& x, const Solid& y) {
+// The first double path of a solid, with the products of Mul (an oriented box's: with the
+// entering face, where the filter picked it).
+template <class Mul, class Shot, class Solid, class... Face>
+std::optional<double> first_double(const Shot& x, const Solid& y, const Face&... face) {
   if constexpr (std::is_same_v<Solid, Sphere<double>>)
     return sphere_first<Mul>(x, y);
   else if constexpr (std::is_same_v<Solid, Triangle<double>>)
     return triangle_double<Mul>(x, y);
   else
-    return obb_double<Mul>(x, y);
+    return obb_double<Mul>(x, y, face...);
 }
 
 // The double path with fused products where the CPU has them (x86-64: a copy compiled for the
@@ -420,20 +421,21 @@ std::optional<double> first_double(const Shot& x, const Solid& y) {
 // another architecture: the split copy, or std::fma as the compiler provides it).
 using robust::cpu_fma;
 #if CDREF_FMA_CLONES
-template <class Shot, class Solid>
-[[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y) {
-  return first_double<FusedProduct>(x, y);
+template <class Shot, class Solid, class... Face>
+[[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y,
+                                                                        const Face&... face) {
+  return first_double<FusedProduct>(x, y, face...);
 }
 #else
-template <class Shot, class Solid>
-std::optional<double> fused_double(const Shot& x, const Solid& y) {
-  return first_double<FusedProduct>(x, y);
+template <class Shot, class Solid, class... Face>
+std::optional<double> fused_double(const Shot& x, const Solid& y, const Face&... face) {
+  return first_double<FusedProduct>(x, y, face...);
 }
 #endif
-template <class Shot, class Solid>
-std::optional<double> solid_double(const Shot& x, const Solid& y) {
-  if (cpu_fma()) return fused_double(x, y);
-  return first_double<SplitProduct>(x, y);
+template <class Shot, class Solid, class... Face>
+std::optional<double> solid_double(const Shot& x, const Solid& y, const Face&... face) {
+  if (cpu_fma()) return fused_double(x, y, face...);
+  return first_double<SplitProduct>(x, y, face...);
 }
 
 // The classification's answer, then on a hit the double path (a value, or nothing when it
@@ -542,16 +544,9 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
 // shot that hits (the caller, obb_double, runs after the classification): the sign of each
 // entering plane's d follows from its role only there. entering_face gives the plane (2i lower,
 // 2i + 1 upper, in the filter's unturned frame: only i is used), -1 for a source in the box, and
-// nothing when the filter cannot tell.
-template <class Shot>
-std::optional<int> entering_face(const Shot& x, const OrientedBox<double>& b) {
-  constexpr bool segment = std::is_same_v<Shot, Segment<double>>;
-  const Vec3<double>* rt;
-  if constexpr (segment)
-    rt = &x.target;
-  else
-    rt = &x.direction;
-  staged::ObbFilter f(x.source, *rt, b, segment);
+// nothing when the filter cannot tell. `f` is the classification's own filter (tightened there
+// or here where its static bounds leave a sign open).
+inline std::optional<int> entering_face(staged::ObbFilter& f) {
   if (!f.ok) return std::nullopt;
   for (int pass = 0; pass < 2; ++pass) {
     int best = -1, entering = 0;
@@ -574,7 +569,8 @@ std::optional<int> entering_face(const Shot& x, const OrientedBox<double>& b) {
       else if (c > 0) best = plane;
     }
     if (!open) return entering == 0 ? -1 : best;
-    if (pass == 0) f.tighten();
+    if (f.tight) break;
+    f.tighten();
   }
   return std::nullopt;
 }
@@ -606,7 +602,7 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
 
 // The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
 template <class Mul, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, std::optional<int> face) {
   using std::fabs;
   if (!robust::in_certified_range(x, b)) return std::nullopt;
   Pair<double> sc[3], d[3], a[3][3];
@@ -618,7 +614,7 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b) {
   }
   if (!(m <= 0x1p200)) return std::nullopt;
   // most hits: the entering face picked in double, its parameter alone
-  if (const std::optional<int> face = entering_face(x, b)) {
+  if (face) {
     if (*face < 0) return 0.0;  // the source in the box
     if (const auto v = face_entry<Mul>(sc, d, a, b.extent[*face / 2], *face / 2)) return v;
   }
@@ -637,9 +633,14 @@ Entry triangle_enter(const Shot& x, const Triangle<double>& tri, bool* exact_use
   return entry_of(classify_triangle_cast(x, tri, nullptr), x, tri, exact_used, [&] { return solid_double(x, tri); });
 }
 
+// The classification's first stage kept (its answer where it decides; sat::run's stages where
+// it does not), then on a hit the entering face from its signs.
 template <class Shot>
 Entry obb_enter(const Shot& x, const OrientedBox<double>& b, bool* exact_used) {
-  return entry_of(sat::run(nullptr, x, b), x, b, exact_used, [&] { return solid_double(x, b); });
+  staged::ObbFilter f = staged::obb_filter(x, b);
+  const int r = staged::filter(f);
+  const bool hit = r != staged::unknown ? r == 1 : sat::run(nullptr, x, b);
+  return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, entering_face(f)); });
 }
 
 }  // namespace enter_detail

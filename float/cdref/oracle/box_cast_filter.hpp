@@ -18,6 +18,7 @@
 #include <cdref/primitives.hpp>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace cdref::oracle::staged {
 
@@ -196,7 +197,7 @@ int hit_box_logic(const P& p) {
 struct ObbFilter {
   double sL[3], sU[3], tL[3], tU[3], d[3];
   double es[3], et[3], ed[3], ps[3], dp[3], fc = 0, fo = 0, fd = 0;
-  bool bounded, ok = false;
+  bool bounded, ok = false, tight = false;
   const Vec3<double>& src;
   const Vec3<double>& rt;
   const OrientedBox<double>& box;
@@ -251,6 +252,7 @@ struct ObbFilter {
   // The bounds from each quantity's own sum of monomials (P_i, d+_i), for the cases the static
   // ones leave undecided (a shot from far away, a frame with small components).
   void tighten() {
+    tight = true;
     const auto& a = box.axis;
     double na[3][3];
     for (int i = 0; i < 3; ++i) {
@@ -329,17 +331,28 @@ struct ObbFilter {
     return miss ? 0 : (undecided ? unknown : 1);
   }
 };
-inline int filter(ObbFilter&& f) {
+// The filter on a shot and an oriented box; the caller may keep it (oracle/enter.hpp picks the
+// entering face from its signs).
+template <class Shot>
+ObbFilter obb_filter(const Shot& x, const OrientedBox<double>& box) {
+  if constexpr (std::is_same_v<Shot, Segment<double>>)
+    return ObbFilter(x.source, x.target, box, true);
+  else
+    return ObbFilter(x.source, x.direction, box, false);
+}
+inline int filter(ObbFilter& f) {
   if (!f.ok) return unknown;
   if (const int r = hit_box_logic(f); r != unknown) return r;
   f.tighten();
   return hit_box_logic(f);
 }
 inline int filter(const Segment<double>& seg, const OrientedBox<double>& box) {
-  return filter(ObbFilter(seg.source, seg.target, box, true));
+  ObbFilter f = obb_filter(seg, box);
+  return filter(f);
 }
 inline int filter(const Ray<double>& ray, const OrientedBox<double>& box) {
-  return filter(ObbFilter(ray.source, ray.direction, box, false));
+  ObbFilter f = obb_filter(ray, box);
+  return filter(f);
 }
 
 inline int filter(const Segment<double>& seg, const Box<double>& box) {
