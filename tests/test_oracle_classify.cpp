@@ -269,7 +269,7 @@ std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
   else {
     if (stage != 1) return std::nullopt;
     std::optional<double> v;
-    std::optional<int> face;  // an oriented box's entering face, from the classification's filter
+    std::optional<oracle::enter_detail::EnteringFace> face;  // an oriented box's entering face, from its filter
     if constexpr (std::is_same_v<Solid, OrientedBox<double>>) {
       oracle::staged::ObbFilter filter = oracle::staged::obb_filter(x, y);
       oracle::staged::filter(filter);

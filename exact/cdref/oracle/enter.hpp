@@ -133,13 +133,24 @@
 // the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
 // at most 2^200 (H_i is of degree 4).
 // First, though, the entering face alone: the classification's first stage (box_cast_filter.hpp,
-// ObbFilter) in double gives the outcodes with certain signs and, for two entering planes a, b,
-// the sign of lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j) (on a hit each entering
-// plane is crossed, so d has the sign of its role) against the bound it derives for its pairs.
-// Where those calls are certain, lambda_enter is that face's entry alone (about 22 exact
-// products instead of some 60 for three faces); no entering
-// plane: the source is in the box, lambda_enter = 0. Where the filter cannot tell (two faces
-// entered at nearly the same parameter, an outcode near 0), every face as above.
+// ObbFilter, kept from the classification) in double gives the outcodes with certain signs and,
+// for two entering planes a, b, the sign of lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j)
+// (on a hit each entering plane is crossed, so d has the sign of its role) against the bound it
+// derives for its pairs. Where those calls are certain, lambda_enter is that face's entry alone
+// (one_face_entry); no entering plane: the source is in the box, lambda_enter = 0. The face's
+// plane is the one through c - tau a_i (tau = h_i sign(delta) for the lower plane, -h_i
+// sign(delta) for the upper: U_i(c - tau a_i) = -tau delta = -+H_i; sign(delta) = det3_sign of the
+// axes, exact), so g(l) = n_i . w(l), w = (s - c) + l d + tau a_i, with no H_i to form:
+// w's components are three exact high terms (s - c's pair, two exact products) and six low
+// ones summed in double (7u of their magnitudes), n_i a cross product of doubles
+// (cross_of_doubles: two exact products a component, 3u of its low terms), g one dot_words.
+// l0 = -N / D from the filter's own N = U_i(s) +- H_i and D = n_i . d (in double: l0 needs no
+// bound), and D's bound from the filter (d_bound: |D~ - D| <= eD, D_lo = |D~| - eD > 0); then
+// delta = fl(-g^ / D~) is off from -g / D by (eg + |g^| eD / |D~|) / D_lo + u |delta| (eg: g's
+// word bound and its low part), and l0 + delta as a double word (two_sum), the bound doubled,
+// Bounded2::try_rounded, as for the triangle. About 11 exact products instead of some 60 for
+// three faces. Where the filter cannot tell (two faces entered at nearly the same parameter, an
+// outcode near 0) or the face's rounding is uncertain, every face as above.
 //
 // Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
 #pragma once
@@ -401,8 +412,9 @@ std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int
 // (the triangle's and the oriented box's double paths: below)
 template <class Mul = SplitProduct, class Shot>
 std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri);
+struct EnteringFace;
 template <class Mul = SplitProduct, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, std::optional<int> face);
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face);
 
 // The first double path of a solid, with the products of Mul (an oriented box's: with the
 // entering face, where the filter picked it).
@@ -543,10 +555,15 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
 // comparisons of entering planes), then that face's parameter alone on double words. Only on a
 // shot that hits (the caller, obb_double, runs after the classification): the sign of each
 // entering plane's d follows from its role only there. entering_face gives the plane (2i lower,
-// 2i + 1 upper, in the filter's unturned frame: only i is used), -1 for a source in the box, and
-// nothing when the filter cannot tell. `f` is the classification's own filter (tightened there
-// or here where its static bounds leave a sign open).
-inline std::optional<int> entering_face(staged::ObbFilter& f) {
+// 2i + 1 upper, in the filter's unturned frame), -1 for a source in the box, and nothing when
+// the filter cannot tell; with the plane, the filter's values of its offset at the source
+// (N = Y_i(s) -+ H_i), of D = n_i . d and D's bound. `f` is the classification's own filter
+// (tightened there or here where its static bounds leave a sign open).
+struct EnteringFace {
+  int plane;
+  double N = 0, D = 0, eD = 0;
+};
+inline std::optional<EnteringFace> entering_face(staged::ObbFilter& f) {
   if (!f.ok) return std::nullopt;
   for (int pass = 0; pass < 2; ++pass) {
     int best = -1, entering = 0;
@@ -568,7 +585,11 @@ inline std::optional<int> entering_face(staged::ObbFilter& f) {
       if (c == staged::unknown) open = true;
       else if (c > 0) best = plane;
     }
-    if (!open) return entering == 0 ? -1 : best;
+    if (!open) {
+      if (entering == 0) return EnteringFace{-1};
+      const int i = best / 2;
+      return EnteringFace{best, best % 2 == 0 ? f.sL[i] : f.sU[i], f.d[i], f.d_bound(i)};
+    }
     if (f.tight) break;
     f.tighten();
   }
@@ -601,8 +622,51 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
 }
 
 // The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
+// The entering face's parameter alone (header, "An oriented box"): the face's plane through
+// its point c -+ h_i sign(delta) a_i, g(l) = n_i . (s - c + l d + tau a_i), l0 = -N / D from
+// the filter, g(l0) on double words, the correction by the filter's D; nothing where delta's
+// sign, D's or the rounding is uncertain.
+template <class Mul>
+std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],
+                                     const OrientedBox<double>& b, const EnteringFace& e) {
+  using std::fabs;
+  const int i = e.plane / 2;
+  const double D_lo = (fabs(e.D) - e.eD) * (1 - 2 * uu);
+  if (!(D_lo > 0)) return std::nullopt;
+  const double l0 = -e.N / e.D;
+  if (!std::isfinite(l0) || fabs(l0) > 0x1p250) return std::nullopt;
+  const int det = det3_sign(b.axis[0], b.axis[1], b.axis[2]);  // delta = det[a0 a1 a2]: its sign
+  if (det == 0) return std::nullopt;
+  const Vec3<double>& ai = b.axis[i];
+  const double tau = (e.plane % 2 == 0 ? det : -det) * b.extent[i];
+  Word n[3];
+  cross_of_doubles<Mul>(b.axis[(i + 1) % 3], b.axis[(i + 2) % 3], n);
+  // w = s - c + l0 d + tau a_i: three exact high terms (two exact products), six low ones in
+  // double (5 additions and l0 d.lo rounded: 7u of their magnitudes)
+  Pair<double> w[3];
+  double ew[3];
+  for (int k = 0; k < 3; ++k) {
+    const Pair<double> P = Mul::prod(l0, d[k].hi), Q = Mul::prod(tau, ai[k]);
+    const Pair<double> T1 = robust::two_sum(sc[k].hi, P.hi), T2 = robust::two_sum(T1.hi, Q.hi);
+    const double zl = l0 * d[k].lo;
+    const double lows = ((T1.lo + T2.lo) + sc[k].lo) + ((P.lo + Q.lo) + zl);
+    w[k] = robust::two_sum(T2.hi, lows);
+    ew[k] = 7 * uu * ((fabs(T1.lo) + fabs(T2.lo)) + fabs(sc[k].lo) + ((fabs(P.lo) + fabs(Q.lo)) + fabs(zl))) +
+            8 * eta;
+  }
+  const Word G = dot_words<Mul>(w, ew, n);
+  const double g = G.v.hi, eg = G.e + fabs(G.v.lo);
+  // lambda* = l0 - g_exact / D_exact; delta = fl(-g / D) is off by (eg + |g| eD / |D|) / D_lo + u |delta|
+  const double delta = -g / e.D;
+  const double err = 2 * ((eg + fabs(g) * e.eD / fabs(e.D)) / D_lo + uu * fabs(delta)) + eta;
+  const Pair<double> z = robust::two_sum(l0, delta);
+  double v;
+  if (!std::isfinite(err) || !Bounded2::within(z.hi, z.lo, err).try_rounded(v)) return std::nullopt;
+  return v;
+}
+
 template <class Mul, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, std::optional<int> face) {
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face) {
   using std::fabs;
   if (!robust::in_certified_range(x, b)) return std::nullopt;
   Pair<double> sc[3], d[3], a[3][3];
@@ -615,8 +679,8 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, st
   if (!(m <= 0x1p200)) return std::nullopt;
   // most hits: the entering face picked in double, its parameter alone
   if (face) {
-    if (*face < 0) return 0.0;  // the source in the box
-    if (const auto v = face_entry<Mul>(sc, d, a, b.extent[*face / 2], *face / 2)) return v;
+    if (face->plane < 0) return 0.0;  // the source in the box
+    if (const auto v = one_face_entry<Mul>(sc, d, b, *face)) return v;
   }
   // the others: every face, the largest entry (rounding is monotone)
   double best = 0.0;

@@ -286,6 +286,10 @@ struct ObbFilter {
   int tgt_lo(int i) const { return sign_of(tL[i], et[i]); }
   int tgt_hi(int i) const { return sign_of(tU[i], et[i]); }
   int dir_sign(int i) const { return sign_of(d[i], ed[i]); }  // a ray's; never a certain 0
+  // |d~_i - n_i . (t - s)| (a segment) or |d~_i - n_i . r| (a ray): a ray's ed_i; a segment's
+  // d~ = fl(Y~(t) - Y~(s)) carries X's rounding and the difference besides (gamma_6 of each
+  // n+ . |X| and u |d~|, |d~| <= (1 + 7u) d+): 8u d+ (oracle/enter.hpp takes D from here)
+  double d_bound(int i) const { return bounded ? 8 * u * dp[i] + fd : ed[i]; }
   // sign(lambda_a - lambda_b): a an entering plane, b an exiting one (2i lower, 2i + 1 upper)
   int compare(int a, int b) const {
     const int i = a / 2, j = b / 2;

@@ -92,6 +92,20 @@ inline Word cross_term(const Pair<double>& aj, const Pair<double>& bk, const Pai
           8 * uu * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
               2 * uu * uu * M * (1 + 4 * uu) + 16 * eta};
 }
+// a x b for doubles (an oriented box's axes): each component p - q of two exact products, its
+// three low terms summed in double (2 additions: gamma_2 < 3u of their magnitudes; a product
+// whose low term underflows is off by at most 2^-1075).
+template <class Mul = SplitProduct>
+inline void cross_of_doubles(const Vec3<double>& a, const Vec3<double>& b, Word (&n)[3]) {
+  using std::fabs;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const Pair<double> P1 = Mul::prod(a[j], b[k]), P2 = Mul::prod(a[k], b[j]);
+    const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
+    const double lo = (S.lo + P1.lo) - P2.lo;
+    n[i] = {robust::two_sum(S.hi, lo), 3 * uu * ((fabs(S.lo) + fabs(P1.lo)) + fabs(P2.lo)) + 4 * eta};
+  }
+}
 template <class Mul = SplitProduct>
 inline void cross_words(const Pair<double> (&a)[3], const Pair<double> (&b)[3], Word (&n)[3]) {
   for (int i = 0; i < 3; ++i) {
