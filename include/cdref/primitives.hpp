@@ -238,8 +238,10 @@ void check(const Polygon<T>& p, const char* name = "polygon") {
   for (int k = 0; k < p.n; ++k) detail::check_finite(p.vertex[k], name, field[k]);
 }
 
+// check(OrientedBox) that also returns the sign of det[a0 a1 a2] (1 or -1), which it decides
+// anyway (the oracle's oriented-box entry takes it: oracle/enter.hpp).
 template <class T>
-void check(const OrientedBox<T>& b, const char* name = "oriented box") {
+int checked_orientation(const OrientedBox<T>& b, const char* name = "oriented box") {
   static const char* const field[3] = {"axis 0", "axis 1", "axis 2"};
   detail::check_finite(b.center, name, "centre");
   detail::check_finite(b.extent, name, "extent");
@@ -247,8 +249,14 @@ void check(const OrientedBox<T>& b, const char* name = "oriented box") {
   for (int i = 0; i < 3; ++i)
     if (b.extent[i] < T(0)) [[unlikely]]
       detail::negative_along(b.extent[i], name, "extent is negative along", "axis " + std::to_string(i));
-  if (det3_sign(b.axis[0], b.axis[1], b.axis[2]) == 0) [[unlikely]]
+  const int det = det3_sign(b.axis[0], b.axis[1], b.axis[2]);
+  if (det == 0) [[unlikely]]
     detail::fail(name, "axes are linearly dependent (det[a0 a1 a2] = 0 exactly)");
+  return det;
+}
+template <class T>
+void check(const OrientedBox<T>& b, const char* name = "oriented box") {
+  checked_orientation(b, name);
 }
 
 }  // namespace cdref

@@ -139,18 +139,23 @@
 // derives for its pairs. Where those calls are certain, lambda_enter is that face's entry alone
 // (one_face_entry); no entering plane: the source is in the box, lambda_enter = 0. The face's
 // plane is the one through c - tau a_i (tau = h_i sign(delta) for the lower plane, -h_i
-// sign(delta) for the upper: U_i(c - tau a_i) = -tau delta = -+H_i; sign(delta) = det3_sign of the
-// axes, exact), so g(l) = n_i . w(l), w = (s - c) + l d + tau a_i, with no H_i to form:
-// w's components are three exact high terms (s - c's pair, two exact products) and six low
-// ones summed in double (7u of their magnitudes), n_i a cross product of doubles
-// (cross_of_doubles: two exact products a component, 3u of its low terms), g one dot_words.
+// sign(delta) for the upper: U_i(c - tau a_i) = -tau delta = -+H_i; sign(delta) = det3_sign of
+// the axes, exact, which the input check decides: checked_orientation), so g(l) = n_i . w(l),
+// w = (s - c) + l d + tau a_i, with no H_i to form. w's components are three exact high terms
+// (s - c's pair, two exact products) and six low ones summed in double (5 additions and the
+// rounded l0 d.lo: 7u of their magnitudes); n_i is a cross product of doubles
+// (cross_of_doubles: two exact products a component, 3u of its low terms); g is one dot_words.
 // l0 = -N / D from the filter's own N = U_i(s) +- H_i and D = n_i . d (in double: l0 needs no
 // bound), and D's bound from the filter (d_bound: |D~ - D| <= eD, D_lo = |D~| - eD > 0); then
 // delta = fl(-g^ / D~) is off from -g / D by (eg + |g^| eD / |D~|) / D_lo + u |delta| (eg: g's
 // word bound and its low part), and l0 + delta as a double word (two_sum), the bound doubled,
 // Bounded2::try_rounded, as for the triangle. About 11 exact products instead of some 60 for
-// three faces. Where the filter cannot tell (two faces entered at nearly the same parameter, an
-// outcode near 0) or the face's rounding is uncertain, every face as above.
+// three faces. Range: every input at most 2^200 and |l0| at most 2^250 (every product below
+// 2^860, no split overflows); it needs no in_certified_range: a product or a sum that
+// underflows is off by at most 2^-1075, which the eta terms of every bound above cover (the
+// words' 4, 8 and 64 eta, the last + eta), and the filter's values hold within its own range
+// (ObbFilter::ok). Where the filter cannot tell (two faces entered at nearly the same
+// parameter, an outcode near 0) or the face's rounding is uncertain, every face as above.
 //
 // Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
 #pragma once
@@ -559,11 +564,13 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
 // the filter cannot tell; with the plane, the filter's values of its offset at the source
 // (N = Y_i(s) -+ H_i), of D = n_i . d and D's bound. `f` is the classification's own filter
 // (tightened there or here where its static bounds leave a sign open).
+// `det` is the sign of det[a0 a1 a2] (checked_orientation, primitives.hpp).
 struct EnteringFace {
   int plane;
   double N = 0, D = 0, eD = 0;
+  int det = 0;
 };
-inline std::optional<EnteringFace> entering_face(staged::ObbFilter& f) {
+inline std::optional<EnteringFace> entering_face(staged::ObbFilter& f, int det) {
   if (!f.ok) return std::nullopt;
   for (int pass = 0; pass < 2; ++pass) {
     int best = -1, entering = 0;
@@ -588,7 +595,7 @@ inline std::optional<EnteringFace> entering_face(staged::ObbFilter& f) {
     if (!open) {
       if (entering == 0) return EnteringFace{-1};
       const int i = best / 2;
-      return EnteringFace{best, best % 2 == 0 ? f.sL[i] : f.sU[i], f.d[i], f.d_bound(i)};
+      return EnteringFace{best, best % 2 == 0 ? f.sL[i] : f.sU[i], f.d[i], f.d_bound(i), det};
     }
     if (f.tight) break;
     f.tighten();
@@ -624,8 +631,8 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
 // The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
 // The entering face's parameter alone (header, "An oriented box"): the face's plane through
 // its point c -+ h_i sign(delta) a_i, g(l) = n_i . (s - c + l d + tau a_i), l0 = -N / D from
-// the filter, g(l0) on double words, the correction by the filter's D; nothing where delta's
-// sign, D's or the rounding is uncertain.
+// the filter, g(l0) on double words, the correction by the filter's D; nothing where D's sign or
+// the rounding is uncertain.
 template <class Mul>
 std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],
                                      const OrientedBox<double>& b, const EnteringFace& e) {
@@ -635,10 +642,9 @@ std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<dou
   if (!(D_lo > 0)) return std::nullopt;
   const double l0 = -e.N / e.D;
   if (!std::isfinite(l0) || fabs(l0) > 0x1p250) return std::nullopt;
-  const int det = det3_sign(b.axis[0], b.axis[1], b.axis[2]);  // delta = det[a0 a1 a2]: its sign
-  if (det == 0) return std::nullopt;
+  if (e.det == 0) return std::nullopt;  // (delta = det[a0 a1 a2] != 0 once the box is checked)
   const Vec3<double>& ai = b.axis[i];
-  const double tau = (e.plane % 2 == 0 ? det : -det) * b.extent[i];
+  const double tau = (e.plane % 2 == 0 ? e.det : -e.det) * b.extent[i];
   Word n[3];
   cross_of_doubles<Mul>(b.axis[(i + 1) % 3], b.axis[(i + 2) % 3], n);
   // w = s - c + l0 d + tau a_i: three exact high terms (two exact products), six low ones in
@@ -668,7 +674,7 @@ std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<dou
 template <class Mul, class Shot>
 std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face) {
   using std::fabs;
-  if (!robust::in_certified_range(x, b)) return std::nullopt;
+  if (face && face->plane < 0) return 0.0;  // the source in the box (the filter's certain outcodes)
   Pair<double> sc[3], d[3], a[3][3];
   shot_pairs(x, b.center, sc, d);
   double m = std::max(largest(sc), largest(d));
@@ -678,11 +684,10 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, co
   }
   if (!(m <= 0x1p200)) return std::nullopt;
   // most hits: the entering face picked in double, its parameter alone
-  if (face) {
-    if (face->plane < 0) return 0.0;  // the source in the box
+  if (face)
     if (const auto v = one_face_entry<Mul>(sc, d, b, *face)) return v;
-  }
   // the others: every face, the largest entry (rounding is monotone)
+  if (!robust::in_certified_range(x, b)) return std::nullopt;
   double best = 0.0;
   for (int i = 0; i < 3; ++i) {
     const auto v = face_entry<Mul>(sc, d, a, b.extent[i], i);
@@ -700,11 +705,11 @@ Entry triangle_enter(const Shot& x, const Triangle<double>& tri, bool* exact_use
 // The classification's first stage kept (its answer where it decides; sat::run's stages where
 // it does not), then on a hit the entering face from its signs.
 template <class Shot>
-Entry obb_enter(const Shot& x, const OrientedBox<double>& b, bool* exact_used) {
+Entry obb_enter(const Shot& x, const OrientedBox<double>& b, int det, bool* exact_used) {
   staged::ObbFilter f = staged::obb_filter(x, b);
   const int r = staged::filter(f);
   const bool hit = r != staged::unknown ? r == 1 : sat::run(nullptr, x, b);
-  return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, entering_face(f)); });
+  return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, entering_face(f, det)); });
 }
 
 }  // namespace enter_detail
@@ -766,13 +771,13 @@ inline Entry enter(const Ray<double>& ray, const Polygon<double>& p, bool* exact
 }
 inline Entry enter(const Segment<double>& seg, const OrientedBox<double>& b, bool* exact_used = nullptr) {
   check(seg, "segment");
-  check(b, "oriented box");
-  return enter_detail::obb_enter(seg, b, exact_used);
+  const int det = checked_orientation(b, "oriented box");
+  return enter_detail::obb_enter(seg, b, det, exact_used);
 }
 inline Entry enter(const Ray<double>& ray, const OrientedBox<double>& b, bool* exact_used = nullptr) {
   check(ray, "ray");
-  check(b, "oriented box");
-  return enter_detail::obb_enter(ray, b, exact_used);
+  const int det = checked_orientation(b, "oriented box");
+  return enter_detail::obb_enter(ray, b, det, exact_used);
 }
 
 }  // namespace cdref::oracle

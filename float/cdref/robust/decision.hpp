@@ -60,26 +60,37 @@ template <class F> F scalar_of(const OrientedBox<F>&);
 }  // namespace detail
 
 namespace detail {
-// The largest and the smallest nonzero magnitude among the inputs.
+// The largest and the smallest nonzero magnitude among the inputs, in three lanes (a vector's
+// components each in its own, a scalar in the first) so that the comparisons do not wait on one
+// another; NaN is passed over as before (max and min keep the lane's value, x > 0 is false).
 template <class F>
-void span_of(F x, F& hi, F& lo) {
-  const F a = std::fabs(x);
-  hi = std::max(hi, a);
-  lo = std::min(lo, a == F(0) ? std::numeric_limits<F>::infinity() : a);
+struct Span {
+  F hi[3] = {F(0), F(0), F(0)};
+  F lo[3] = {std::numeric_limits<F>::infinity(), std::numeric_limits<F>::infinity(),
+             std::numeric_limits<F>::infinity()};
+  void add(F x, int k) {
+    const F a = std::fabs(x);
+    hi[k] = std::max(hi[k], a);
+    lo[k] = std::min(lo[k], a > F(0) ? a : std::numeric_limits<F>::infinity());
+  }
+};
+template <class F>
+void span_of(F x, Span<F>& s) {
+  s.add(x, 0);
 }
 template <class F>
-void span_of(const Vec3<F>& v, F& hi, F& lo) {
-  for (int i = 0; i < 3; ++i) span_of(v[i], hi, lo);
+void span_of(const Vec3<F>& v, Span<F>& s) {
+  for (int i = 0; i < 3; ++i) s.add(v[i], i);
 }
-template <class F> void span_of(const Sphere<F>& s, F& hi, F& lo) { span_of(s.center, hi, lo); span_of(s.radius, hi, lo); }
-template <class F> void span_of(const Box<F>& b, F& hi, F& lo) { span_of(b.center, hi, lo); span_of(b.extent, hi, lo); }
-template <class F> void span_of(const Segment<F>& s, F& hi, F& lo) { span_of(s.source, hi, lo); span_of(s.target, hi, lo); }
-template <class F> void span_of(const Ray<F>& r, F& hi, F& lo) { span_of(r.source, hi, lo); span_of(r.direction, hi, lo); }
-template <class F> void span_of(const Triangle<F>& t, F& hi, F& lo) { for (const auto& v : t.vertex) span_of(v, hi, lo); }
-template <class F> void span_of(const OrientedBox<F>& b, F& hi, F& lo) {
-  span_of(b.center, hi, lo);
-  span_of(b.extent, hi, lo);
-  for (const auto& a : b.axis) span_of(a, hi, lo);
+template <class F> void span_of(const Sphere<F>& s, Span<F>& o) { span_of(s.center, o); span_of(s.radius, o); }
+template <class F> void span_of(const Box<F>& b, Span<F>& o) { span_of(b.center, o); span_of(b.extent, o); }
+template <class F> void span_of(const Segment<F>& s, Span<F>& o) { span_of(s.source, o); span_of(s.target, o); }
+template <class F> void span_of(const Ray<F>& r, Span<F>& o) { span_of(r.source, o); span_of(r.direction, o); }
+template <class F> void span_of(const Triangle<F>& t, Span<F>& o) { for (const auto& v : t.vertex) span_of(v, o); }
+template <class F> void span_of(const OrientedBox<F>& b, Span<F>& o) {
+  span_of(b.center, o);
+  span_of(b.extent, o);
+  for (const auto& a : b.axis) span_of(a, o);
 }
 }  // namespace detail
 
@@ -111,9 +122,11 @@ constexpr F pow2c(int e) {
 template <class A, class B>
 bool in_certified_range(const A& a, const B& b) {
   using F = std::decay_t<decltype(detail::scalar_of(a))>;
-  F hi = F(0), lo = std::numeric_limits<F>::infinity();
-  detail::span_of(a, hi, lo);
-  detail::span_of(b, hi, lo);
+  detail::Span<F> sp;
+  detail::span_of(a, sp);
+  detail::span_of(b, sp);
+  const F hi = std::max(std::max(sp.hi[0], sp.hi[1]), sp.hi[2]);
+  const F lo = std::min(std::min(sp.lo[0], sp.lo[1]), sp.lo[2]);
   constexpr int p = std::numeric_limits<F>::digits;
   constexpr F low = detail::pow2c<F>(std::numeric_limits<F>::min_exponent + p);
   constexpr F high = detail::pow2c<F>(std::numeric_limits<F>::max_exponent - p);
