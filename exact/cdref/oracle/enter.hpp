@@ -433,26 +433,18 @@ std::optional<double> first_double(const Shot& x, const Solid& y, const Face&...
     return obb_double<Mul>(x, y, face...);
 }
 
-// The double path with fused products where the CPU has them (x86-64: a copy compiled for the
-// FMA extension, every call inside it inlined, chosen at run time; a build with -mfma or on
-// another architecture: the split copy, or std::fma as the compiler provides it).
+// The double path with fused products where the CPU has them (robust::with_products: on x86-64
+// a copy compiled for the FMA extension, every call inside it inlined, chosen at run time; a
+// build with -mfma or on another architecture: the split copy, or std::fma as the compiler
+// provides it). fused_double is that copy alone (the tests compare it with the split one).
 using robust::cpu_fma;
-#if CDREF_FMA_CLONES
-template <class Shot, class Solid, class... Face>
-[[gnu::target("fma"), gnu::flatten]] std::optional<double> fused_double(const Shot& x, const Solid& y,
-                                                                        const Face&... face) {
-  return first_double<FusedProduct>(x, y, face...);
-}
-#else
 template <class Shot, class Solid, class... Face>
 std::optional<double> fused_double(const Shot& x, const Solid& y, const Face&... face) {
-  return first_double<FusedProduct>(x, y, face...);
+  return robust::fused_call([&](auto mul) { return first_double<decltype(mul)>(x, y, face...); });
 }
-#endif
 template <class Shot, class Solid, class... Face>
 std::optional<double> solid_double(const Shot& x, const Solid& y, const Face&... face) {
-  if (cpu_fma()) return fused_double(x, y, face...);
-  return first_double<SplitProduct>(x, y, face...);
+  return robust::with_products([&](auto mul) { return first_double<decltype(mul)>(x, y, face...); });
 }
 
 // The classification's answer, then on a hit the double path (a value, or nothing when it
@@ -628,7 +620,6 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
   return plane_parameter<Mul>(sc, d, n, U, lower < 0 ? H : negated(H));
 }
 
-// The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
 // The entering face's parameter alone (header, "An oriented box"): the face's plane through
 // its point c -+ h_i sign(delta) a_i, g(l) = n_i . (s - c + l d + tau a_i), l0 = -N / D from
 // the filter, g(l0) on double words, the correction by the filter's D; nothing where D's sign or
@@ -671,6 +662,7 @@ std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<dou
   return v;
 }
 
+// The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
 template <class Mul, class Shot>
 std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face) {
   using std::fabs;

@@ -191,24 +191,9 @@ int settle(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir
   return ns != unknown && nt != unknown ? 1 : unknown;
 }
 
-#if CDREF_FMA_CLONES
-[[gnu::target("fma"), gnu::flatten, gnu::noinline]] inline int settle_fused(const Vec3<double>& s,
-                                                                           const Vec3<double>* t,
-                                                                           const Vec3<double>& dir,
-                                                                           const Triangle<double>& tri, int w0,
-                                                                           int w1, int w2) {
-  return settle<robust::FusedProduct>(s, t, dir, tri, w0, w1, w2);
-}
-#endif
 [[gnu::noinline]] inline int settle_any(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir,
                                         const Triangle<double>& tri, int w0, int w1, int w2) {
-#if CDREF_FMA_CLONES
-  if (robust::cpu_fma()) return settle_fused(s, t, dir, tri, w0, w1, w2);
-  return settle<robust::SplitProduct>(s, t, dir, tri, w0, w1, w2);
-#else
-  if constexpr (robust::cpu_fma()) return settle<robust::FusedProduct>(s, t, dir, tri, w0, w1, w2);
-  return settle<robust::SplitProduct>(s, t, dir, tri, w0, w1, w2);
-#endif
+  return robust::with_products([&](auto mul) { return settle<decltype(mul)>(s, t, dir, tri, w0, w1, w2); });
 }
 
 }  // namespace exact_eval

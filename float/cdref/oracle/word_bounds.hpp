@@ -233,24 +233,10 @@ int obb_cast(const Vec3<double>& src, const Vec3<double>& rt, const OrientedBox<
   const ObbWords<Mul> w(src, rt, b, segment);
   return w.ok ? staged::hit_box_logic(w) : staged::unknown;
 }
-#if CDREF_FMA_CLONES
-[[gnu::target("fma"), gnu::flatten, gnu::noinline]] inline int obb_cast_fused(const Vec3<double>& src,
-                                                                             const Vec3<double>& rt,
-                                                                             const OrientedBox<double>& b,
-                                                                             bool segment) {
-  return obb_cast<FusedProduct>(src, rt, b, segment);
-}
-#endif
 // 1 a hit, 0 a miss, staged::unknown: the next stage.
 [[gnu::noinline]] inline int obb_cast_any(const Vec3<double>& src, const Vec3<double>& rt,
                                           const OrientedBox<double>& b, bool segment) {
-#if CDREF_FMA_CLONES
-  if (robust::cpu_fma()) return obb_cast_fused(src, rt, b, segment);
-  return obb_cast<SplitProduct>(src, rt, b, segment);
-#else
-  if constexpr (robust::cpu_fma()) return obb_cast<FusedProduct>(src, rt, b, segment);
-  return obb_cast<SplitProduct>(src, rt, b, segment);
-#endif
+  return robust::with_products([&](auto mul) { return obb_cast<decltype(mul)>(src, rt, b, segment); });
 }
 inline int obb_cast_words(const Segment<double>& s, const OrientedBox<double>& b) {
   return obb_cast_any(s.source, s.target, b, true);

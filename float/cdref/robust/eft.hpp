@@ -136,6 +136,27 @@ constexpr bool cpu_fma() {
 }
 #endif
 
+// f(FusedProduct{}) in a copy compiled for the FMA extension (CDREF_FMA_CLONES: every call in
+// it inlined, so that std::fma is the instruction there; otherwise as built), and
+// with_products(f): that copy where the CPU has the instruction, f(SplitProduct{}) where it does
+// not. f takes the policy by value (a generic lambda: [&](auto mul) { return g<decltype(mul)>(...); }).
+#if CDREF_FMA_CLONES
+template <class Fn>
+[[gnu::target("fma"), gnu::flatten, gnu::noinline]] auto fused_call(const Fn& f) {
+  return f(FusedProduct{});
+}
+#else
+template <class Fn>
+auto fused_call(const Fn& f) {
+  return f(FusedProduct{});
+}
+#endif
+template <class Fn>
+auto with_products(const Fn& f) {
+  if (cpu_fma()) return fused_call(f);
+  return f(SplitProduct{});
+}
+
 template <class F>
 Pair<F> mul_pair(const Pair<F>& x, const Pair<F>& y) {
   const Pair<F> p = two_prod_split(x.hi, y.hi);
