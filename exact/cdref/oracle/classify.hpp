@@ -568,10 +568,11 @@ struct BoxStaged {
   bool bounded;
   BoxStaged(const Vec3<double>& s, const Vec3<double>& t, const Box<double>& b, bool segment)
       : f(s, t, b, segment), x(s, t, b, segment), bounded(segment) {}
-  int src_lo(int i) const { const int s = f.src_lo(i); return s != unknown ? s : x.src_lo(i); }
-  int src_hi(int i) const { const int s = f.src_hi(i); return s != unknown ? s : x.src_hi(i); }
-  int tgt_lo(int i) const { const int s = f.tgt_lo(i); return s != unknown ? s : x.tgt_lo(i); }
-  int tgt_hi(int i) const { const int s = f.tgt_hi(i); return s != unknown ? s : x.tgt_hi(i); }
+  // (the filter's outcodes only within its range test, BoxFilter::ok)
+  int src_lo(int i) const { const int s = f.ok ? f.src_lo(i) : unknown; return s != unknown ? s : x.src_lo(i); }
+  int src_hi(int i) const { const int s = f.ok ? f.src_hi(i) : unknown; return s != unknown ? s : x.src_hi(i); }
+  int tgt_lo(int i) const { const int s = f.ok ? f.tgt_lo(i) : unknown; return s != unknown ? s : x.tgt_lo(i); }
+  int tgt_hi(int i) const { const int s = f.ok ? f.tgt_hi(i) : unknown; return s != unknown ? s : x.tgt_hi(i); }
   int dir_sign(int i) const { return x.dir_sign(i); }
   int compare(int p, int q) const { const int s = f.compare(p, q); return s != unknown ? s : x.compare(p, q); }
 };

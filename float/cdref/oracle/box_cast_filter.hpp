@@ -44,43 +44,54 @@ inline bool direction_valid(const Vec3<double>& d) {
 // product underflows only for |q~| < 2^-970: below 2^-1021 the difference q~ is exact, so
 // L~ (rounded once, sign kept) has the exact sign, 0 included; between, the underflow loses
 // at most a quarter of 2u |q~| and 1.5u > u still. |L~| <= 2^1000 excludes overflow (an
-// infinite q~ makes L~ infinite or NaN).
-inline int outcode_sign(double l, double e) {
-  if (!(std::fabs(l) <= 0x1p1000)) return unknown;
+// infinite q~ makes L~ infinite or NaN); outcode_sign_in_range leaves that test to its caller.
+inline int outcode_sign_in_range(double l, double e) {
   if (l < -e) return -1;
   if (l > e) return 1;
   return e == 0 ? 0 : unknown;  // e = 0: q~ is exact (and then l = 0 exactly)
+}
+inline int outcode_sign(double l, double e) {
+  if (!(std::fabs(l) <= 0x1p1000)) return unknown;
+  return outcode_sign_in_range(l, e);
 }
 // Pair filter: lambda_p <= lambda_q <=> n'_p d'_q - n'_q d'_p <= 0, n' = n sign(d), d' = |d|,
 // n = -L~ or -U~ of the source on the plane's axis. K: q~ (1) + the +-h (1) + product (1) +
 // leaf d (1) + final (1) = 5; P+ = (|s_i| + h_i)|d_j| + (|s_j| + h_j)|d_i| <= the same with
 // computed a_i = fl(|q~_i| + h_i) and |d~| times (1 + 10u): bound 6u fl(a_i d'_q + a_j d'_p).
+// The outcodes' range test once for the case: |L~|, |U~| <= fl(|q~| + h) (h >= 0: the callers
+// test the extents' signs first; rounding is monotone and odd), so fl(|q~| + h) <= 2^1000 at the
+// source and the target (a NaN fails it) stands for every outcode's |L~| <= 2^1000 (`ok`; the
+// filter answers unknown without it, as an outcode would).
 struct BoxFilter {
   double sL[3], sU[3], sE[3], sA[3], tL[3], tU[3], tE[3], r[3];
-  bool bounded;
+  bool bounded, ok;
   BoxFilter(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& box, bool segment)
       : bounded(segment) {
+    bool in = true;
     for (int i = 0; i < 3; ++i) {
       const double q = src[i] - box.center[i], h = box.extent[i];
       sL[i] = q + h;
       sU[i] = q - h;
       sE[i] = 0x1p-52 * std::fabs(q);
       sA[i] = std::fabs(q) + h;
+      in &= sA[i] <= 0x1p1000;
       if (segment) {
         const double p = rt[i] - box.center[i];
         tL[i] = p + h;
         tU[i] = p - h;
         tE[i] = 0x1p-52 * std::fabs(p);
         r[i] = rt[i] - src[i];
+        in &= std::fabs(p) + h <= 0x1p1000;
       } else {
         r[i] = rt[i];
       }
     }
+    ok = in;
   }
-  int src_lo(int i) const { return outcode_sign(sL[i], sE[i]); }  // sign(s_i + h_i)
-  int src_hi(int i) const { return outcode_sign(sU[i], sE[i]); }  // sign(s_i - h_i)
-  int tgt_lo(int i) const { return outcode_sign(tL[i], tE[i]); }
-  int tgt_hi(int i) const { return outcode_sign(tU[i], tE[i]); }
+  int src_lo(int i) const { return outcode_sign_in_range(sL[i], sE[i]); }  // sign(s_i + h_i)
+  int src_hi(int i) const { return outcode_sign_in_range(sU[i], sE[i]); }  // sign(s_i - h_i)
+  int tgt_lo(int i) const { return outcode_sign_in_range(tL[i], tE[i]); }
+  int tgt_hi(int i) const { return outcode_sign_in_range(tU[i], tE[i]); }
   int dir_sign(int i) const { return r[i] > 0 ? 1 : (r[i] < 0 ? -1 : 0); }  // exact for a ray
   // sign(lambda_p - lambda_q), planes 2i (lower) / 2i + 1 (upper).
   int compare(int p, int q) const {
@@ -360,10 +371,12 @@ inline int filter(const Ray<double>& ray, const OrientedBox<double>& box) {
 }
 
 inline int filter(const Segment<double>& seg, const Box<double>& box) {
-  return hit_box_logic(BoxFilter(seg.source, seg.target, box, true));
+  const BoxFilter f(seg.source, seg.target, box, true);
+  return f.ok ? hit_box_logic(f) : unknown;
 }
 inline int filter(const Ray<double>& ray, const Box<double>& box) {
-  return hit_box_logic(BoxFilter(ray.source, ray.direction, box, false));
+  const BoxFilter f(ray.source, ray.direction, box, false);
+  return f.ok ? hit_box_logic(f) : unknown;
 }
 
 }  // namespace cdref::oracle::staged
