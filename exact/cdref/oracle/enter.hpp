@@ -149,7 +149,7 @@
 // bound), and D's bound from the filter (d_bound: |D~ - D| <= eD, D_lo = |D~| - eD > 0); then
 // delta = fl(-g^ / D~) is off from -g / D by (eg + |g^| eD / |D~|) / D_lo + u |delta| (eg: g's
 // word bound and its low part), and l0 + delta as a double word (two_sum), the bound doubled,
-// Bounded2::try_rounded, as for the triangle. About 11 exact products instead of some 60 for
+// Bounded2::try_rounded, as for the triangle. About 15 exact products instead of some 60 for
 // three faces. Range: every input at most 2^200 and |l0| at most 2^250 (every product below
 // 2^860, no split overflows); it needs no in_certified_range: a product or a sum that
 // underflows is off by at most 2^-1075, which the eta terms of every bound above cover (the
