@@ -160,8 +160,9 @@ struct Rational {
   Rational& operator=(const Rational&) = delete;
 };
 using RVec = Rational[3];
-inline void set_vec(RVec& o, const Vec3<double>& v) {
-  for (int i = 0; i < 3; ++i) number_traits<double>::to_rational(o[i].q, v[i]);
+template <class F>
+void set_vec(RVec& o, const Vec3<F>& v) {
+  for (int i = 0; i < 3; ++i) number_traits<F>::to_rational(o[i].q, v[i]);
 }
 inline void sub_vec(RVec& o, const RVec& a, const RVec& b) {
   for (int i = 0; i < 3; ++i) mpq_sub(o[i].q, a[i].q, b[i].q);
@@ -429,37 +430,23 @@ namespace detail {
 template <class F>
 int entry_order_exact(const Vec3<F>& s, const Vec3<F>& d, bool d_is_target, const Triangle<F>& a,
                       const Triangle<F>& b) {
-  auto set = [](Rational (&q)[3], const Vec3<F>& v) {
-    for (int i = 0; i < 3; ++i) number_traits<F>::to_rational(q[i].q, v[i]);
-  };
-  Rational S[3], R[3], N[2], D[2], t, e1[3], e2[3], n[3], w;
-  set(S, s);
-  set(R, d);
-  if (d_is_target)
-    for (int i = 0; i < 3; ++i) mpq_sub(R[i].q, R[i].q, S[i].q);
+  RVec S, R;
+  Rational N[2], D[2];
+  set_vec(S, s);
+  set_vec(R, d);
+  if (d_is_target) sub_vec(R, R, S);
   const Triangle<F>* tri[2] = {&a, &b};
   for (int k = 0; k < 2; ++k) {
-    Rational v[3][3];
-    for (int j = 0; j < 3; ++j) set(v[j], tri[k]->vertex[j]);
-    for (int i = 0; i < 3; ++i) {
-      mpq_sub(e1[i].q, v[1][i].q, v[0][i].q);
-      mpq_sub(e2[i].q, v[2][i].q, v[0][i].q);
-    }
-    for (int i = 0; i < 3; ++i) {  // n = e1 x e2
-      const int j = (i + 1) % 3, l = (i + 2) % 3;
-      mpq_mul(n[i].q, e1[j].q, e2[l].q);
-      mpq_mul(t.q, e1[l].q, e2[j].q);
-      mpq_sub(n[i].q, n[i].q, t.q);
-    }
-    mpq_set_ui(N[k].q, 0, 1);
-    mpq_set_ui(D[k].q, 0, 1);
-    for (int i = 0; i < 3; ++i) {
-      mpq_sub(w.q, v[0][i].q, S[i].q);
-      mpq_mul(t.q, w.q, n[i].q);
-      mpq_add(N[k].q, N[k].q, t.q);
-      mpq_mul(t.q, R[i].q, n[i].q);
-      mpq_add(D[k].q, D[k].q, t.q);
-    }
+    RVec v0, v1, v2, e1, e2, n, w;
+    set_vec(v0, tri[k]->vertex[0]);
+    set_vec(v1, tri[k]->vertex[1]);
+    set_vec(v2, tri[k]->vertex[2]);
+    sub_vec(e1, v1, v0);
+    sub_vec(e2, v2, v0);
+    cross_vec(n, e1, e2);
+    sub_vec(w, v0, S);
+    dot_vec(N[k], w, n);
+    dot_vec(D[k], R, n);
   }
   const int da = mpq_sgn(D[0].q), db = mpq_sgn(D[1].q);
   if (da == 0 || db == 0) return 2;
