@@ -191,6 +191,7 @@
 
 #include "decision.hpp"
 #include "eft.hpp"
+#include "rational.hpp"
 
 namespace cdref::robust {
 
@@ -369,6 +370,42 @@ Analysis<F> analyse(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho, bool bo
   return A;
 }
 
+// Coordinate i of the entry point c + x and of the normal x / rho exactly, each rounded once
+// (rational.hpp, surd_rounded), for a shot entering from outside: with s = source - c and r
+// exact (the pairs), a = r.r, b = s.r, D = b^2 - a (s.s - rho^2), lambda_1 = (-b - sqrt D) / a
+// and x_i = s_i + lambda_1 r_i = (s_i - b r_i / a) - sqrt(D) r_i / a.
+template <class F>
+void exact_entry(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, int i, F* point, F* normal) {
+  RVec S, R;
+  for (int k = 0; k < 3; ++k) set_pair(S[k], s[k].hi, s[k].lo), set_pair(R[k], r[k].hi, r[k].lo);
+  Rational a, b, c, D, t, p0, k;
+  dot_vec(a, R, R);
+  dot_vec(b, S, R);
+  dot_vec(c, S, S);
+  set_rational(t, sp.radius);
+  mpq_mul(t.q, t.q, t.q);
+  mpq_sub(c.q, c.q, t.q);
+  mpq_mul(D.q, b.q, b.q);
+  mpq_mul(t.q, a.q, c.q);
+  mpq_sub(D.q, D.q, t.q);
+  if (mpq_sgn(D.q) < 0 || mpq_sgn(a.q) == 0) return;  // no entry (a classification not certain)
+  mpq_div(k.q, R[i].q, a.q);   // r_i / a
+  mpq_mul(p0.q, b.q, k.q);
+  mpq_sub(p0.q, S[i].q, p0.q);  // s_i - b r_i / a
+  if (normal) {
+    Rational rho, p1, k1;
+    set_rational(rho, sp.radius);
+    mpq_div(p1.q, p0.q, rho.q);
+    mpq_div(k1.q, k.q, rho.q);
+    *normal = surd_rounded<F>(p1, D, k1);
+  }
+  if (point) {
+    set_rational(t, sp.center[i]);
+    mpq_add(p0.q, p0.q, t.q);
+    *point = surd_rounded<F>(p0, D, k);
+  }
+}
+
 // The same steps as analyse(), with nothing kept that the outputs do not need.
 template <class F>
 Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded, unsigned w) {
@@ -415,6 +452,21 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
     }
   if ((w & want_normal) && L.rho != F(0))
     for (int i = 0; i < 3; ++i) res.normal[i] = F(x[i].hi + x[i].lo) / L.rho;
+  // x_i carries about u^2 (33 |s| + 10 |l_i| + 10 |h r_i|) (step 5): where a coordinate of
+  // the point or of x (the normal) is below 32u (64 |s| + 16 (|l_i| + |h r_i|)), that is more
+  // than u/32 of it (at range, a point near a coordinate plane: 26 ulps at 10^12 radii), and
+  // the coordinate is evaluated exactly instead (exact_entry)
+  {
+    const F u = std::numeric_limits<F>::epsilon() / F(2);
+    F sn = 0;
+    for (int i = 0; i < 3; ++i) sn = std::max(sn, std::fabs(L.s[i].hi));
+    for (int i = 0; i < 3; ++i) {
+      const F m = F(F(32) * u) * F(F(64) * sn + F(16) * F(std::fabs(Q.l[i].hi) + std::fabs(F(h.hi * L.r[i].hi))));
+      const bool pt = (w & want_point) && std::fabs(res.point[i]) < std::ldexp(m, L.scale);
+      const bool nm = (w & want_normal) && L.rho != F(0) && std::fabs(x[i].hi) < m;
+      if (pt || nm) exact_entry(s, r, sp, i, pt ? &res.point[i] : nullptr, nm ? &res.normal[i] : nullptr);
+    }
+  }
   return res;
 }
 

@@ -42,13 +42,11 @@
 // answer is uncertain: that is what campaigns count.
 #pragma once
 
-#include <gmp.h>
-#include <mpfr.h>
-
 #include <cdref/book/ray_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
 #include <cdref/stable/ray_triangle.hpp>
 
+#include "rational.hpp"
 #include "words.hpp"
 
 namespace cdref::robust {
@@ -148,54 +146,6 @@ auto cast_on_words(const Shot& a, const Tri& b) {
       if (q[i].bound() < c.point[i].bound()) c.point[i] = q[i];
   }
   return c;
-}
-
-// Exact rationals for the rare exact values and comparisons below (GMP's C interface, as
-// det_sign.hpp).
-struct Rational {
-  mpq_t q;
-  Rational() { mpq_init(q); }
-  ~Rational() { mpq_clear(q); }
-  Rational(const Rational&) = delete;
-  Rational& operator=(const Rational&) = delete;
-};
-using RVec = Rational[3];
-template <class F>
-void set_vec(RVec& o, const Vec3<F>& v) {
-  for (int i = 0; i < 3; ++i) number_traits<F>::to_rational(o[i].q, v[i]);
-}
-inline void sub_vec(RVec& o, const RVec& a, const RVec& b) {
-  for (int i = 0; i < 3; ++i) mpq_sub(o[i].q, a[i].q, b[i].q);
-}
-inline void cross_vec(RVec& o, const RVec& a, const RVec& b) {
-  Rational t;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, l = (i + 2) % 3;
-    mpq_mul(o[i].q, a[j].q, b[l].q);
-    mpq_mul(t.q, a[l].q, b[j].q);
-    mpq_sub(o[i].q, o[i].q, t.q);
-  }
-}
-inline void dot_vec(Rational& o, const RVec& a, const RVec& b) {
-  Rational t;
-  mpq_mul(o.q, a[0].q, b[0].q);
-  for (int i = 1; i < 3; ++i) {
-    mpq_mul(t.q, a[i].q, b[i].q);
-    mpq_add(o.q, o.q, t.q);
-  }
-}
-// A rational rounded to nearest double (MPFR at 53 bits: correctly rounded in its unbounded
-// exponent range), or nothing below the normal range (a second rounding there) or above it.
-inline std::optional<double> round_rational(const Rational& x) {
-  if (mpq_sgn(x.q) == 0) return 0.0;
-  mpfr_t m;
-  mpfr_init2(m, 53);
-  mpfr_set_q(m, x.q, MPFR_RNDN);
-  const double d = mpfr_get_d(m, MPFR_RNDN);
-  mpfr_clear(m);
-  if (!(std::fabs(d) >= std::numeric_limits<double>::min() && std::fabs(d) <= std::numeric_limits<double>::max()))
-    return std::nullopt;
-  return d;
 }
 
 // A hit's values exactly, correctly rounded: the book's cast (book/ray_triangle.hpp) on GMP

@@ -39,8 +39,12 @@
 //         u^3 (|s_i| + |f r_i|)), and Q from it: then within u^2 (88 (|x| + rho)) + 1.2e5
 //         u^3 |s| + (111u^2 |s|)^2 / (|x| + rho). Either way within u^2 88 (|x| + rho) + u
 //         d / 16 + 1.2e5 u^3 |s| (+ the u^4 term), about an ulp of d unless d is below
-//         ~2^-46 of |x| + rho. (A sign other than the classification's, possible only where
-//         it is uncertain, gives 0.)
+//         ~2^-46 of |x| + rho. Where it could be (|q^| <= 1408u (|x|_1 + rho)^2), the value
+//         comes from |x|^2 exactly instead (seg_sph_xx: the endpoint's |s|^2 or the foot's
+//         |s x r|^2 / |r|^2 on GMP rationals, then sphere_gap, rational.hpp): within an ulp
+//         (the double words' value was 169 ulps off at 2^-52 of the radius from tangency).
+//         (A sign other than the classification's, possible only where it is uncertain,
+//         gives 0.)
 //       the witness on the sphere c + rho x/|x| (unit_dw, then along_dw): x's direction within
 //         27u^2 + 144u^2 |s| / |x|, then 4u^2 max(|on_b_i|, rho) before the rounding; where
 //         144u^2 |s| could exceed u/16 of |x| (the centre within 2304u |s| of the line), the
@@ -81,6 +85,7 @@
 
 #include "decision.hpp"
 #include "eft.hpp"
+#include "rational.hpp"
 #include "ray_sphere.hpp"
 #include "sphere_sphere.hpp"
 
@@ -366,6 +371,27 @@ bool intersect(const Segment<F>& seg, const Sphere<F>& sp) {
   return decide_closest(seg, sp).value;
 }
 
+namespace detail {
+// |x|^2 exactly, x the closest point relative to the centre (scaled, step 5): the endpoint's
+// |s|^2, or the foot's |s x r|^2 / |r|^2 (x = s - (s.r / |r|^2) r, so |x|^2 = |s|^2 - (s.r)^2 /
+// |r|^2), from the exact pairs.
+template <class F>
+void seg_sph_xx(const LocalDW<F>& D, bool interior, Rational& xx) {
+  RVec s, r;
+  for (int i = 0; i < 3; ++i) {
+    set_pair(s[i], D.s[i].hi, D.s[i].lo);
+    set_pair(r[i], D.r[i].hi, D.r[i].lo);
+  }
+  if (!interior) return dot_vec(xx, s, s);
+  RVec c;
+  cross_vec(c, s, r);
+  Rational rr;
+  dot_vec(xx, c, c);
+  dot_vec(rr, r, r);
+  mpq_div(xx.q, xx.q, rr.q);
+}
+}  // namespace detail
+
 template <class F>
 Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_proximity) {
   check(seg, "segment");
@@ -438,13 +464,26 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
     } else {
       // +-q / (|x| + rho), the sign the classification's (a value of the other sign, where
       // the classification is uncertain, is 0)
-      const Pair<F> len = detail::norm_dw(xh, xl);
-      const Pair<F> t = two_sum(len.hi, L.rho);
-      const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
-      const F num = res.intersect ? F(-q.hi) : q.hi;
-      if (num > F(0)) {
-        const Pair<F> v = div_pair(res.intersect ? Pair<F>{F(-q.hi), F(-q.lo)} : q, den);
-        (res.intersect ? res.depth : res.distance) = std::ldexp(F(v.hi + v.lo), L.scale);
+      // where the double words' error could exceed u/16 of the value (|q| <= 1408u (|x| +
+      // rho)^2, the u^2 88 (|x| + rho) term of step 5: the distance within 2^-42.5 of |x| +
+      // rho), the value from |x|^2 exactly (seg_sph_xx, sphere_gap: within an ulp)
+      const F u = detail::unit_roundoff<F>();
+      const F reach = F(F(F(std::fabs(xh[0]) + std::fabs(xh[1])) + std::fabs(xh[2])) + L.rho);
+      if (std::fabs(q.hi) <= F(F(1408) * u) * F(reach * reach)) {
+        detail::Rational xx;
+        detail::seg_sph_xx(D, b == detail::Branch::interior, xx);
+        const F g = detail::sphere_gap(xx, L.rho);
+        if (res.intersect ? g < F(0) : g > F(0))
+          (res.intersect ? res.depth : res.distance) = std::ldexp(std::fabs(g), L.scale);
+      } else {
+        const Pair<F> len = detail::norm_dw(xh, xl);
+        const Pair<F> t = two_sum(len.hi, L.rho);
+        const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
+        const F num = res.intersect ? F(-q.hi) : q.hi;
+        if (num > F(0)) {
+          const Pair<F> v = div_pair(res.intersect ? Pair<F>{F(-q.hi), F(-q.lo)} : q, den);
+          (res.intersect ? res.depth : res.distance) = std::ldexp(F(v.hi + v.lo), L.scale);
+        }
       }
       if (!(w & want_distance)) res.distance = F(0);
       if (!(w & want_depth)) res.depth = F(0);

@@ -42,6 +42,7 @@
 #include <cdref/solid/obb.hpp>
 #include <type_traits>
 
+#include "rational.hpp"
 #include "ray_box.hpp"
 #include "words.hpp"
 
@@ -166,6 +167,83 @@ template <class F> Decision decide(const OrientedBox<F>& a, const OrientedBox<F>
 // ---- casts on an oriented box, a sphere and an oriented box ----
 namespace detail {
 
+// A hit's parameters and entry point exactly, each rounded once (rational.hpp), where the
+// double words leave them loose: Algorithm 3.3 in the solid's U coordinates (cdref/solid/obb.hpp:
+// U_i = n_i . (p - c) with n_i signed so that n_i . a_i = |delta|, the slab |U_i| <= H_i =
+// |delta| h_i) on GMP rationals. Each slab with U_i(r) != 0 is crossed at (-+H_i - U_i(s)) /
+// U_i(r); lambda_enter is the largest entry and 0, lambda_exit the smallest exit (and 1 for a
+// segment); the point s + lambda_enter r. Nothing where the exact slabs give no hit (a hit the
+// classification could not certify). The double words' parameter is a quotient of two
+// cancelling sums where the shot crosses a face at a grazing angle or meets an edge, and their
+// bound there reached 2^-51 of the value: the ray-obb cast's point was 141 ulps off on the
+// planes family, the segment's lambda_exit 21 (`cdref campaign --impl robust-double`).
+template <class F>
+bool exact_obb_cast(Cast<F>& out, const Vec3<F>& src, const Vec3<F>& dt, bool segment, const OrientedBox<F>& b,
+                    unsigned w) {
+  RVec S, R, C, a[3], n[3], d;
+  set_vec(S, src);
+  set_vec(R, dt);
+  if (segment) sub_vec(R, R, S);
+  set_vec(C, b.center);
+  sub_vec(d, S, C);
+  for (int i = 0; i < 3; ++i) set_vec(a[i], b.axis[i]);
+  for (int i = 0; i < 3; ++i) cross_vec(n[i], a[(i + 1) % 3], a[(i + 2) % 3]);
+  Rational delta, lo, hi, H, us, ur, t0, t1;
+  dot_vec(delta, a[0], n[0]);
+  const bool flip = mpq_sgn(delta.q) < 0;
+  if (flip) mpq_neg(delta.q, delta.q);
+  bool bounded_hi = segment;  // hi = 1 for a segment; +inf until a slab bounds it for a ray
+  mpq_set_si(hi.q, 1, 1);
+  for (int i = 0; i < 3; ++i) {
+    set_rational(H, b.extent[i]);
+    mpq_mul(H.q, H.q, delta.q);
+    dot_vec(us, n[i], d);
+    dot_vec(ur, n[i], R);
+    if (flip) mpq_neg(us.q, us.q), mpq_neg(ur.q, ur.q);
+    if (mpq_sgn(ur.q) == 0) {  // parallel to the slab: inside it or no hit
+      mpq_abs(t0.q, us.q);
+      if (mpq_cmp(t0.q, H.q) > 0) return false;
+      continue;
+    }
+    mpq_neg(t0.q, H.q);
+    mpq_sub(t0.q, t0.q, us.q);
+    mpq_div(t0.q, t0.q, ur.q);
+    mpq_sub(t1.q, H.q, us.q);
+    mpq_div(t1.q, t1.q, ur.q);
+    if (mpq_sgn(ur.q) < 0) mpq_swap(t0.q, t1.q);
+    if (mpq_cmp(t0.q, lo.q) > 0) mpq_set(lo.q, t0.q);
+    if (!bounded_hi || mpq_cmp(t1.q, hi.q) < 0) mpq_set(hi.q, t1.q), bounded_hi = true;
+  }
+  if (!bounded_hi || mpq_cmp(lo.q, hi.q) > 0) return false;
+  if (w & want_lambda_enter) out.lambda_enter = rounded<F>(lo);
+  if (w & want_lambda_exit) out.lambda_exit = rounded<F>(hi);
+  Rational x;
+  for (int k = 0; k < 3 && (w & want_point); ++k) {
+    mpq_mul(x.q, lo.q, R[k].q);
+    mpq_add(x.q, x.q, S[k].q);
+    out.point[k] = rounded<F>(x);
+  }
+  return true;
+}
+// Whether a double word leaves its value's rounding to F loose (an enclosure wider than u/16
+// of the value, or holding 0).
+template <class F>
+bool loose(const W& x, int k = 0) {
+  const long double v = std::ldexp((long double)x.hi() + (long double)x.lo(), -k);
+  return std::ldexp((long double)x.bound(), -k) > std::ldexp(std::fabs(v), -(std::numeric_limits<F>::digits + 4));
+}
+template <class F, class A>
+void sharpen_obb_cast(Cast<F>& c, const Cast<W>& cw, int k, const A& a, const OrientedBox<F>& b, unsigned w) {
+  bool any = ((w & want_lambda_enter) && loose<F>(cw.lambda_enter)) ||
+             ((w & want_lambda_exit) && !cw.unbounded_exit && loose<F>(cw.lambda_exit));
+  for (int i = 0; i < 3 && !any && (w & want_point); ++i) any = loose<F>(cw.point[i], k);
+  if (!any) return;
+  if constexpr (std::is_same_v<A, Segment<F>>)
+    exact_obb_cast(c, a.source, a.target, true, b, w);
+  else
+    exact_obb_cast(c, a.source, a.direction, false, b, w);
+}
+
 // The full query and its certificate from one evaluation, so that they always classify alike:
 // the double-word query; else the double-word classification with the query's values from the
 // double words with lenient signs (or in F where those miss or do not complete); else the
@@ -176,6 +254,7 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
   if (const auto r = on_words(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc)) {
     Cast<F> c = cast_value<F>(*r);
     c.point = Scale{-sc.k}.len(c.point);  // parameters and unit normals do not scale
+    if (c.hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *r, sc.k, a, b, w);
     return {c, {r->hit, true}};
   }
   // the values from the double words with lenient signs where they complete with a hit, F's
@@ -185,12 +264,96 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
   if (lw && lw->hit) take_lenient_values<F>(c, *lw, sc.k);
   const auto h = cast_decision_on_words(a, b);
   const Decision d = h ? Decision{*h, true} : Decision{solid::hit(a, b), false};
+  if (d.value && lw && lw->hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *lw, sc.k, a, b, w);
   c.hit = d.value;
   return {c, d};
 }
 
+// |x - q|^2 exactly, x the point of the solid P closest to a centre q outside it (false for q
+// in the closed P, whose depth does not cancel): with the face normals n_i (signed so that
+// n_i . a_i = |delta|) and U_i = n_i . (q - c), q is in P iff |U_i| <= H_i = |delta| h_i for
+// every i. Otherwise x is the nearest of the feet of q on the six face planes that lie in
+// their face (the foot on U_i = s H_i moves U_j by -(U_i - s H_i) n_i . n_j / |n_i|^2, and
+// |x - q|^2 = (U_i - s H_i)^2 / |n_i|^2) and the twelve edges' closest points (segment_xx):
+// every candidate is a point of P, and the closest point, in a face's relative interior or on
+// an edge, is among them.
 template <class F>
-std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w) {
+bool obb_xx(Rational& xx, const Vec3<F>& q, const OrientedBox<F>& b) {
+  RVec a[3], n[3], c, p, d;
+  set_vec(c, b.center);
+  set_vec(p, q);
+  sub_vec(d, p, c);
+  Rational h[3], H[3], U[3], nn[3], delta, t;
+  for (int i = 0; i < 3; ++i) set_vec(a[i], b.axis[i]), set_rational(h[i], b.extent[i]);
+  for (int i = 0; i < 3; ++i) cross_vec(n[i], a[(i + 1) % 3], a[(i + 2) % 3]);
+  dot_vec(delta, a[0], n[0]);
+  if (mpq_sgn(delta.q) < 0) {
+    mpq_neg(delta.q, delta.q);
+    for (auto& ni : n)
+      for (auto& x : ni) mpq_neg(x.q, x.q);
+  }
+  bool inside = true;
+  for (int i = 0; i < 3; ++i) {
+    mpq_mul(H[i].q, delta.q, h[i].q);
+    dot_vec(U[i], n[i], d);
+    dot_vec(nn[i], n[i], n[i]);
+    mpq_abs(t.q, U[i].q);
+    inside = inside && mpq_cmp(t.q, H[i].q) <= 0;
+  }
+  if (inside) return false;
+  bool have = false;
+  const auto offer = [&](const Rational& v) {
+    if (!have || mpq_cmp(v.q, xx.q) < 0) mpq_set(xx.q, v.q);
+    have = true;
+  };
+  Rational g, nij, uj, v;
+  for (int i = 0; i < 3; ++i)
+    for (const int sg : {-1, 1}) {
+      // g = (U_i - s H_i) / |n_i|^2
+      if (sg > 0) mpq_sub(g.q, U[i].q, H[i].q);
+      else mpq_add(g.q, U[i].q, H[i].q);
+      mpq_div(g.q, g.q, nn[i].q);
+      bool in_face = true;
+      for (int j = 0; j < 3 && in_face; ++j) {
+        if (j == i) continue;
+        dot_vec(nij, n[i], n[j]);
+        mpq_mul(uj.q, g.q, nij.q);
+        mpq_sub(uj.q, U[j].q, uj.q);
+        mpq_abs(uj.q, uj.q);
+        in_face = mpq_cmp(uj.q, H[j].q) <= 0;
+      }
+      if (!in_face) continue;
+      mpq_mul(v.q, g.q, g.q);
+      mpq_mul(v.q, v.q, nn[i].q);
+      offer(v);
+    }
+  // the edges: along a_i, at s_j h_j a_j + s_k h_k a_k, from -h_i a_i to +h_i a_i
+  RVec ha[3];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) mpq_mul(ha[i][k].q, a[i][k].q, h[i].q);
+  for (int i = 0; i < 3; ++i)
+    for (const int sj : {-1, 1})
+      for (const int sk : {-1, 1}) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        RVec m, e0, e1;
+        for (int x = 0; x < 3; ++x) {
+          mpq_set(m[x].q, c[x].q);
+          if (sj > 0) mpq_add(m[x].q, m[x].q, ha[j][x].q);
+          else mpq_sub(m[x].q, m[x].q, ha[j][x].q);
+          if (sk > 0) mpq_add(m[x].q, m[x].q, ha[k][x].q);
+          else mpq_sub(m[x].q, m[x].q, ha[k][x].q);
+          mpq_sub(e0[x].q, m[x].q, ha[i][x].q);
+          mpq_add(e1[x].q, m[x].q, ha[i][x].q);
+        }
+        segment_xx(v, p, e0, e1);
+        offer(v);
+      }
+  return true;
+}
+
+template <class F>
+std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w,
+                                                 WordValues* kept = nullptr) {
   // (on the double words relative to the sphere's centre: words.hpp, about_centre)
   return proximity_on_words(
       s, b,
@@ -201,7 +364,7 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
                               return box;
                             });
       },
-      [](const auto& x, const auto& y) { return solid::intersect(x, y); });
+      [](const auto& x, const auto& y) { return solid::intersect(x, y); }, kept);
 }
 
 }  // namespace detail
@@ -242,9 +405,12 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w = want_proximity) {
   check(s, "sphere");
   check(b, "oriented box");
-  auto [p, d] = detail::proximity_eval(s, b, w);
+  detail::WordValues kv;
+  auto [p, d] = detail::proximity_eval(s, b, w, &kv);
   if (!d.certain)  // (where the double words are certain they are exact already)
     if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
+  // the distance and the depth sharpened where the double words leave them loose (rational.hpp)
+  detail::sharpen_gap(p, kv, s.radius, w, [&](detail::Rational& xx) { return detail::obb_xx(xx, s.center, b); });
   return p;
 }
 template <class F>

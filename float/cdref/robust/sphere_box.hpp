@@ -18,9 +18,12 @@
 //     |Q^ - Q| <= u|Q| + gamma_19^2 S, S <= (|v| + 2 sum |b_i| + |e_i|)^2 + rho^2, about
 //     |v|^2 + rho^2. intersect = Q^ <= 0.
 //  5. Centre outside (some axis clamped): v is also rounded to pairs (two_sum(a, fl(b + e)),
-//     off by at most 3u^2 |v_i|), |v| from them (1.5u + O(u^2)); distance/depth = +-Q/(|v| +
-//     rho): relative error <= 4.5u + 362 u^2 S / |Q| + O(u^2), at most 5 ulps away from
-//     touching within ~u. Witness on the sphere c + rho n, n = v/|v| from the pairs (their
+//     off by at most 3u^2 |v_i|). distance/depth = +-Q/(|v| + rho) with Q within
+//     (1 + 1/16)u of itself (dot2's where its bound is below 2.125u|Q^|, else Q summed as if
+//     in triple precision, sph_box_q3: the gamma^2 S term was 362 u^2 S / |Q|, 117 ulps at
+//     2^-52 of the radius from touching), |v| + rho as a double word (norm_dw, 18u^2 + the
+//     pairs' 3u^2) and the quotient by div_pair (8u^2), rounded once: within about 1.6u of
+//     the truth, 2 ulps, at any distance. Witness on the sphere c + rho n, n = v/|v| from the pairs (their
 //     rounding 3u^2, unit_dw 27u^2 per component) and c_i + rho n_i rounded once (along_dw,
 //     sphere_sphere.hpp): within one ulp unless it cancels to below ~64u rho |n_i| (fma with
 //     n rounded to F was off by 3.5u rho |n_i|: 929 ulps on the near-touching family).
@@ -137,6 +140,27 @@ Bounded<F> sph_box_q(const SphBoxLocal<F>& L) {
                    128);
 }
 
+// Q as sph_box_q, summed as if in triple precision (sum_k, K = 3, over the 38 parts of the 19
+// exact products): |Q^ - Q| <= (u + 3 gamma_37^2)|Q| + gamma_74^3 S (+ 38 eta for products
+// below the normal range). Taken where dot2's bound is not within u|Q|/16 (item 5).
+template <class F>
+F sph_box_q3(const SphBoxLocal<F>& L) {
+  const F *a = L.a, *b = L.b, *e = L.e;
+  F p[38];
+  int n = 0;
+  const auto put = [&](F x, F y) {
+    const Pair<F> t = two_prod(x, y);
+    p[n++] = t.hi;
+    p[n++] = t.lo;
+  };
+  for (int i = 0; i < 3; ++i) {
+    put(a[i], a[i]), put(b[i], b[i]), put(e[i], e[i]);
+    put(F(2 * a[i]), b[i]), put(F(2 * a[i]), e[i]), put(F(2 * b[i]), e[i]);
+  }
+  put(L.rho, F(-L.rho));
+  return sum_k(p, 3);
+}
+
 // The filter of the header: +1 (Q > 0: apart) or -1 (Q < 0: meeting) where the sign of Q is
 // certain from the stable tier's arithmetic, 0 where it is not.
 template <class F>
@@ -236,7 +260,8 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
   if constexpr (std::is_same_v<F, float>) return detail::rounded(proximity(detail::widened(sp), detail::widened(box), w));  // (decision.hpp, widened)
   Proximity<F> res;
   const auto L = detail::sph_box_local(sp, box);
-  const F q = L.outside ? detail::sph_box_q(L).value : F(0);
+  const detail::Bounded<F> qb = L.outside ? detail::sph_box_q(L) : detail::Bounded<F>{F(0), F(0)};
+  const F q = qb.value;
   res.intersect = !L.outside || q <= F(0);
   if (const int f = detail::sphere_box_filter(sp, box)) res.intersect = f < 0;  // as decide() and intersect()
   Vec3<F> x = sp.center;  // the closest point of the box, world coordinates
@@ -252,10 +277,20 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
       vh[i] = p.hi;
       vl[i] = p.lo;
     }
-    if (w & (want_distance | want_depth)) {
-      const F den = detail::norm_of_pairs(vh, vl) + L.rho;
-      if ((w & want_distance) && q > F(0)) res.distance = std::ldexp(q / den, L.scale);
-      if ((w & want_depth) && q < F(0)) res.depth = std::ldexp(-q / den, L.scale);
+    if ((w & (want_distance | want_depth)) && q != F(0)) {
+      // Q within (1 + 1/16)u of itself: dot2's where its bound says so (E <= 2.125u|Q^|), else
+      // summed as if in triple precision; |v| + rho as a double word (norm_dw: 18u^2), the
+      // quotient by div_pair, one rounding (as sphere_sphere.hpp)
+      const F Q = qb.err <= F(2.125) * detail::unit_roundoff<F>() * std::fabs(q) ? q : detail::sph_box_q3(L);
+      const Pair<F> len = detail::norm_dw(vh, vl);
+      const Pair<F> t = two_sum(len.hi, L.rho);
+      const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
+      if (den.hi > F(0) && (Q > F(0)) == (q > F(0))) {
+        const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
+        const F dv = std::ldexp(F(d.hi + d.lo), L.scale);
+        if ((w & want_distance) && q > F(0)) res.distance = dv;
+        if ((w & want_depth) && q < F(0)) res.depth = dv;
+      }
     }
     if (w & want_witnesses) {
       Pair<F> n[3];

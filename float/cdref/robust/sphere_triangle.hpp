@@ -34,6 +34,7 @@
 #include <cdref/book/sphere_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
 
+#include "rational.hpp"
 #include "words.hpp"
 
 namespace cdref::robust {
@@ -90,6 +91,46 @@ Proximity<sqrt_t<T>> proximity_by_face(const Sphere<T>& sp, const Triangle<T>& t
   return res;
 }
 
+// |x - c|^2 exactly, x the point of the closed triangle closest to c: the projection of c on
+// the plane where it lies in the triangle (n = e1 x e2 != 0 and every edge's
+// ((v_k+1 - v_k) x (c - v_k)) . n >= 0: then |x - c|^2 = ((c - v_0) . n)^2 / n.n), else the
+// nearest of the three edges' closest points (segment_xx; a zero-area triangle is its edges).
+template <class F>
+void triangle_xx(Rational& xx, const Vec3<F>& c, const Triangle<F>& t) {
+  RVec p, v[3], e1, e2, n;
+  set_vec(p, c);
+  for (int k = 0; k < 3; ++k) set_vec(v[k], t.vertex[k]);
+  sub_vec(e1, v[1], v[0]);
+  sub_vec(e2, v[2], v[0]);
+  cross_vec(n, e1, e2);
+  Rational nn, side;
+  dot_vec(nn, n, n);
+  if (mpq_sgn(nn.q) != 0) {
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      RVec e, pk, m;
+      sub_vec(e, v[(k + 1) % 3], v[k]);
+      sub_vec(pk, p, v[k]);
+      cross_vec(m, e, pk);
+      dot_vec(side, m, n);
+      inside = mpq_sgn(side.q) >= 0;
+    }
+    if (inside) {
+      RVec pv;
+      sub_vec(pv, p, v[0]);
+      dot_vec(side, pv, n);
+      mpq_mul(xx.q, side.q, side.q);
+      mpq_div(xx.q, xx.q, nn.q);
+      return;
+    }
+  }
+  Rational d;
+  for (int k = 0; k < 3; ++k) {
+    segment_xx(k == 0 ? xx : d, p, v[k], v[(k + 1) % 3]);
+    if (k > 0 && mpq_cmp(d.q, xx.q) < 0) mpq_set(xx.q, d.q);
+  }
+}
+
 // The double words alone (the oracle's second stage).
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
@@ -108,15 +149,20 @@ std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, cons
 }
 // Proximity's values from the double words, its classification from them where they are
 // certain, else from the first stage where it decides.
+// The distance and the depth then sharpened where the double words leave them loose
+// (rational.hpp, sharpen_gap: |x - c|^2 exactly, triangle_xx).
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
                                                        WordValues* kept = nullptr) {
-  auto r = sphere_triangle_words(s, t, w, kept);
-  if (r.second.certain) return r;  // exact already
-  if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
-    r.first.intersect = f != 0;
-    r.second = {f != 0, true};
-  }
+  WordValues local;
+  WordValues& kv = kept ? *kept : local;
+  auto r = sphere_triangle_words(s, t, w, &kv);
+  if (!r.second.certain)
+    if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
+      r.first.intersect = f != 0;
+      r.second = {f != 0, true};
+    }
+  sharpen_gap(r.first, kv, s.radius, w, [&](Rational& xx) { return triangle_xx(xx, s.center, t), true; });
   return r;
 }
 

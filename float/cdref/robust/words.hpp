@@ -311,11 +311,15 @@ auto about_centre(const S& s, const B& b, unsigned w, Prox prox, Translate trans
 // and meet(a, b) are the formulation's proximity and intersection test, at any number type.
 // The distance and the depth as the double words gave them (scaled back, hi + lo), for a
 // caller that compares the values of several queries finer than F resolves (robust/polygon.hpp);
-// words = false where the values came from elsewhere.
+// words = false where the values came from elsewhere. bounded: the distance and the depth were
+// taken from double words (those of the query, or with lenient signs), whose error bounds
+// (scaled back) are distance_err and depth_err (rational.hpp, sharpen_gap).
 struct WordValues {
   bool words = false;
   long double distance_hi = 0, depth_hi = 0;
   double distance_lo = 0, depth_lo = 0;
+  bool bounded = false;
+  long double distance_err = 0, depth_err = 0;
 };
 template <class A, class B, class Prox, class Meet>
 auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet, WordValues* kept = nullptr) {
@@ -327,15 +331,24 @@ auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet, WordValues
     p.on_a = back.len(p.on_a), p.on_b = back.len(p.on_b), p.closest = back.len(p.closest);
     return p;
   };
+  const auto values_of = [](const Proximity<W>& r, const Scale& sc, bool words) {
+    return WordValues{words,
+                      std::ldexp((long double)r.distance.hi(), -sc.k),
+                      std::ldexp((long double)r.depth.hi(), -sc.k),
+                      std::ldexp(r.distance.lo(), -sc.k),
+                      std::ldexp(r.depth.lo(), -sc.k),
+                      true,
+                      std::ldexp((long double)r.distance.bound(), -sc.k),
+                      std::ldexp((long double)r.depth.bound(), -sc.k)};
+  };
   Scale sc;
   if (const auto r = on_words(a, b, prox, &sc)) {
-    if (kept)
-      *kept = {true, std::ldexp((long double)r->distance.hi(), -sc.k), std::ldexp((long double)r->depth.hi(), -sc.k),
-               std::ldexp(r->distance.lo(), -sc.k), std::ldexp(r->depth.lo(), -sc.k)};
+    if (kept) *kept = values_of(*r, sc, true);
     return std::pair<Proximity<F>, Decision>{from_words(*r, sc), {r->intersect, true}};
   }
   Proximity<F> p = prox(a, b);
   if (const auto lr = on_words_lenient(a, b, prox, &sc)) {
+    if (kept) *kept = values_of(*lr, sc, false);
     p.distance = word_or_enclosed(lr->distance, p.distance, sc.k);
     p.depth = word_or_enclosed(lr->depth, p.depth, sc.k);
     p.on_a = word_or_enclosed(lr->on_a, p.on_a, sc.k);
