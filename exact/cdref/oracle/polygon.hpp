@@ -56,6 +56,7 @@ inline int at_stage(Stage st, const Polygon<double>& p, const Box<double>& b) {
   });
 }
 inline int at_stage(Stage st, const Polygon<double>& a, const Polygon<double>& b) {
+  if (st == Stage::filter) return triangle_triangle::polygon_filter(a, b);
   const int nb = b.triangles();
   return union_stage(a.triangles() * nb,
                      [&](int k) { return triangle_triangle::at_stage(st, a.triangle(k / nb), b.triangle(k % nb)); });
@@ -86,6 +87,11 @@ inline bool classify(const Polygon<double>& p, const Box<double>& b, Stage* used
 inline bool classify(const Polygon<double>& a, const Polygon<double>& b, Stage* used = nullptr) {
   check(a, "polygon A");
   check(b, "polygon B");
+  // the pairs' first stage at once (triangle_filter.hpp, polygon_filter), then pair by pair
+  if (const int f = triangle_triangle::polygon_filter(a, b); f != triangle_triangle::unknown) {
+    if (used) *used = Stage::filter;
+    return f != 0;
+  }
   const int nb = b.triangles();
   return polygon::union_classify(
       a.triangles() * nb, [&](int k, Stage* st) { return classify(a.triangle(k / nb), b.triangle(k % nb), st); }, used);

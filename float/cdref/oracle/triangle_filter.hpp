@@ -371,6 +371,99 @@ inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
   }
   return misses == 6 ? 0 : unknown;
 }
+
+// Two polygons (book/polygon.hpp: each the union of its fan triangles (v0, v_k+1, v_k+2)) meet
+// iff some pair of fan triangles does: the filter above on every pair, sharing what pairs have
+// in common. First the polygons' boxes (exact comparisons). Then each fan triangle's plane
+// against a vertex of the other polygon, once (the same triple_sign, on the same rounded
+// differences, as plane_separates, each computed where a pair first asks for it). Then, for a pair
+// neither box nor plane separates, its six edge-triangle filters, each (edge, triangle) once: a
+// diagonal (v0, v_k) belongs to two fan triangles, and its filter is exact wherever it is
+// certain, in either direction. 1 where a pair certainly meets, 0 where every pair is
+// certainly apart, unknown otherwise (the pairs then go through the stages one by one).
+inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
+  for (int i = 0; i < 3; ++i) {
+    double alo = a.vertex[0][i], ahi = alo, blo = b.vertex[0][i], bhi = blo;
+    for (int k = 1; k < a.n; ++k) alo = std::min(alo, a.vertex[k][i]), ahi = std::max(ahi, a.vertex[k][i]);
+    for (int k = 1; k < b.n; ++k) blo = std::min(blo, b.vertex[k][i]), bhi = std::max(bhi, b.vertex[k][i]);
+    if (ahi < blo || bhi < alo) return 0;
+  }
+  constexpr int M = Polygon<double>::max_vertices;
+  // side[0][i][k]: b's vertex k against the plane of a's triangle i; side[1][j][k]: a's vertex k
+  // against b's triangle j; 2 until asked for
+  signed char side[2][M - 2][M];
+  for (auto& t : side)
+    for (auto& r : t)
+      for (auto& x : r) x = 2;
+  bool finite = true;
+  const auto sign_of = [&](int w, int i, int k) {
+    signed char& r = side[w][i][k];
+    if (r == 2) {
+      const Polygon<double>& p = w == 0 ? a : b;
+      const Polygon<double>& q = w == 0 ? b : a;
+      double e1[3], e2[3], x[3];
+      for (int c = 0; c < 3; ++c) {
+        e1[c] = p.vertex[i + 1][c] - p.vertex[0][c];
+        e2[c] = p.vertex[i + 2][c] - p.vertex[0][c];
+        x[c] = q.vertex[k][c] - p.vertex[0][c];
+      }
+      r = static_cast<signed char>(ray_triangle::triple_sign(x, e1, e2, finite));
+    }
+    return r;
+  };
+  const auto plane_apart = [&](int w, int i, int j) {  // triangle j's vertices 0, j+1, j+2
+    const int s0 = sign_of(w, i, 0);
+    return s0 != 0 && s0 == sign_of(w, i, j + 1) && s0 == sign_of(w, i, j + 2);
+  };
+  // edge e of one polygon against triangle j of the other: -1 not yet filtered, else the
+  // filter's answer. Edges: (v_k, v_k+1) is k (k < n, v_n = v0), the diagonal (v0, v_k) n + k.
+  signed char edge[2][2 * M][M - 2];
+  for (auto& t : edge)
+    for (auto& e : t)
+      for (auto& x : e) x = -1;
+  const auto edge_id = [](int n, int u, int v) {  // u, v vertices of a fan triangle's edge
+    if (u > v) std::swap(u, v);
+    if (u == 0 && v == n - 1) return n - 1;
+    if (u == 0 && v != 1) return n + v;
+    return u;
+  };
+  bool unsure = false;
+  for (int i = 0; i < a.n - 2; ++i)
+    for (int j = 0; j < b.n - 2; ++j) {
+      const Triangle<double> ta = a.triangle(i), tb = b.triangle(j);
+      bool apart = false;
+      for (int c = 0; c < 3 && !apart; ++c) {
+        const double alo = std::min(ta.vertex[0][c], std::min(ta.vertex[1][c], ta.vertex[2][c]));
+        const double ahi = std::max(ta.vertex[0][c], std::max(ta.vertex[1][c], ta.vertex[2][c]));
+        const double blo = std::min(tb.vertex[0][c], std::min(tb.vertex[1][c], tb.vertex[2][c]));
+        const double bhi = std::max(tb.vertex[0][c], std::max(tb.vertex[1][c], tb.vertex[2][c]));
+        apart = ahi < blo || bhi < alo;
+      }
+      if (apart) continue;
+      if (plane_apart(0, i, j) || plane_apart(1, j, i)) {
+        if (!finite) return unknown;
+        continue;
+      }
+      if (!finite) return unknown;
+      int misses = 0;
+      for (int w = 0; w < 2; ++w) {
+        const Polygon<double>& p = w == 0 ? a : b;
+        const int tri = w == 0 ? i : j;
+        const Triangle<double>& other = w == 0 ? tb : ta;
+        const int other_id = w == 0 ? j : i;
+        const int vs[3] = {0, tri + 1, tri + 2};
+        for (int k = 0; k < 3; ++k) {
+          const int u = vs[k], v = vs[(k + 1) % 3];
+          signed char& r = edge[w][edge_id(p.n, u, v)][other_id];
+          if (r < 0) r = static_cast<signed char>(ray_triangle::filter(p.vertex[u], &p.vertex[v], p.vertex[v], other));
+          if (r == 1) return 1;
+          misses += r == 0;
+        }
+      }
+      unsure = unsure || misses != 6;
+    }
+  return unsure ? unknown : 0;
+}
 }  // namespace triangle_triangle
 
 }  // namespace cdref::oracle
