@@ -85,6 +85,8 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cdref/cdref.hpp>
 #include <cdref/robust/eft.hpp>
 #include <cmath>
@@ -270,9 +272,9 @@ inline void closest_barycentric(const double (&X)[3][3], double& u, double& v) {
     u = 1 - v;
     return;
   }
-  const double denom = va + vb + vc;
-  u = vb / denom;
-  v = vc / denom;
+  const double inv = 1 / (va + vb + vc);  // one division for both
+  u = vb * inv;
+  v = vc * inv;
 }
 
 inline int filter(const Sphere<double>& s, const Triangle<double>& t) {
@@ -295,7 +297,9 @@ inline int filter(const Sphere<double>& s, const Triangle<double>& t) {
   for (;;) {
     const double sum = u + room, bv = sum - u, err = (u - (sum - bv)) + (room - bv);
     if (sum < 1 || (sum == 1 && err <= 0)) break;
-    room = std::nextafter(room, 0.0);
+    // the next double towards 0 (room > 0 here: room = 0 gives sum = u <= 1), without the
+    // library call std::nextafter is
+    room = std::bit_cast<double>(std::bit_cast<std::uint64_t>(room) - 1);
   }
   if (!(v >= 0)) v = 0;
   if (!(v <= room)) v = room;
