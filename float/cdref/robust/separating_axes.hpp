@@ -26,8 +26,10 @@
 // decision certain: then the classification (and the first separating axis, the entering
 // face) equals the solid's at an exact type. When a comparison is too close to call, the same
 // formulation runs in F and the answer is marked uncertain. Values come from the double word
-// rounded to F; they are not claimed correctly rounded (that is the oracle's job): a distance
-// far below the radius cancels (error about u^2 of the radius), and where the nearest face of
+// rounded to F; they are not claimed correctly rounded (that is the oracle's job). Where their
+// enclosure is wider than u/16 of the value they come from exact rationals instead: a sphere's
+// distance or depth far below its radius (obb_xx, rational.hpp's sharpen_gap), a cast's
+// parameters and point at a grazing angle or through an edge (exact_obb_cast). Where the nearest face of
 // a centre inside cannot be called (two faces at nearly equal distance) the values come from
 // the double words with lenient signs (words.hpp; the sphere's query relative to its centre:
 // about_centre), and the sphere's witness is 4 ulps off at worst on sphere-obb's degenerate

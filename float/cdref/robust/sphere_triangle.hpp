@@ -24,8 +24,10 @@
 // word's enclosure), else from F, and always classifies as decide() does. The values are not
 // claimed correctly rounded (that is the oracle's job); `cdref campaign --query sphere-triangle
 // --impl robust-double` measures them: the distance sqrt|x - c|^2 - rho cancels when it is far
-// below the radius (its error is about u^2 of the radius: 0 ulps on the long-range family to
-// 10^12, 2 at p99 and 40 at worst at 2^-52 of the radius from touching). In the face region
+// below the radius (the double words' error is about u^2 of the triangle's size: 40 ulps at
+// worst at 2^-52 of the radius from touching), so where its enclosure is wider than u/16 of it
+// the distance or depth comes from |x - c|^2 exactly (sphere_triangle_eval, triangle_xx and
+// rational.hpp's sharpen_gap: within an ulp on every family). In the face region
 // the outputs come from the triangle's normal (proximity_by_face below): the sphere's witness
 // c + rho (x - c) / |x - c| took its direction from x - c, which cancels when the centre lies
 // near the plane (2.3e4 ulps on the degenerate family; now every output within 1 ulp there).
