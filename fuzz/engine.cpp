@@ -291,6 +291,7 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
       st.pred_example.offer(0, i, seen, a.pred, t.pred);
     }
     if (spec.classification_only) continue;
+    if (spec.certain_outputs && a.certified && !a.certain) continue;
     int c = 0;
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const Output& out = qi.outputs[g];
@@ -339,6 +340,7 @@ std::string Spec::fingerprint() const {
   std::ostringstream o;
   o << "seed=" << seed << ";n=" << n;
   if (classification_only) o << ";outputs=cls";  // (absent: every output graded)
+  if (certain_outputs) o << ";outputs=certain";
   o << ";queries=";
   for (Query q : queries) o << info(q).name << ",";
   o << ";impls=";

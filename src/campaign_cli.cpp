@@ -97,8 +97,15 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
       c.csv = next(opt);
     else if (opt == "--quiet")
       c.quiet = true;
-    else if (opt == "--outputs")
-      spec.classification_only = classification_only(next(opt));
+    else if (opt == "--outputs") {
+      const std::string o = next(opt);
+      if (o != "all" && o != "cls" && o != "certain")
+        throw std::invalid_argument(
+            "--outputs is all (every output), cls (the classification alone) or certain (every output where "
+            "a certificate says certain), not '" + o + "'");
+      spec.classification_only = o == "cls";
+      spec.certain_outputs = o == "certain";
+    }
     else if (opt == "--mpi") {  // (cdref-mpi runs across the ranks whether or not it is given)
       if (!mpi)
         throw std::invalid_argument(

@@ -56,7 +56,9 @@ const char* usage = R"(usage:
       --json F         write the results as JSON to F ("-" for standard output)
       --csv F          write the results as CSV to F ("-" for standard output)
       --outputs O      all (default): grade every output against the correctly rounded truth;
-                       cls: grade the classification alone (the classification oracle: fast)
+                       cls: grade the classification alone (the classification oracle: fast);
+                       certain: every output, but an implementation with a certificate (robust-*)
+                       only where it calls its classification certain (what it promises)
       --quiet          no table
                        (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign
                        [options]; see cdref-mpi help)

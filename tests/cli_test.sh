@@ -106,9 +106,12 @@ set +e
 "$cdref" campaign --query box-box --family uniform --family grazng 2>> err.txt; s4=$?
 "$cdref" campaign --query box-box --checkpoint-every -1 2>> err.txt; s5=$?
 "$cdref" campaign --query box-box --mpi 2>> err.txt; s6=$?
+"$cdref" campaign --query box-box --outputs certian 2>> err.txt; s7=$?
 set -e
-[ $s1 = 2 ] && [ $s2 = 2 ] && [ $s3 = 2 ] && [ $s4 = 2 ] && [ $s5 = 2 ] && [ $s6 = 2 ] ||
-  fail "bad options did not fail: $s1 $s2 $s3 $s4 $s5 $s6"
+[ $s1 = 2 ] && [ $s2 = 2 ] && [ $s3 = 2 ] && [ $s4 = 2 ] && [ $s5 = 2 ] && [ $s6 = 2 ] && [ $s7 = 2 ] ||
+  fail "bad options did not fail: $s1 $s2 $s3 $s4 $s5 $s6 $s7"
+grep -q "\-\-outputs is all (every output), cls (the classification alone) or certain .*not 'certian'" err.txt ||
+  fail "bad --outputs message: $(cat err.txt)"
 grep -q "no family 'grazng' for query box-box" err.txt || fail "a misspelt family beside a known one: $(cat err.txt)"
 grep -q "\-\-checkpoint-every wants seconds from 0 to 1e6, not '-1'" err.txt || fail "bad --checkpoint-every message"
 grep -q "\-\-mpi: campaigns across MPI ranks run as .mpirun" err.txt || fail "--mpi message: $(cat err.txt)"

@@ -289,6 +289,11 @@ struct Spec {
   // grade the classification alone (the truth from the classification oracle, no rounded
   // outputs: the fast mode for hunting misclassifications)
   bool classification_only = false;
+  // grade the values of an implementation with a certificate (Answer::certified) only where
+  // it calls its classification certain (`--outputs certain`): what its certificate promises.
+  // The classification is graded on every case, and implementations without a certificate on
+  // every case too.
+  bool certain_outputs = false;
   std::string checkpoint;     // file to write as it goes ("" for none)
   double checkpoint_every = 10;  // seconds between checkpoints (0: after every round of work
                                  // items); always one when the campaign is done
