@@ -267,10 +267,6 @@ void take_exact_values(TriangleCast<double>& r, const Shot& shot, const Triangle
   r.point = e->point;
 }
 
-// Whether a double word's value is within a sixteenth of an ulp of its rounding (bound <=
-// 2^-57 |value|): then hi + lo rounded is within one ulp of the exact value.
-inline bool sharp(const W& x) { return x.bound() <= std::fabs(x.hi()) * 0x1p-57; }
-
 // At double, a certain hit's values exactly (exact_triangle_values) where any of the double
 // words' lambda_enter, u, v or point is loose.
 template <class Shot>

@@ -227,18 +227,12 @@ bool exact_obb_cast(Cast<F>& out, const Vec3<F>& src, const Vec3<F>& dt, bool se
   }
   return true;
 }
-// Whether a double word leaves its value's rounding to F loose (an enclosure wider than u/16
-// of the value, or holding 0).
-template <class F>
-bool loose(const W& x, int k = 0) {
-  const long double v = std::ldexp((long double)x.hi() + (long double)x.lo(), -k);
-  return std::ldexp((long double)x.bound(), -k) > std::ldexp(std::fabs(v), -(std::numeric_limits<F>::digits + 4));
-}
 template <class F, class A>
-void sharpen_obb_cast(Cast<F>& c, const Cast<W>& cw, int k, const A& a, const OrientedBox<F>& b, unsigned w) {
-  bool any = ((w & want_lambda_enter) && loose<F>(cw.lambda_enter)) ||
-             ((w & want_lambda_exit) && !cw.unbounded_exit && loose<F>(cw.lambda_exit));
-  for (int i = 0; i < 3 && !any && (w & want_point); ++i) any = loose<F>(cw.point[i], k);
+void sharpen_obb_cast(Cast<F>& c, const Cast<W>& cw, const A& a, const OrientedBox<F>& b, unsigned w) {
+  // (words.hpp, sharp: an enclosure wider than u/16 of the value, or holding 0)
+  bool any = ((w & want_lambda_enter) && !sharp<F>(cw.lambda_enter)) ||
+             ((w & want_lambda_exit) && !cw.unbounded_exit && !sharp<F>(cw.lambda_exit));
+  for (int i = 0; i < 3 && !any && (w & want_point); ++i) any = !sharp<F>(cw.point[i]);
   if (!any) return;
   if constexpr (std::is_same_v<A, Segment<F>>)
     exact_obb_cast(c, a.source, a.target, true, b, w);
@@ -256,7 +250,7 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
   if (const auto r = on_words(a, b, [w](const auto& x, const auto& y) { return solid::cast(x, y, w); }, &sc)) {
     Cast<F> c = cast_value<F>(*r);
     c.point = Scale{-sc.k}.len(c.point);  // parameters and unit normals do not scale
-    if (c.hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *r, sc.k, a, b, w);
+    if (c.hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *r, a, b, w);
     return {c, {r->hit, true}};
   }
   // the values from the double words with lenient signs where they complete with a hit, F's
@@ -266,7 +260,7 @@ std::pair<Cast<F>, Decision> cast_eval(const A& a, const OrientedBox<F>& b, unsi
   if (lw && lw->hit) take_lenient_values<F>(c, *lw, sc.k);
   const auto h = cast_decision_on_words(a, b);
   const Decision d = h ? Decision{*h, true} : Decision{solid::hit(a, b), false};
-  if (d.value && lw && lw->hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *lw, sc.k, a, b, w);
+  if (d.value && lw && lw->hit && (w & (want_lambda_enter | want_lambda_exit | want_point))) sharpen_obb_cast(c, *lw, a, b, w);
   c.hit = d.value;
   return {c, d};
 }

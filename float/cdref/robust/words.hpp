@@ -23,6 +23,7 @@
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -108,6 +109,19 @@ F value(const W& x) {
 template <class F>
 Vec3<F> value(const Vec3<W>& v) {
   return Vec3<F>(value<F>(v[0]), value<F>(v[1]), value<F>(v[2]));
+}
+
+// Whether a double word's value is within a sixteenth of an ulp of F of its rounding to F
+// (bound <= 2^-(p+4) |hi|, p F's precision): then hi + lo rounded is within one ulp of the
+// exact value. An exact 0 carrying a residue is not sharp. (Scaling by 2^k changes neither side.)
+template <class F = double>
+bool sharp(const W& x) {
+  constexpr double f = [] {
+    double y = 1;
+    for (int i = 0; i < std::numeric_limits<F>::digits + 4; ++i) y /= 2;
+    return y;
+  }();
+  return x.bound() <= std::fabs(x.hi()) * f;
 }
 
 // Every length scaled by 2^k (see the header).
