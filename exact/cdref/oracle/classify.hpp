@@ -715,6 +715,9 @@ bool run(Stage* used, const A& a, const B& b, Tag... tag) {
 //                   at the source and (a segment) at the target cover both points, the centre
 //                   and the extents; a ray's direction only enters through its signs and the
 //                   pairs, so it is tested first (finite, not zero) with the extents' signs.
+//                   The separating axes before them (axes_filter) decide only where
+//                   sum |fl(p_i - c_i)| + h_i over both points and |r|_1 are finite: every
+//                   input.
 // What no range test sees, a negative radius or extent (its square or its sum with |c_i| can be
 // in range), is tested before the filter (a NaN fails that test too). Every input the filter
 // leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
