@@ -1,9 +1,9 @@
 // bench/bench_tiers.cpp - `cdref_bench`: every query's tiers timed with Google Benchmark, one
 // benchmark per query, family and row of the cost report (the rows come from the query's
-// descriptor, fuzz/cdref/fuzz/describe.hpp, as `cdref report` takes them), on 1024 prepared
-// cases per family: the uniform family, the long-range family at its farthest scale and the
+// descriptor, fuzz/cdref/fuzz/describe.hpp, as `cdref report` takes them), on 16,384 prepared
+// cases per family (--cases=N): the uniform family, the long-range family at its farthest scale and the
 // query's near-boundary family at its hardest scale (where they exist). Each benchmark runs the
-// row's loop over all 1024 cases per iteration and reports ns per query. After the run, one
+// row's loop over all those cases per iteration and reports ns per query. After the run, one
 // table per query and family gives every row's time as a ratio to `bare` (the book's
 // classification at double without input checks) taken in the same run.
 //
@@ -11,11 +11,12 @@
 //   cdref_bench --benchmark_filter='/uniform-0/(bare|stable|robust-double)'   (names end in /min_time:0.050)
 //   cdref_bench --benchmark_repetitions=3                  medians of three
 // Each benchmark runs at least 0.05 s by default (--benchmark_min_time changes it). Debian's
-// libbenchmark is a debug build: its own overhead is per iteration (1024 queries), small here.
+// libbenchmark is a debug build: its own overhead is per iteration (16,384 queries), small here.
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,7 +26,10 @@ using namespace cdref::fuzz;
 
 namespace {
 
-constexpr std::size_t cases_per_family = 1024;
+// Cases per family (--cases=N). The default is far more than a branch predictor can learn: over
+// the same 1024 cases repeated, the book's box and slab tests ran in a third of the time they
+// take on 16,384 (README, "How many cases").
+std::size_t cases_per_family = 16384;
 
 // "book double, classification" -> "book-double-classification"
 std::string slug(const std::string& s) {
@@ -49,10 +53,33 @@ std::map<std::string, Timed>& registered() {
   return r;
 }
 
-void run_row(benchmark::State& st, std::shared_ptr<TimedRow> row) {
+// One query's family at one scale: its rows are prepared when the first of its benchmarks runs
+// and dropped when another set's are (Google Benchmark runs one benchmark's repetitions, then
+// the next, in registration order), so that only one set's prepared inputs are alive at a time
+// (every row holds its own copy of the cases, in its own types).
+struct CaseSet {
+  Query q;
+  const Family* f;
+  int scale;
+  std::vector<TimedRow> rows;
+};
+CaseSet* alive = nullptr;
+std::vector<TimedRow>& rows_of(CaseSet& s) {
+  if (alive != &s) {
+    if (alive) std::vector<TimedRow>().swap(alive->rows);
+    std::vector<Inputs> cases;
+    for (std::uint64_t i = 0; i < cases_per_family; ++i) cases.push_back(make_case(1, s.q, *s.f, s.scale, i));
+    s.rows = info(s.q).timed_rows(cases, cases, "");
+    alive = &s;
+  }
+  return s.rows;
+}
+
+void run_row(benchmark::State& st, CaseSet* set, std::size_t row) {
+  const TimedRow::Batch& run = rows_of(*set)[row].run;
   std::vector<char> out(cases_per_family);
   for (auto _ : st) {
-    row->run(out.size(), out.data());
+    run(out.size(), out.data());
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
@@ -77,15 +104,17 @@ void reg(Query q) {
   if (const Family* h = family_named(q, {"near-tangent", "near-touching", "grazing", "watertight", "near-edge"}))
     sets.push_back({h, h->scales.back()});
   for (const Set& set : sets) {
-    std::vector<Inputs> cases;
-    for (std::uint64_t i = 0; i < cases_per_family; ++i) cases.push_back(make_case(1, q, *set.f, set.scale, i));
+    auto* cs = new CaseSet{q, set.f, set.scale, {}};  // lives as long as the benchmarks
+    // the rows' names from one case (the rows themselves are prepared when first run)
+    const std::vector<Inputs> one{make_case(1, q, *set.f, set.scale, 0)};
     const std::string fam = set.f->name + "-" + std::to_string(set.scale);
-    for (TimedRow& row : qi.timed_rows(cases, cases, "")) {
-      if (row.hard) continue;  // the same rows on these cases
-      const std::string row_name = slug(row.name);
+    const std::vector<TimedRow> named = qi.timed_rows(one, one, "");
+    for (std::size_t j = 0; j < named.size(); ++j) {
+      if (named[j].hard) continue;  // the same rows on these cases
+      const std::string row_name = slug(named[j].name);
       const std::string name = std::string(qi.name) + "/" + fam + "/" + row_name;
       registered()[name] = {qi.name, fam, row_name};
-      benchmark::RegisterBenchmark(name.c_str(), run_row, std::make_shared<TimedRow>(std::move(row)))->MinTime(0.05);
+      benchmark::RegisterBenchmark(name.c_str(), run_row, cs, j)->MinTime(0.05);
     }
   }
 }
@@ -99,7 +128,7 @@ class Reporter : public benchmark::ConsoleReporter {
     for (const Run& r : runs) {
       if (r.error_occurred || r.iterations == 0) continue;
       const std::string base = r.run_name.function_name;  // as registered (no /min_time: suffix)
-      // seconds per iteration (iterations and aggregates alike), over 1024 queries
+      // seconds per iteration (iterations and aggregates alike), over cases_per_family queries
       const double per_query =
           1e9 * r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) / double(cases_per_family);
       if (r.run_type == Run::RT_Aggregate) {
@@ -136,6 +165,23 @@ void ratio_tables(const std::map<std::string, double>& ns) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // --cases=N (ours; Google Benchmark refuses flags it does not know, so it is taken out first)
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--cases=", 0) == 0) {
+      char* end = nullptr;
+      const unsigned long long n = std::strtoull(a.c_str() + 8, &end, 10);
+      if (a.size() == 8 || *end != '\0' || n == 0 || n > (1ull << 24)) {
+        std::fprintf(stderr, "cdref_bench: --cases needs a whole number from 1 to 16777216, got '%s'\n", a.c_str() + 8);
+        return 2;
+      }
+      cases_per_family = std::size_t(n);
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
   for (Query q : all_queries()) reg(q);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
