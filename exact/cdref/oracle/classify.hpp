@@ -331,7 +331,7 @@ inline int filter(const Sphere<double>& a, const Sphere<double>& b) {
   const double s = a.radius + b.radius;
   const double xx = dx * dx + dy * dy + dz * dz, yy = s * s, m = xx + yy;
   if (!in_range(m)) return unknown;
-  return ge0(fsign(yy - xx, (7 * u) * m));
+  return positive_or_unknown(yy - xx, (7 * u) * m);  // ge0(fsign(..))
 }
 inline int expansion(const Sphere<double>& a0, const Sphere<double>& b0) {
   Sphere<double> a, b;

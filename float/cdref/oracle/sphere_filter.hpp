@@ -140,13 +140,17 @@ inline int filter(const Sphere<double>& sp, const Box<double>& box) {
   double vv = 0, ww = 0;
   for (int i = 0; i < 3; ++i) {
     const double c = std::fabs(sp.center[i] - box.center[i]), h = box.extent[i];
-    const double x = c - h, v = x > 0 ? x : 0.0, w = c + h;
+    // v = max(0, x) as (x + |x|) / 2, exactly (2x is exact, and so is its half; above 2^1023,
+    // where 2x overflows, w^2 fails the range test anyway, as it does for a NaN): g++ turned
+    // the conditional and std::max into a branch per axis, mispredicted as often as the
+    // centre lies inside the slab
+    const double x = c - h, v = (x + std::fabs(x)) * 0.5, w = c + h;
     vv += v * v;
     ww += w * w;
   }
   const double rho2 = sp.radius * sp.radius, m = ww + rho2;
   if (!in_range(m)) return unknown;
-  return le0(fsign(vv - rho2, (9 * u) * m));
+  return positive_or_unknown(rho2 - vv, (9 * u) * m);  // le0(fsign(vv - rho2, ..)): fl(a - b) = -fl(b - a)
 }
 
 }  // namespace cdref::oracle::staged
