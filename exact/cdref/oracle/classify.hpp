@@ -461,8 +461,12 @@ inline int filter(const Ray<double>& ray, const Sphere<double>& sp) {
   return sphere_cast_filter(ray.source, ray.direction, sp, false);
 }
 struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
+// Algorithm 3.2's answer is Algorithm 3.1's hit (a segment meets the closed ball exactly when
+// the cast hits: the tests run both stages' rational answers side by side), and the cast's
+// filter decides it for less: its first sign, sigma, settles every line that misses, where
+// Algorithm 3.2's region tests (s . r, then t . r) branch either way on uniform cases
 inline int filter(const Segment<double>& seg, const Sphere<double>& sp, alg32) {
-  return segment_sphere_logic(SphereFilter(seg.source, seg.target, sp, true));
+  return sphere_cast_filter(seg.source, seg.target, sp, true);
 }
 inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0) {
   Segment<double> seg;
