@@ -352,6 +352,37 @@ struct ObbFilter {
       }
     return miss ? 0 : (undecided ? unknown : 1);
   }
+  // hit_box_logic's decision with every outcode taken at once, without a branch per sign (on
+  // uniform shots those branches go either way, and their mispredictions cost more than the
+  // arithmetic): the same outcodes, bits and pairs, and one more certainty, a shared outcode
+  // bit on an axis whose signs are certain is a miss whatever the other axes say (both ends,
+  // or the source and the direction, beyond the same plane). A ray's d_i is never a certain 0
+  // here, so its exiting bits are d_i < 0 (lower) and d_i > 0 (upper).
+  int decide() const {
+    unsigned bs = 0, bt = 0, sure = 0;
+    for (int i = 0; i < 3; ++i) {
+      const bool sl_neg = sL[i] < -es[i], sl_pos = sL[i] > es[i];
+      const bool sh_neg = sU[i] < -es[i], sh_pos = sU[i] > es[i];
+      bool xl, xh, tsure;
+      if (bounded) {
+        xl = tL[i] < -et[i];
+        xh = tU[i] > et[i];
+        tsure = (xl | (tL[i] > et[i])) & (xh | (tU[i] < -et[i]));
+      } else {
+        xl = d[i] < -ed[i];
+        xh = d[i] > ed[i];
+        tsure = xl | xh;
+      }
+      const bool axis_sure = (sl_neg | sl_pos) & (sh_neg | sh_pos) & tsure;
+      bs |= (unsigned(sl_neg) | unsigned(sh_pos) << 1) << (2 * i);
+      bt |= (unsigned(xl) | unsigned(xh) << 1) << (2 * i);
+      sure |= unsigned(axis_sure) * (3u << (2 * i));
+    }
+    if (bs & bt & sure) return 0;
+    if (sure != 0x3f) return unknown;
+    if (bs == 0 || bt == 0) return 1;  // no pair
+    return pairs(bs, bt);
+  }
 };
 // The filter on a shot and an oriented box; the caller may keep it (oracle/enter.hpp picks the
 // entering face from its signs).
@@ -364,9 +395,9 @@ ObbFilter obb_filter(const Shot& x, const OrientedBox<double>& box) {
 }
 inline int filter(ObbFilter& f) {
   if (!f.ok) return unknown;
-  if (const int r = hit_box_logic(f); r != unknown) return r;
+  if (const int r = f.decide(); r != unknown) return r;
   f.tighten();
-  return hit_box_logic(f);
+  return f.decide();
 }
 inline int filter(const Segment<double>& seg, const OrientedBox<double>& box) {
   ObbFilter f = obb_filter(seg, box);
