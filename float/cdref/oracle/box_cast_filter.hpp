@@ -29,12 +29,13 @@ inline constexpr double u = 0x1p-53;
 // Range of the sums of squares (or of the absolute terms) that the bounds rely on.
 inline bool in_range(double m) { return m >= 0x1p-960 && m <= 0x1p1000; }
 inline int fsign(double p, double bound) { return p > bound ? 1 : (p < -bound ? -1 : unknown); }
-// ge0(fsign(p, bound)) without a branch on the data: 1 when p > bound, 0 when p < -bound, else
-// unknown (= 2). Where a filter's answer is its last sign (hit or miss, half the cases each on
-// uniform inputs), a branch per case is mispredicted half the time, and that cost more than the
-// filter's arithmetic (sphere-sphere's oracle took 4.4x `bare` over 16,384 cases).
-// One comparison decides whether the sign is certain (bound >= 0; a NaN is not) and the
-// caller's test of `unknown` is that one branch, taken alike on hits and misses.
+// ge0(fsign(p, bound)) with one branch, on whether the sign is certain, none on which sign it
+// is: 1 when p > bound, 0 when p < -bound, else unknown (= 2). Where a filter's answer is its
+// last sign (hit or miss, half the cases each on uniform inputs), fsign's two branches and the
+// caller's were mispredicted about half the time, which cost more than the filter's arithmetic
+// (sphere-sphere's oracle took 4.3x `bare` over 16,384 cases). Here |p| > bound (bound >= 0; a
+// NaN fails it) is the certainty, the caller's test of `unknown` is that one branch, taken
+// alike on hits and misses, and the answer is p > 0 as a value.
 inline int positive_or_unknown(double p, double bound) { return std::fabs(p) > bound ? int(p > 0) : unknown; }
 
 // What the box casts' range tests below do not see, tested before them where the input checks
@@ -435,8 +436,8 @@ inline int filter(const Ray<double>& ray, const OrientedBox<double>& box) {
 // M_A M_R at most 2^1000 (a NaN or an infinity among the inputs fails it: these filters decide
 // nothing then, as classify.hpp's filter_first relies on); then no product or sum overflows.
 // A negative extent is the caller's to refuse (signs_valid), and a ray whose direction is zero
-// is left to the checks. A zero-length segment has R = 0: only
-// the faces decide, whether the point lies in the box.
+// is left to the checks. A zero-length segment has R = 0: only the faces decide, whether the
+// point lies in the box.
 // 1 (they meet), 0 (disjoint) or unknown.
 inline int axes_filter(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& box, bool segment) {
   double A[3], R[3], up[3], ue[3], lo[3], le[3];
