@@ -44,6 +44,7 @@
 #include <thread>
 #include <vector>
 
+#include "campaign_cli.hpp"
 #include "casefiles.hpp"
 
 namespace cdref::cli {
@@ -406,10 +407,10 @@ int report_command(std::vector<std::string> args) {
       if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + " needs a value");
       return args[++i];
     };
-    if (args[i] == "--n") n = std::stoull(val());
-    else if (args[i] == "--error-n") err_n = std::stoull(val());
-    else if (args[i] == "--reps") reps = std::stoi(val());
-    else if (args[i] == "--threads") threads = std::stoi(val());
+    if (args[i] == "--n") n = to_u64(val(), "--n");
+    else if (args[i] == "--error-n") err_n = to_u64(val(), "--error-n");
+    else if (args[i] == "--reps") reps = to_int(val(), "--reps");
+    else if (args[i] == "--threads") threads = to_int(val(), "--threads");
     else if (args[i] == "--query") queries.push_back(query_by_name(val()));
     else if (args[i] == "--csv") csv = val();
     else if (args[i] == "--json") json = val();
@@ -417,6 +418,9 @@ int report_command(std::vector<std::string> args) {
     else throw std::invalid_argument("unknown option '" + args[i] + "'");
   }
   if (n == 0 || reps < 1 || err_n == 0) throw std::invalid_argument("report needs --n, --reps and --error-n of at least 1");
+  // every row keeps its own copy of the timed cases: past this the copies outgrow memory
+  if (n > (1u << 24)) throw std::invalid_argument("report takes --n up to 16777216, not " + std::to_string(n));
+  if (threads < 1) throw std::invalid_argument("report needs --threads of at least 1, not " + std::to_string(threads));
   if (queries.empty()) queries = all_queries();
   std::cout << "cdref report: " << n << " uniform cases timed per query, median of " << reps
             << " interleaved repetitions, one thread; errors from " << err_n

@@ -145,6 +145,11 @@ for q in d['queries']:
 grep -q "<svg" report.svg || fail "report SVG"
 "$cdref" report --query box-box --n 10 --reps 1 --error-n 5 > one.txt
 grep -q "^box-box" one.txt && ! grep -q "^sphere-box" one.txt || fail "report --query"
+# a malformed count is refused by name with exit status 2 (not read as its prefix, not wrapped)
+for bad in "--n abc" "--n 1e400" "--n -5" "--n 99999999999" "--threads 0" "--reps x"; do
+  set +e; "$cdref" report $bad --query box-box > /dev/null 2> err.txt; status=$?; set -e
+  [ $status = 2 ] && grep -q "cdref: .*\(--n\|--threads\|--reps\)" err.txt || fail "report $bad: status $status, $(cat err.txt)"
+done
 # scenes: the default runs and compares; --json and --svg write; a malformed scene is refused
 # with its place and exit status 2, before anything runs; a run its type cannot carry is
 # named and the others still print (exit status 1)

@@ -116,11 +116,7 @@ Vec3<F> value(const Vec3<W>& v) {
 // exact value. An exact 0 carrying a residue is not sharp. (Scaling by 2^k changes neither side.)
 template <class F = double>
 bool sharp(const W& x) {
-  constexpr double f = [] {
-    double y = 1;
-    for (int i = 0; i < std::numeric_limits<F>::digits + 4; ++i) y /= 2;
-    return y;
-  }();
+  constexpr double f = double(std::numeric_limits<F>::epsilon()) * 0x1p-5;  // 2^(1-p) 2^-5, exact
   return x.bound() <= std::fabs(x.hi()) * f;
 }
 
