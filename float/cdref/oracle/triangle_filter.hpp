@@ -457,12 +457,12 @@ inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
     for (int j = 0; j < b.n - 2; ++j) {
       const Triangle<double> ta = a.triangle(i), tb = b.triangle(j);
       bool apart = false;
-      for (int c = 0; c < 3 && !apart; ++c) {
-        const double alo = std::min(ta.vertex[0][c], std::min(ta.vertex[1][c], ta.vertex[2][c]));
-        const double ahi = std::max(ta.vertex[0][c], std::max(ta.vertex[1][c], ta.vertex[2][c]));
-        const double blo = std::min(tb.vertex[0][c], std::min(tb.vertex[1][c], tb.vertex[2][c]));
-        const double bhi = std::max(tb.vertex[0][c], std::max(tb.vertex[1][c], tb.vertex[2][c]));
-        apart = ahi < blo || bhi < alo;
+      for (int c = 0; c < 3; ++c) {
+        const double alo = min_value(min_value(ta.vertex[0][c], ta.vertex[1][c]), ta.vertex[2][c]);
+        const double ahi = max_value(max_value(ta.vertex[0][c], ta.vertex[1][c]), ta.vertex[2][c]);
+        const double blo = min_value(min_value(tb.vertex[0][c], tb.vertex[1][c]), tb.vertex[2][c]);
+        const double bhi = max_value(max_value(tb.vertex[0][c], tb.vertex[1][c]), tb.vertex[2][c]);
+        apart |= (ahi < blo) | (bhi < alo);
       }
       if (apart) continue;
       if (plane_apart(0, i, j) || plane_apart(1, j, i)) {
