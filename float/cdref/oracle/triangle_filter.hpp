@@ -215,10 +215,13 @@ inline int filter(const Vec3<double>& s, const Vec3<double>* t, const Vec3<doubl
   for (int i = 0; i < 3; ++i) {
     const double lo = min_value(min_value(tri.vertex[0][i], tri.vertex[1][i]), tri.vertex[2][i]);
     const double hi = max_value(max_value(tri.vertex[0][i], tri.vertex[1][i]), tri.vertex[2][i]);
-    if (t)
-      beyond |= (hi < min_value(s[i], (*t)[i])) | (lo > max_value(s[i], (*t)[i]));
-    else
-      beyond |= ((dir[i] >= 0) & (hi < s[i])) | ((dir[i] <= 0) & (lo > s[i]));
+    const double si = s[i], di = dir[i];
+    if (t) {
+      const double ti = (*t)[i], lo_st = min_value(si, ti), hi_st = max_value(si, ti);
+      beyond |= (hi < lo_st) | (lo > hi_st);
+    } else {
+      beyond |= ((di >= 0) & (hi < si)) | ((di <= 0) & (lo > si));
+    }
   }
   if (beyond) return 0;
   double A[3][3], d[3], e1[3], e2[3];
