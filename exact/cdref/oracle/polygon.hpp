@@ -1,8 +1,9 @@
 // cdref/oracle/polygon.hpp - the fast exact classification oracle for the polygon queries
 // (Section 3.4) at double inputs: the triangle oracles over the polygon's fan (book/polygon.hpp),
-// stopping at the first triangle (or pair) that meets. The stage reported is the most expensive
-// one any triangle needed; a stage alone decides the polygon when it decides a meeting triangle,
-// or every triangle apart.
+// stopping at the first triangle (or pair) that meets. The inputs are checked once; each fan
+// triangle then goes through its oracle's stages without the checks again (its vertices are the
+// polygon's). The stage reported is the most expensive one any triangle needed; a stage alone
+// decides the polygon when it decides a meeting triangle, or every triangle apart.
 #pragma once
 
 #include <cdref/oracle/ray_triangle.hpp>
@@ -67,22 +68,25 @@ inline int at_stage(Stage st, const Polygon<double>& a, const Polygon<double>& b
 inline bool classify(const Segment<double>& s, const Polygon<double>& p, Stage* used = nullptr) {
   check(s, "segment");
   check(p);
-  return polygon::union_classify(p.triangles(), [&](int k, Stage* st) { return classify(s, p.triangle(k), st); }, used);
+  return polygon::union_classify(
+      p.triangles(), [&](int k, Stage* st) { return classify_triangle_cast(s, p.triangle(k), st); }, used);
 }
 inline bool classify(const Ray<double>& r, const Polygon<double>& p, Stage* used = nullptr) {
   check(r, "ray");
   check(p);
-  return polygon::union_classify(p.triangles(), [&](int k, Stage* st) { return classify(r, p.triangle(k), st); }, used);
+  return polygon::union_classify(
+      p.triangles(), [&](int k, Stage* st) { return classify_triangle_cast(r, p.triangle(k), st); }, used);
 }
 inline bool classify(const Sphere<double>& s, const Polygon<double>& p, Stage* used = nullptr) {
   check(s, "sphere");
   check(p);
-  return polygon::union_classify(p.triangles(), [&](int k, Stage* st) { return classify(s, p.triangle(k), st); }, used);
+  return polygon::union_classify(
+      p.triangles(), [&](int k, Stage* st) { return classify_checked(s, p.triangle(k), st); }, used);
 }
 inline bool classify(const Polygon<double>& p, const Box<double>& b, Stage* used = nullptr) {
   check(p);
   check(b, "box");
-  return polygon::union_classify(p.triangles(), [&](int k, Stage* st) { return classify(p.triangle(k), b, st); }, used);
+  return polygon::union_classify(p.triangles(), [&](int k, Stage* st) { return sat::run(st, p.triangle(k), b); }, used);
 }
 inline bool classify(const Polygon<double>& a, const Polygon<double>& b, Stage* used = nullptr) {
   check(a, "polygon A");

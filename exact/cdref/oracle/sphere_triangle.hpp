@@ -35,9 +35,8 @@ inline int at_stage(Stage st, const Sphere<double>& s, const Triangle<double>& t
 
 }  // namespace sphere_triangle
 
-inline bool classify(const Sphere<double>& s, const Triangle<double>& t, Stage* used = nullptr) {
-  check(s, "sphere");
-  check(t, "triangle");
+// The stages on inputs already checked (the polygon's fan triangles: polygon.hpp).
+inline bool classify_checked(const Sphere<double>& s, const Triangle<double>& t, Stage* used = nullptr) {
   for (Stage st : {Stage::filter, Stage::expansion}) {
     const int r = sphere_triangle::at_stage(st, s, t);
     if (r != sphere_triangle::unknown) {
@@ -47,6 +46,11 @@ inline bool classify(const Sphere<double>& s, const Triangle<double>& t, Stage* 
   }
   if (used) *used = Stage::rational;
   return sphere_triangle::rational(s, t);
+}
+inline bool classify(const Sphere<double>& s, const Triangle<double>& t, Stage* used = nullptr) {
+  check(s, "sphere");
+  check(t, "triangle");
+  return classify_checked(s, t, used);
 }
 
 }  // namespace cdref::oracle

@@ -37,15 +37,18 @@ Decision union_of(int count, Each each) {
 
 }  // namespace detail
 
+// (the inputs checked once, in the book's order; the fan triangles' vertices are the polygon's)
 template <class F>
 Decision decide(const Segment<F>& s, const Polygon<F>& p) {
+  check(s, "segment");
   check(p);
-  return detail::union_of(p.triangles(), [&](int k) { return decide(s, p.triangle(k)); });
+  return detail::union_of(p.triangles(), [&](int k) { return detail::triangle_decide_checked(s, p.triangle(k), true); });
 }
 template <class F>
 Decision decide(const Ray<F>& r, const Polygon<F>& p) {
+  check(r, "ray");
   check(p);
-  return detail::union_of(p.triangles(), [&](int k) { return decide(r, p.triangle(k)); });
+  return detail::union_of(p.triangles(), [&](int k) { return detail::triangle_decide_checked(r, p.triangle(k), false); });
 }
 template <class F>
 Cast<F> cast(const Segment<F>& s, const Polygon<F>& p) {

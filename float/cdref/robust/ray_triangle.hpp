@@ -334,6 +334,13 @@ Decision triangle_cast_decide_words(const Shot& shot, const Triangle<F>& tri, bo
   return {true, w && *w == 1};
 }
 
+// decide() on inputs already checked (the polygon's fan triangles: polygon.hpp).
+template <class Shot, class F>
+Decision triangle_decide_checked(const Shot& shot, const Triangle<F>& tri, bool bounded) {
+  if (const int f = triangle_first_stage(shot, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
+  return triangle_cast_decide_words(shot, tri, bounded);
+}
+
 }  // namespace detail
 
 template <class F>
@@ -352,15 +359,13 @@ template <class F>
 Decision decide(const Segment<F>& seg, const Triangle<F>& tri) {
   check(seg, "segment");
   check(tri, "triangle");
-  if (const int f = detail::triangle_first_stage(seg, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
-  return detail::triangle_cast_decide_words(seg, tri, true);
+  return detail::triangle_decide_checked(seg, tri, true);
 }
 template <class F>
 Decision decide(const Ray<F>& ray, const Triangle<F>& tri) {
   check(ray, "ray");
   check(tri, "triangle");
-  if (const int f = detail::triangle_first_stage(ray, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
-  return detail::triangle_cast_decide_words(ray, tri, false);
+  return detail::triangle_decide_checked(ray, tri, false);
 }
 template <class F>
 bool hit(const Segment<F>& seg, const Triangle<F>& tri) {
