@@ -50,6 +50,7 @@
 #include <cmath>
 
 #include "box_cast_filter.hpp"
+#include "minmax.hpp"
 
 namespace cdref::oracle {
 
@@ -260,15 +261,20 @@ inline int axis_test(const Shape& a, const BoxB& b, const double* L, double boun
 // (A's face comes first in the book's order), so this runs where no index is asked for. Six
 // such signs where the axes below set up one bound for all 13: most of a polygon's fan
 // triangles that miss a box miss it so.
+// (outcode_sign's certain 1 and -1 as values, the three axes combined with no branch: minima and
+// maxima by value, as in triangle_filter.hpp)
 inline bool apart_on_box_faces(const Triangle<double>& t, const Box<double>& b) {
+  bool apart = false;
   for (int i = 0; i < 3; ++i) {
-    const double lo = std::min(t.vertex[0][i], std::min(t.vertex[1][i], t.vertex[2][i]));
-    const double hi = std::max(t.vertex[0][i], std::max(t.vertex[1][i], t.vertex[2][i]));
-    const double ql = lo - b.center[i], qh = hi - b.center[i];
-    if (staged::outcode_sign(ql - b.extent[i], 0x1p-52 * std::fabs(ql)) == 1) return true;   // all above
-    if (staged::outcode_sign(qh + b.extent[i], 0x1p-52 * std::fabs(qh)) == -1) return true;  // all below
+    const double x0 = t.vertex[0][i], x1 = t.vertex[1][i], x2 = t.vertex[2][i];
+    const double lo = min_value(min_value(x0, x1), x2), hi = max_value(max_value(x0, x1), x2);
+    const double c = b.center[i], h = b.extent[i];
+    const double ql = lo - c, qh = hi - c, l = ql - h, m = qh + h;
+    const bool above = (std::fabs(l) <= 0x1p1000) & (l > 0x1p-52 * std::fabs(ql));   // all above
+    const bool below = (std::fabs(m) <= 0x1p1000) & (m < -0x1p-52 * std::fabs(qh));  // all below
+    apart |= above | below;
   }
-  return false;
+  return apart;
 }
 
 // Stage 1: 1 intersect, 0 disjoint, or unknown; *axis the first separating axis when it is
@@ -459,7 +465,8 @@ inline int filter(const Sphere<double>& s, const OrientedBox<double>& b) {
   double g[3];
   for (int i = 0; i < 3; ++i) {
     const double p = b.axis[i][0] * d[0] + b.axis[i][1] * d[1] + b.axis[i][2] * d[2];
-    g[i] = std::max(-b.extent[i], std::min(b.extent[i], p));
+    const double h = b.extent[i];
+    g[i] = max_value(-h, min_value(h, p));  // (by value: no branch on which bound clamps)
     if (!std::isfinite(p)) return unknown;
   }
   for (int c = 0; c < 3; ++c) {

@@ -88,17 +88,12 @@
 #include <bit>
 #include <cstdint>
 #include <cdref/cdref.hpp>
+#include <cdref/oracle/minmax.hpp>
 #include <cdref/robust/eft.hpp>
 #include <cmath>
 #include <limits>
 
 namespace cdref::oracle {
-
-// min and max of two doubles by value, which g++ compiles to minsd and maxsd: std::min and
-// std::max on elements of arrays return references, and g++ selected the address with a
-// branch, mispredicted on fresh cases as often as the order of the values changes
-inline double min_value(double a, double b) { return b < a ? b : a; }
-inline double max_value(double a, double b) { return b > a ? b : a; }
 
 namespace ray_triangle {
 
