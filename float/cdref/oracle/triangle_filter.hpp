@@ -363,9 +363,9 @@ inline bool plane_separates(const Triangle<double>& p, const Triangle<double>& t
   return s[0] != 0 && s[0] == s[1] && s[0] == s[2];
 }
 
-inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
-  // a coordinate plane first (exact comparisons of inputs): boxes apart along an axis (one
-  // branch for the three)
+// The triangles' boxes apart along a coordinate axis (exact comparisons of inputs; the three
+// axes' tests combined, for one branch at the caller).
+inline bool boxes_apart(const Triangle<double>& a, const Triangle<double>& b) {
   bool apart = false;
   for (int i = 0; i < 3; ++i) {
     const double alo = min_value(min_value(a.vertex[0][i], a.vertex[1][i]), a.vertex[2][i]);
@@ -374,7 +374,12 @@ inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
     const double bhi = max_value(max_value(b.vertex[0][i], b.vertex[1][i]), b.vertex[2][i]);
     apart |= (ahi < blo) | (bhi < alo);
   }
-  if (apart) return 0;
+  return apart;
+}
+
+inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
+  // a coordinate plane first: boxes apart along an axis
+  if (boxes_apart(a, b)) return 0;
   bool finite = true;
   if (plane_separates(a, b, finite) || plane_separates(b, a, finite)) return finite ? 0 : unknown;
   if (!finite) return unknown;
@@ -454,15 +459,7 @@ inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
   for (int i = 0; i < a.n - 2; ++i)
     for (int j = 0; j < b.n - 2; ++j) {
       const Triangle<double> ta = a.triangle(i), tb = b.triangle(j);
-      bool apart = false;
-      for (int c = 0; c < 3; ++c) {
-        const double alo = min_value(min_value(ta.vertex[0][c], ta.vertex[1][c]), ta.vertex[2][c]);
-        const double ahi = max_value(max_value(ta.vertex[0][c], ta.vertex[1][c]), ta.vertex[2][c]);
-        const double blo = min_value(min_value(tb.vertex[0][c], tb.vertex[1][c]), tb.vertex[2][c]);
-        const double bhi = max_value(max_value(tb.vertex[0][c], tb.vertex[1][c]), tb.vertex[2][c]);
-        apart |= (ahi < blo) | (bhi < alo);
-      }
-      if (apart) continue;
+      if (boxes_apart(ta, tb)) continue;
       if (plane_apart(0, i, j) || plane_apart(1, j, i)) {
         if (!finite) return unknown;
         continue;
