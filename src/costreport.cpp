@@ -137,9 +137,9 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   std::size_t sink = 0;
   // A row slower than 2 us a query (the exact types, the oracle's outputs; one untimed pass
   // over 64 cases tells) is timed on the first `slow_cases` of them: its time goes to
-  // arithmetic on long numbers, where a mispredicted branch (what the many cases are for, in
-  // the fast rows) is a few nanoseconds of microseconds, and on all of them it would take most
-  // of the run.
+  // arithmetic on long numbers, and a mispredicted branch (what the many cases are for, in the
+  // fast rows) costs it a few nanoseconds of its microseconds; on all of them it would take
+  // most of the run.
   std::vector<std::size_t> counts(rows.size());
   for (std::size_t j = 0; j < rows.size(); ++j) {
     const std::size_t all = rows[j].hard ? hard_cases.size() : cases.size();
