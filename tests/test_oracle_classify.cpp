@@ -637,12 +637,26 @@ TEST_CASE("the triangle filter's exact second look: shots through vertices and e
   // Shots in the plane (all three w_k exactly 0) are left to the next stages.
   CHECK(tri_hand(Ray<double>{V(-1, 1, 0), V(1, 0, 0)}, flat, &st));
   CHECK(st != Stage::filter);
-  // Underflow: a triangle of size 2^-400 through a vertex. The products of three coordinates
-  // underflow, so the exact look must not decide; only the later stages do.
+  // A triangle of size 2^-400 through a vertex. Products of three coordinates underflow in
+  // double, so the static bound cannot decide; on the grid (multiples of 2^-400) they are
+  // small integers and the look decides.
   const double m = 0x1p-400;
   const Triangle<double> tiny{{V(0, 0, m), V(4 * m, 0, m), V(0, 4 * m, m)}};
   CHECK(tri_hand(Ray<double>{V(m, m, 3 * m), V(-m, -m, -2 * m)}, tiny, &st));
+  CHECK(st == Stage::filter);
   CHECK(tri_hand(Segment<double>{V(m, m, 3 * m), V(0, 0, m)}, tiny, &st));
+  CHECK(st == Stage::filter);
+  // Below 2^-962 the grid's scale is not a double: the look steps aside, later stages decide.
+  const double mm = 0x1p-1000;
+  const Triangle<double> tinier{{V(0, 0, mm), V(4 * mm, 0, mm), V(0, 4 * mm, mm)}};
+  CHECK(tri_hand(Segment<double>{V(mm, mm, 3 * mm), V(0, 0, mm)}, tinier, &st));
+  CHECK(st != Stage::filter);
+  // On a grid, but too wide for 128 bits: coordinates 2^60 apart on every axis (differences of
+  // 61 bits). The look steps aside; the answer stays right.
+  const double g = 0x1p60;
+  const Triangle<double> wide{{V(g, 0.5, 0.5), V(0.5, g, 0.5), V(0.5, 0.5, g)}};
+  tri_hand(Ray<double>{V(0.5, 0.5, 0.5), V(1, 1, 1)}, wide, &st);
+  CHECK(tri_hand(Segment<double>{V(0.5, 0.5, 0.5), V(g, 0.5, 0.5)}, wide, &st));  // ending on a vertex
   CHECK(st != Stage::filter);
   // Inexact differences (decimal coordinates): the look steps aside, the answer stays right.
   const Triangle<double> dec{{V(0.1, 0.2, 0.3), V(1.1, 0.2, 0.3), V(0.1, 1.7, 0.3)}};
@@ -659,33 +673,69 @@ TEST_CASE("the triangle filter's exact second look: shots through vertices and e
   tri_hand(apart, far, &st);
 }
 
-TEST_CASE("the exact look checks each product: an underflow or a split that overflows is not exact",
+TEST_CASE("the triangle filter's grid: each axis's coordinates as integers, triple products exact in 128 bits",
           "[oracle-classify][triangle-cast]") {
   namespace ev = oracle::ray_triangle::exact_eval;
-  const auto product_ok = [](auto mul_policy, double a, double b) {
-    bool ok = true;
-    ev::mul<decltype(mul_policy)>(a, b, ok);
-    return ok;
-  };
-  for (int fused = 0; fused < 2; ++fused) {
-    if (fused && !robust::cpu_fma()) continue;  // std::fma as a library call would still do, slowly
-    const auto ok = [&](double a, double b) {
-      return fused ? product_ok(robust::FusedProduct{}, a, b) : product_ok(robust::SplitProduct{}, a, b);
-    };
-    CHECK(ok(3, 5));
-    CHECK(ok(0x1p-400, 0x1p-400));           // 2^-800: exact, far from the subnormals
-    CHECK(ok(0, 0x1p-1074));                 // zero through a zero factor
-    CHECK_FALSE(ok(0x1p-600, 0x1p-500));     // 2^-1100 underflows to 0: its error term reads 0 too
-    CHECK_FALSE(ok(1 + 0x1p-52, 0x1p-1060)); // a subnormal product that loses bits
-    CHECK_FALSE(ok(0x1p995, 1));             // Dekker's split would overflow
-    CHECK_FALSE(ok(1 + 0x1p-52, 1 + 0x1p-52));  // an ordinary rounded product
+  std::int64_t n[3];
+  {
+    const double x[3] = {3, -8, 0.25};  // the largest 8 = 2^3: the grid 2^(3 - 61)
+    REQUIRE(ev::to_grid(x, n));
+    CHECK(n[0] == 3 * (std::int64_t(1) << 58));
+    CHECK(n[1] == -(std::int64_t(1) << 61));
+    CHECK(n[2] == std::int64_t(1) << 56);
   }
-  // A triple product whose terms underflow is not taken as exact, though its value reads 0.
-  const double a[3] = {0x1p-400, 0, 0}, b[3] = {0, 0x1p-400, 0}, c[3] = {0, 0, 0x1p-400};
-  CHECK(ev::triple<robust::SplitProduct>(a, b, c) == oracle::ray_triangle::unknown);
-  const double g[3] = {0x1p-300, 0, 0}, h[3] = {0, 0x1p-300, 0}, k[3] = {0, 0, 0x1p-300};
-  CHECK(ev::triple<robust::SplitProduct>(g, h, k) == 1);  // 2^-900: exact
-  CHECK(ev::triple<robust::SplitProduct>(g, k, h) == -1);
+  {
+    const double x[3] = {1e12, 1e12 + 0x1p-13, 1e12 - 3};  // 10^12 and its neighbours: 2^-22
+    REQUIRE(ev::to_grid(x, n));
+    CHECK(n[1] - n[0] == 1 << 9);
+    CHECK(n[0] - n[2] == 3 * (std::int64_t(1) << 22));
+  }
+  const double mx = std::numeric_limits<double>::max(), inf = std::numeric_limits<double>::infinity();
+  const double top[3] = {mx, -mx, 0};
+  REQUIRE(ev::to_grid(top, n));
+  CHECK(n[0] == -n[1]);
+  CHECK(n[0] == ((std::int64_t(1) << 53) - 1) << 9);  // (2^53 - 1) 2^971 on the grid 2^962
+  const double zeros[3] = {0, -0.0, 0};
+  REQUIRE(ev::to_grid(zeros, n));
+  CHECK((n[0] == 0 && n[1] == 0 && n[2] == 0));
+  const double fine[3] = {1e12, 0.1, 0};  // 0.1 has bits far below 10^12's grid
+  CHECK_FALSE(ev::to_grid(fine, n));
+  const double unbounded[3] = {1, inf, 0}, nan[3] = {1, std::nan(""), 0}, below[3] = {0x1p-970, 0, 0};
+  CHECK_FALSE(ev::to_grid(unbounded, n));
+  CHECK_FALSE(ev::to_grid(nan, n));
+  CHECK_FALSE(ev::to_grid(below, n));  // the scale 2^1031 is not a double
+  // the finest grid, 2^-1023: a subnormal on it, and one below it
+  const double finest[2] = {0x1p-962, 0x1p-1023}, finer[2] = {0x1p-962, 0x1p-1074};
+  std::int64_t n2[2];
+  REQUIRE(ev::to_grid(finest, n2));
+  CHECK(n2[0] == std::int64_t(1) << 61);  // 2^-962 / 2^-1023
+  CHECK(n2[1] == 1);
+  CHECK_FALSE(ev::to_grid(finer, n2));
+
+  // triple(): the sign of a . (b x c) against Gmpq, on integers of up to 41 bits an axis (the
+  // sum 123 <= 124), where a double evaluation rounds.
+  std::mt19937_64 rng(12);
+  int rounded_in_double = 0;
+  for (int it = 0; it < 2000; ++it) {
+    const int L = it % 2 ? 41 : 20;
+    std::uniform_int_distribution<std::int64_t> U(-(std::int64_t(1) << L) + 1, (std::int64_t(1) << L) - 1);
+    std::int64_t a[3], b[3], c[3];
+    for (int i = 0; i < 3; ++i) a[i] = U(rng), b[i] = U(rng), c[i] = U(rng);
+    if (it % 4 == 3)
+      for (int i = 0; i < 3; ++i) a[i] = b[i] + c[i];  // coplanar: exactly 0
+    const auto q = [](std::int64_t v) { return CGAL::Gmpq(double(v >> 32)) * CGAL::Gmpq(4294967296.0) + CGAL::Gmpq(double(v & 0xffffffff)); };
+    const CGAL::Gmpq exact = q(a[0]) * (q(b[1]) * q(c[2]) - q(b[2]) * q(c[1])) +
+                             q(a[1]) * (q(b[2]) * q(c[0]) - q(b[0]) * q(c[2])) +
+                             q(a[2]) * (q(b[0]) * q(c[1]) - q(b[1]) * q(c[0]));
+    const int want = CGAL::sign(exact);
+    REQUIRE(ev::triple(a, b, c) == want);
+    const double da[3] = {double(a[0]), double(a[1]), double(a[2])}, db[3] = {double(b[0]), double(b[1]), double(b[2])},
+                 dc[3] = {double(c[0]), double(c[1]), double(c[2])};
+    const double v = da[0] * (db[1] * dc[2] - db[2] * dc[1]) + da[1] * (db[2] * dc[0] - db[0] * dc[2]) +
+                     da[2] * (db[0] * dc[1] - db[1] * dc[0]);
+    rounded_in_double += (v > 0) - (v < 0) != want;
+  }
+  CHECK(rounded_in_double > 0);  // the integers were needed: double got some of these signs wrong
 }
 
 namespace {

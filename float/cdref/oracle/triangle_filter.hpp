@@ -23,29 +23,34 @@
 // roundings (two differences, two products, a difference in the cross product,
 // two sums in the dot product), so |computed - exact| <= gamma_7 P, P the same
 // expression on absolute values; the filter takes 10u (1 + 16u) P~ (P~ computed in
-// double: at most 7 more roundings upward of P) plus 64 * 2^-1074 (1 + |a|_1) for
+// double: at most 7 more roundings upward of P) plus 2^-1022 (1 + |a|_1) for
 // underflow: a rounding that underflows errs by up to 2^-1075 absolute, and one
 // inside the cross product b x c is then multiplied by a's coordinate (found by the
-// fuzz target: a subnormal product scaled by 2^1009). It decides a miss when two
+// fuzz target: a subnormal product scaled by 2^1009), so 64 * 2^-1074 (1 + |a|_1) would
+// do. The term is taken at 2^-1022, the smallest normal double, because a product with
+// a subnormal operand or result takes a microcode assist on these machines, about 30 ns
+// against 2 (the term at 2^-1068 cost the ray-triangle cast's filter 80 of its 29 ns at
+// 10^12 before, cdref_bench, and polygon-polygon 1,050 of 400 ns). It decides a miss when two
 // w_k have opposite certain signs, and a hit or a miss when all three w_k have the
 // same certain sign and Ns (and Nt) certainly have theirs. A non-finite value leaves the case to the next stage.
 //
-// Where a sign is left undecided, a second look, still in double: the same expression evaluated
-// with every operation checked by an error-free transformation (each difference of inputs by
-// Two-Sum, each product by its exact error term, Two-Product, each sum by Two-Sum). When every
-// error is zero the computed value is the exact one and its sign is exact, zero included.
-// Products are checked only where the error term is itself exact: both factors below 2^990 (the
-// split of Dekker's product stays finite) and the product zero through a zero factor or at least
-// 2^-960 in magnitude (then e_a + e_b >= e_min + p - 1 and a b - fl(a b) is representable);
-// otherwise, or where any error is not zero, the sign stays undecided. Inputs on a common grid
-// pass: the vertices of a mesh 10^12 from the origin (multiples of 2^-13 there, a few units
-// apart, so every difference is exact by Sterbenz's lemma and every product of three fits in 53
-// bits), integer lattices. A shot through a vertex or along an edge is exactly degenerate there,
-// and the bound above cannot decide a sign that is exactly 0. With the exact signs the book's
-// test is decided as it stands: opposite signs miss; all three w_k zero (the shot's line in
-// the plane, or a zero-area triangle met in it) is left to the next stage; otherwise D has the
-// sign sD of the w_k that are not zero, and the ray hits iff Ns is not -sD (Ns = 0: lambda = 0),
-// the segment iff moreover Nt is not sD (Nt = 0: lambda = 1).
+// Where a sign is left undecided, a second look, exact: each axis's coordinates (the source,
+// the target or the direction, the three vertices) as integers on a grid of that axis, 2^E_i
+// with E_i = (the exponent of the axis's largest coordinate) - 61, so that each is below 2^62
+// and each difference fits in 64 bits. Every monomial of a triple product takes one coordinate
+// from each axis, so scaling the axes by 2^-E_i scales it by a positive constant and keeps its
+// sign; on integers below 2^L_i an axis with L_0 + L_1 + L_2 <= 124 every partial sum stays
+// below 2^127, and the products are evaluated in 128-bit integers without rounding. Inputs
+// with bits below their axis's grid (the general decimal case), non-finite ones, coordinates
+// all below 2^-962 (the scale would not be a double) or differences too wide for 128 bits
+// leave the case to the next stage. Inputs on a grid pass: a mesh 10^12 from the origin
+// (multiples of 2^-13 there, a few units apart: about 25 bits an axis), integer lattices,
+// triangles of size 2^-400. A shot through a vertex or along an edge is exactly degenerate
+// there, and the bound above cannot decide a sign that is exactly 0. With the exact signs the
+// book's test is decided as it stands: opposite signs miss; all three w_k zero (the shot's
+// line in the plane, or a zero-area triangle met in it) is left to the next stage; otherwise
+// D has the sign sD of the w_k that are not zero, and the ray hits iff Ns is not -sD (Ns = 0:
+// lambda = 0), the segment iff moreover Nt is not sD (Nt = 0: lambda = 1).
 //
 // ---- A sphere and a triangle (book/sphere_triangle.hpp) -------------------------------------
 // First a plane x_i = c_i +- rho: with X = fl(v - c) (rounding is monotone and errs by at most
@@ -103,7 +108,7 @@ inline constexpr int unknown = 2;
 // always: an out-of-line call (GCC's choice once the exact look below calls it too) made the
 // segment cast's filter half as fast again (cdref_bench, 23 -> 34 ns on uniform cases).
 [[gnu::always_inline]] inline int triple_sign(const double (&a)[3], const double (&b)[3], const double (&c)[3], bool& finite) {
-  constexpr double u_ = 0x1p-53, grow = 1 + 16 * u_, eta = 64 * 0x1p-1074;
+  constexpr double u_ = 0x1p-53, grow = 1 + 16 * u_, eta = 0x1p-1022;  // normal: see above
   const double x0 = b[1] * c[2] - b[2] * c[1], x1 = b[2] * c[0] - b[0] * c[2], x2 = b[0] * c[1] - b[1] * c[0];
   const double v = a[0] * x0 + a[1] * x1 + a[2] * x2;
   const double p0 = std::fabs(b[1] * c[2]) + std::fabs(b[2] * c[1]);
@@ -118,86 +123,101 @@ inline constexpr int unknown = 2;
   return v > e ? 1 : v < -e ? -1 : 0;
 }
 
-// ---- the second look: exact evaluation checked operation by operation ----
+// ---- the second look: the inputs as integers on a grid, one grid an axis ----
 namespace exact_eval {
 
-// x - y, clearing ok where the difference is rounded.
-inline double diff(double x, double y, bool& ok) {
-  const robust::Pair<double> d = robust::two_sum(x, -y);
-  ok &= d.lo == 0;
-  return d.hi;
-}
-template <class Mul>
-double mul(double a, double b, bool& ok) {
-  const robust::Pair<double> p = Mul::prod(a, b);
-  const double fa = std::fabs(a), fb = std::fabs(b), fp = std::fabs(p.hi);
-  ok &= p.lo == 0 && fa < 0x1p990 && fb < 0x1p990 && (fp >= 0x1p-960 || fa == 0 || fb == 0);
-  return p.hi;
-}
-inline double add(double a, double b, bool& ok) {
-  const robust::Pair<double> s = robust::two_sum(a, b);
-  ok &= s.lo == 0 && std::isfinite(s.hi);
-  return s.hi;
+using Wide = __int128;
+
+// The coordinates of one axis as integers: n_j = x_j 2^-E with E = e - 61, e the exponent of the
+// largest |x_j| (|x_j| < 2^(e+1)), so that |n_j| < 2^62 and a difference of two fits in an
+// int64. The scaling by 2^-E is exact (a power of two; every nonzero |x_j| >= 2^-1074 lands at
+// least at 2^-51, a normal number), and the conversion is checked by converting back. false
+// where a coordinate has bits below 2^E, where one is not finite, or where the largest is
+// below 2^-962 (the scale 2^-E would not be a double): the look then steps aside.
+template <int N>
+bool to_grid(const double (&x)[N], std::int64_t (&n)[N]) {
+  double m = 0;
+  bool ok = true;
+  for (int j = 0; j < N; ++j) {
+    const double a = std::fabs(x[j]);
+    ok &= a <= std::numeric_limits<double>::max();  // false for NaN and infinities
+    m = max_value(m, a);
+  }
+  // e + 1023 (all zero: any grid does)
+  const int biased = m == 0 ? 61 : int(std::bit_cast<std::uint64_t>(m) >> 52);
+  if (!ok || biased < 61) return false;
+  // 2^-E = 2^(1084 - biased), a normal double for biased in [61, 2046]
+  const double scale = std::bit_cast<double>(std::uint64_t(2107 - biased) << 52);
+  for (int j = 0; j < N; ++j) {
+    const double y = x[j] * scale;  // |y| < 2^62: the conversion is defined
+    n[j] = std::int64_t(y);
+    ok &= double(n[j]) == y;
+  }
+  return ok;
 }
 
-// The sign of a . (b x c) (-1, 0, +1) when its evaluation in double is exact, `unknown` else.
-template <class Mul>
-int triple(const double (&a)[3], const double (&b)[3], const double (&c)[3]) {
-  bool ok = true;
-  double x[3];
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    x[i] = add(mul<Mul>(b[j], c[k], ok), -mul<Mul>(b[k], c[j], ok), ok);
-  }
-  const double v = add(add(mul<Mul>(a[0], x[0], ok), mul<Mul>(a[1], x[1], ok), ok), mul<Mul>(a[2], x[2], ok), ok);
-  if (!ok) return unknown;
-  return v > 0 ? 1 : v < 0 ? -1 : 0;
+// The exact sign of a . (b x c) for integer vectors whose i-th coordinates are below 2^L_i in
+// magnitude with L_0 + L_1 + L_2 <= 124: each of the six monomials is below 2^124, their
+// sum below 2^127, every partial sum too (a cross product's component is below 2^(L_j+L_k+1)).
+inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const std::int64_t (&c)[3]) {
+  const Wide x0 = Wide(b[1]) * c[2] - Wide(b[2]) * c[1];
+  const Wide x1 = Wide(b[2]) * c[0] - Wide(b[0]) * c[2];
+  const Wide x2 = Wide(b[0]) * c[1] - Wide(b[1]) * c[0];
+  const Wide v = a[0] * x0 + a[1] * x1 + a[2] * x2;
+  return int(v > 0) - int(v < 0);
 }
 
 // The cast decided from the static signs (nonzero: certain; 0: undecided) and the exact ones
-// where those are undecided; `unknown` where an exact sign is not to be had or the shot lies
-// in the triangle's plane.
-template <class Mul>
-int settle(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir, const Triangle<double>& tri,
-           int w0, int w1, int w2) {
-  // which differences are exact: the vertices from the source, the direction, the edges
-  bool okA = true, okd = true, oke = true;
-  double A[3][3], d[3], e1[3], e2[3];
+// where those are undecided; `unknown` where the inputs are not on a grid fine enough or the
+// shot lies in the triangle's plane.
+[[gnu::noinline]] inline int settle(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir, const Triangle<double>& tri,
+                                    int w0, int w1, int w2) {
+  // per axis: the source, the target (a segment) or the direction (a ray), the three vertices
+  std::int64_t A[3][3], d[3], e1[3], e2[3], T0[3];
+  std::uint64_t any[3];
+  int bits = 0;
   for (int i = 0; i < 3; ++i) {
-    for (int k = 0; k < 3; ++k) A[k][i] = diff(tri.vertex[k][i], s[i], okA);
-    d[i] = t ? diff((*t)[i], s[i], okd) : dir[i];
-    e1[i] = diff(tri.vertex[1][i], tri.vertex[0][i], oke);
-    e2[i] = diff(tri.vertex[2][i], tri.vertex[0][i], oke);
+    const double x[5] = {s[i], t ? (*t)[i] : dir[i], tri.vertex[0][i], tri.vertex[1][i], tri.vertex[2][i]};
+    std::int64_t n[5];
+    if (!to_grid(x, n)) return unknown;
+    for (int k = 0; k < 3; ++k) A[k][i] = n[2 + k] - n[0];
+    d[i] = t ? n[1] - n[0] : n[1];
+    e1[i] = n[3] - n[2];
+    e2[i] = n[4] - n[2];
+    T0[i] = t ? n[2] - n[1] : 0;
+    // every value a triple product below takes on this axis (each below 2^63 in magnitude);
+    // -x has the trailing zeros of x
+    any[i] = std::uint64_t(A[0][i]) | std::uint64_t(A[1][i]) | std::uint64_t(A[2][i]) | std::uint64_t(d[i]) |
+             std::uint64_t(e1[i]) | std::uint64_t(e2[i]) | std::uint64_t(T0[i]);
+    bits += std::bit_width(std::uint64_t(std::llabs(A[0][i]) | std::llabs(A[1][i]) | std::llabs(A[2][i]) |
+                                         std::llabs(d[i]) | std::llabs(e1[i]) | std::llabs(e2[i]) |
+                                         std::llabs(T0[i])));
+  }
+  if (bits > 124) {
+    // too wide as they stand (a lattice's differences are as wide as its coordinates at the
+    // grid of its largest): divide each axis by the power of two its values have in common
+    bits = 0;
+    for (int i = 0; i < 3; ++i) {
+      const int common = any[i] == 0 ? 0 : std::countr_zero(any[i]);
+      for (int k = 0; k < 3; ++k) A[k][i] >>= common;  // exact: those bits are zero
+      d[i] >>= common, e1[i] >>= common, e2[i] >>= common, T0[i] >>= common;
+      bits += std::bit_width(std::uint64_t(std::llabs(A[0][i]) | std::llabs(A[1][i]) | std::llabs(A[2][i]) |
+                                           std::llabs(d[i]) | std::llabs(e1[i]) | std::llabs(e2[i]) |
+                                           std::llabs(T0[i])));
+    }
+    if (bits > 124) return unknown;
   }
   int w[3] = {w0, w1, w2};
   for (int k = 0; k < 3; ++k)
-    if (w[k] == 0) w[k] = okA && okd ? triple<Mul>(d, A[(k + 1) % 3], A[(k + 2) % 3]) : unknown;
-  const bool neg = w[0] == -1 || w[1] == -1 || w[2] == -1, pos = w[0] == 1 || w[1] == 1 || w[2] == 1;
+    if (w[k] == 0) w[k] = triple(d, A[(k + 1) % 3], A[(k + 2) % 3]);
+  const bool neg = w[0] < 0 || w[1] < 0 || w[2] < 0, pos = w[0] > 0 || w[1] > 0 || w[2] > 0;
   if (neg && pos) return 0;
-  if (w[0] == unknown || w[1] == unknown || w[2] == unknown || !(neg || pos)) return unknown;
+  if (!(neg || pos)) return unknown;  // the shot's line in the triangle's plane
   const int sD = pos ? 1 : -1;
-  // Ns and Nt: the static bound first (with the rounded differences it was derived for), then
-  // the exact evaluation where it leaves the sign open
-  bool finite = true;
-  int ns = triple_sign(A[0], e1, e2, finite);
-  if (ns == 0 || !finite) ns = okA && oke ? triple<Mul>(A[0], e1, e2) : unknown;
-  if (ns == -sD) return 0;  // lambda < 0
-  int nt = -sD;
-  if (t) {
-    bool okT = oke;
-    double T0[3];
-    for (int i = 0; i < 3; ++i) T0[i] = diff(tri.vertex[0][i], (*t)[i], okT);
-    finite = true;
-    nt = triple_sign(T0, e1, e2, finite);
-    if (nt == 0 || !finite) nt = okT ? triple<Mul>(T0, e1, e2) : unknown;
-    if (nt == sD) return 0;  // lambda > 1
-  }
-  return ns != unknown && nt != unknown ? 1 : unknown;
-}
-
-[[gnu::noinline]] inline int settle_any(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir,
-                                        const Triangle<double>& tri, int w0, int w1, int w2) {
-  return robust::with_products([&](auto mul) { return settle<decltype(mul)>(s, t, dir, tri, w0, w1, w2); });
+  // Ns = (v0 - s) . (e1 x e2): lambda's numerator; Nt = (v0 - t) . (e1 x e2)
+  if (triple(A[0], e1, e2) == -sD) return 0;        // lambda < 0
+  if (t && triple(T0, e1, e2) == sD) return 0;      // lambda > 1
+  return 1;
 }
 
 }  // namespace exact_eval
@@ -231,7 +251,7 @@ inline int filter(const Vec3<double>& s, const Vec3<double>* t, const Vec3<doubl
             w2 = triple_sign(d, A[0], A[1], finite);
   if (!finite) return unknown;
   if ((w0 < 0 || w1 < 0 || w2 < 0) && (w0 > 0 || w1 > 0 || w2 > 0)) return 0;
-  if (w0 == 0 || w0 != w1 || w0 != w2) return exact_eval::settle_any(s, t, dir, tri, w0, w1, w2);
+  if (w0 == 0 || w0 != w1 || w0 != w2) return exact_eval::settle(s, t, dir, tri, w0, w1, w2);
   const int sD = w0;
   // Ns = (v0 - s) . (e1 x e2): the sign of lambda's numerator
   const int ns = triple_sign(A[0], e1, e2, finite);
@@ -246,7 +266,7 @@ inline int filter(const Vec3<double>& s, const Vec3<double>* t, const Vec3<doubl
     if (nt == sD) return 0;  // lambda > 1
   }
   if (ns == sD && nt == -sD) return 1;
-  return exact_eval::settle_any(s, t, dir, tri, w0, w1, w2);
+  return exact_eval::settle(s, t, dir, tri, w0, w1, w2);
 }
 
 }  // namespace ray_triangle
