@@ -741,16 +741,18 @@ TEST_CASE("every output of a certain robust answer at double within 2 ulps on ev
 }
 
 TEST_CASE("a campaign with --outputs certain grades a certified implementation's values only where it is certain", "[campaign][robust]") {
-  // The ray-polygon cast at 10^9: near a fan diagonal the robust cast may report the hit of the
-  // triangle beside the one the exact ray enters (both uncertain), and that triangle's normal
-  // is 2.2e10 ulps off. Graded where the certificate says certain, every value is within 2 ulps;
-  // the classification is graded on every case alike, and the book (no certificate) on every
-  // case in both modes.
+  // The ray-triangle cast 2^-52 of the edge's length across an edge (rounded onto it): where
+  // neither the filter nor the double words decide, the robust cast reports a hit, uncertain,
+  // with the watertight test's values, and a barycentric weight whose truth is 0 comes out near
+  // 2^-52, 4e18 ulps off (counted across the subnormals).
+  // Graded where the certificate says certain, every value is within 2 ulps; the
+  // classification is graded on every case alike, and the book (no certificate) on every case
+  // in both modes.
   Spec s;
-  s.queries = {query_by_name("ray-polygon-cast")};
+  s.queries = {query_by_name("ray-triangle-cast")};
   s.impls = {"robust-double", "book-double"};
-  s.families = {"long-range"};
-  s.scales = {7, 9};
+  s.families = {"near-edge"};
+  s.scales = {40, 52};
   s.n = 1000;
   s.seed = 1;
   s.threads = 2;

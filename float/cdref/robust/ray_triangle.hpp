@@ -155,12 +155,15 @@ auto cast_on_words(const Shot& a, const Tri& b) {
 // [0, inf) clipped by the edges' half-planes (alpha + lambda beta >= 0, alpha = (ab x (s - a)) . n,
 // beta = (ab x d) . n), and u, v are the weights at s + lambda_enter d: ((x - v0) x e2) . n / n.n
 // and (e1 x (x - v0)) . n / n.n. Nothing for a zero-area triangle, or where a value falls outside
-// the normal range. Called only where the double words leave a value's rounding loose (a weight
-// or a coordinate whose enclosure holds 0, or is wide beside it: a shot through an edge or a
-// vertex, in the plane), each a few microseconds.
+// the normal range. The normal n / |n| turned to face the source (0 where the source lies in
+// the plane), each coordinate n_i / sqrt(n . n) in MPFR at 159 bits (three roundings) and
+// rounded once: within an ulp of the truth. Called only where the double words leave a value's
+// rounding loose (a weight or a coordinate whose enclosure holds 0, or is wide beside it: a shot
+// through an edge or a vertex, in the plane) or do not complete (a proven hit whose words meet
+// an exact 0), each a few microseconds.
 struct ExactTriangleValues {
   double lambda_enter, lambda_exit, u, v;
-  Vec3<double> point;
+  Vec3<double> point, normal;
 };
 inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<double>& src, const Vec3<double>& dt,
                                                                 bool d_is_target, bool bounded,
@@ -232,6 +235,27 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
     mpq_div(v.q, v.q, nn.q);
   }
   ExactTriangleValues out;
+  {
+    RVec n;
+    Rational side;
+    cross_vec(n, e1, e2);
+    dot_vec(side, sv, n);
+    out.normal = Vec3<double>(0, 0, 0);
+    if (const int turn = mpq_sgn(side.q); turn != 0) {
+      mpfr_t len, c;
+      mpfr_inits2(159, len, c, (mpfr_ptr)0);
+      Rational nn;
+      dot_vec(nn, n, n);
+      mpfr_set_q(len, nn.q, MPFR_RNDN);
+      mpfr_sqrt(len, len, MPFR_RNDN);
+      for (int i = 0; i < 3; ++i) {
+        mpfr_set_q(c, n[i].q, MPFR_RNDN);
+        mpfr_div(c, c, len, MPFR_RNDN);
+        out.normal[i] = turn * mpfr_get_d(c, MPFR_RNDN);
+      }
+      mpfr_clears(len, c, (mpfr_ptr)0);
+    }
+  }
   const auto le = round_rational(lo), ru = round_rational(u), rv = round_rational(v);
   const auto lx = open ? std::optional<double>(std::numeric_limits<double>::infinity()) : round_rational(hi);
   if (!le || !lx || !ru || !rv) return std::nullopt;
@@ -250,8 +274,8 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
   return out;
 }
 
-// A certain hit's lambda_enter, lambda_exit, u, v and point replaced by their exact values,
-// correctly rounded, where exact_triangle_values gives them.
+// A certain hit's lambda_enter, lambda_exit, u, v, point and normal replaced by their exact
+// values, rounded once, where exact_triangle_values gives them.
 template <class Shot>
 void take_exact_values(TriangleCast<double>& r, const Shot& shot, const Triangle<double>& tri, bool bounded) {
   std::optional<ExactTriangleValues> e;
@@ -265,6 +289,7 @@ void take_exact_values(TriangleCast<double>& r, const Shot& shot, const Triangle
   r.u = e->u;
   r.v = e->v;
   r.point = e->point;
+  r.normal = e->normal;
 }
 
 // At double, a certain hit's values exactly (exact_triangle_values) where any of the double
