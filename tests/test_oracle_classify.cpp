@@ -704,6 +704,8 @@ TEST_CASE("the triangle filter's grid: each axis's coordinates as integers, trip
   CHECK_FALSE(ev::to_grid(unbounded, n));
   CHECK_FALSE(ev::to_grid(nan, n));
   CHECK_FALSE(ev::to_grid(below, n));  // the scale 2^1031 is not a double
+  const double apart[3] = {0x1p769, 0x1p-1034, 0};  // 2^-1034 scaled by 2^-708 underflows to 0
+  CHECK_FALSE(ev::to_grid(apart, n));
   // the finest grid, 2^-1023: a subnormal on it, and one below it
   const double finest[2] = {0x1p-962, 0x1p-1023}, finer[2] = {0x1p-962, 0x1p-1074};
   std::int64_t n2[2];

@@ -130,10 +130,12 @@ using Wide = __int128;
 
 // The coordinates of one axis as integers: n_j = x_j 2^-E with E = e - 61, e the exponent of the
 // largest |x_j| (|x_j| < 2^(e+1)), so that |n_j| < 2^62 and a difference of two fits in an
-// int64. The scaling by 2^-E is exact (a power of two; every nonzero |x_j| >= 2^-1074 lands at
-// least at 2^-51, a normal number), and the conversion is checked by converting back. false
-// where a coordinate has bits below 2^E, where one is not finite, or where the largest is
-// below 2^-962 (the scale 2^-E would not be a double): the look then steps aside.
+// int64. The scaling by 2^-E is exact unless its result falls below the normal range, and
+// there it is below 1: not an integer, or 0 (a coordinate far below the largest, which the
+// fuzz target found: 2^-1034 beside 2^769). So a coordinate passes where its scaled value is an
+// integer (converted back, the same double) and is 0 only if the coordinate is. false where a
+// coordinate has bits below 2^E, where one is not finite, or where the largest is below
+// 2^-962 (the scale 2^-E would not be a double): the look then steps aside.
 template <int N>
 bool to_grid(const double (&x)[N], std::int64_t (&n)[N]) {
   double m = 0;
@@ -151,7 +153,7 @@ bool to_grid(const double (&x)[N], std::int64_t (&n)[N]) {
   for (int j = 0; j < N; ++j) {
     const double y = x[j] * scale;  // |y| < 2^62: the conversion is defined
     n[j] = std::int64_t(y);
-    ok &= double(n[j]) == y;
+    ok &= (double(n[j]) == y) & ((y != 0) | (x[j] == 0));
   }
   return ok;
 }
