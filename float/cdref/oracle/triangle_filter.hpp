@@ -95,7 +95,6 @@
 #include <cstdint>
 #include <cdref/cdref.hpp>
 #include <cdref/oracle/minmax.hpp>
-#include <cdref/robust/eft.hpp>
 #include <cmath>
 #include <limits>
 
@@ -177,7 +176,9 @@ inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const 
                                     int w0, int w1, int w2) {
   // per axis: the source, the target (a segment) or the direction (a ray), the three vertices
   std::int64_t A[3][3], d[3], e1[3], e2[3], T0[3];
-  std::uint64_t any[3];
+  // the values a triple product below takes on axis i, or'd (each below 2^63 in magnitude)
+  const auto all = [&](int i, auto f) { return f(A[0][i]) | f(A[1][i]) | f(A[2][i]) | f(d[i]) | f(e1[i]) | f(e2[i]) | f(T0[i]); };
+  const auto magnitude = [](std::int64_t x) { return std::uint64_t(std::llabs(x)); };
   int bits = 0;
   for (int i = 0; i < 3; ++i) {
     const double x[5] = {s[i], t ? (*t)[i] : dir[i], tri.vertex[0][i], tri.vertex[1][i], tri.vertex[2][i]};
@@ -188,25 +189,19 @@ inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const 
     e1[i] = n[3] - n[2];
     e2[i] = n[4] - n[2];
     T0[i] = t ? n[2] - n[1] : 0;
-    // every value a triple product below takes on this axis (each below 2^63 in magnitude);
-    // -x has the trailing zeros of x
-    any[i] = std::uint64_t(A[0][i]) | std::uint64_t(A[1][i]) | std::uint64_t(A[2][i]) | std::uint64_t(d[i]) |
-             std::uint64_t(e1[i]) | std::uint64_t(e2[i]) | std::uint64_t(T0[i]);
-    bits += std::bit_width(std::uint64_t(std::llabs(A[0][i]) | std::llabs(A[1][i]) | std::llabs(A[2][i]) |
-                                         std::llabs(d[i]) | std::llabs(e1[i]) | std::llabs(e2[i]) |
-                                         std::llabs(T0[i])));
+    bits += std::bit_width(all(i, magnitude));
   }
   if (bits > 124) {
     // too wide as they stand (a lattice's differences are as wide as its coordinates at the
     // grid of its largest): divide each axis by the power of two its values have in common
+    // (-x has the trailing zeros of x)
     bits = 0;
     for (int i = 0; i < 3; ++i) {
-      const int common = any[i] == 0 ? 0 : std::countr_zero(any[i]);
+      const std::uint64_t any = all(i, [](std::int64_t x) { return std::uint64_t(x); });
+      const int common = any == 0 ? 0 : std::countr_zero(any);
       for (int k = 0; k < 3; ++k) A[k][i] >>= common;  // exact: those bits are zero
       d[i] >>= common, e1[i] >>= common, e2[i] >>= common, T0[i] >>= common;
-      bits += std::bit_width(std::uint64_t(std::llabs(A[0][i]) | std::llabs(A[1][i]) | std::llabs(A[2][i]) |
-                                           std::llabs(d[i]) | std::llabs(e1[i]) | std::llabs(e2[i]) |
-                                           std::llabs(T0[i])));
+      bits += std::bit_width(all(i, magnitude));
     }
     if (bits > 124) return unknown;
   }
