@@ -179,6 +179,10 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
   sub_vec(e2, V2, V0);
   sub_vec(sv, S, V0);
   cross_vec(p, R, e2);
+  RVec n;  // the plane's normal, for the flat case and the normal
+  Rational nn;
+  cross_vec(n, e1, e2);
+  dot_vec(nn, n, n);
   Rational det, lo, hi, u, v;
   dot_vec(det, e1, p);
   bool open = false;
@@ -193,9 +197,7 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
     dot_vec(v, R, q);
     mpq_div(v.q, v.q, det.q);
   } else {
-    RVec n;
-    cross_vec(n, e1, e2);
-    if (mpq_sgn(n[0].q) == 0 && mpq_sgn(n[1].q) == 0 && mpq_sgn(n[2].q) == 0) return std::nullopt;
+    if (mpq_sgn(nn.q) == 0) return std::nullopt;  // a zero-area triangle
     const RVec* vert[3] = {&V0, &V1, &V2};
     mpq_set_ui(lo.q, 0, 1);
     mpq_set_ui(hi.q, 1, 1);
@@ -220,13 +222,12 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
       }
     }
     RVec x, xv, c;
-    Rational nn, t;
+    Rational t;
     for (int i = 0; i < 3; ++i) {
       mpq_mul(t.q, R[i].q, lo.q);
       mpq_add(x[i].q, S[i].q, t.q);
     }
     sub_vec(xv, x, V0);
-    dot_vec(nn, n, n);
     cross_vec(c, xv, e2);
     dot_vec(u, c, n);
     mpq_div(u.q, u.q, nn.q);
@@ -236,16 +237,12 @@ inline std::optional<ExactTriangleValues> exact_triangle_values(const Vec3<doubl
   }
   ExactTriangleValues out;
   {
-    RVec n;
     Rational side;
-    cross_vec(n, e1, e2);
     dot_vec(side, sv, n);
     out.normal = Vec3<double>(0, 0, 0);
     if (const int turn = mpq_sgn(side.q); turn != 0) {
       mpfr_t len, c;
       mpfr_inits2(159, len, c, (mpfr_ptr)0);
-      Rational nn;
-      dot_vec(nn, n, n);
       mpfr_set_q(len, nn.q, MPFR_RNDN);
       mpfr_sqrt(len, len, MPFR_RNDN);
       for (int i = 0; i < 3; ++i) {
