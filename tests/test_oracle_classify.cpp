@@ -880,3 +880,44 @@ TEST_CASE("the box casts' separating axes filter alone equals the truth wherever
   CHECK(staged::axes_filter(Vec3<double>(0.5, 0.5, 0.5), Vec3<double>(0.5, 0.5, 0.5), unit, true) == 1);  // a point inside
   CHECK(staged::axes_filter(Vec3<double>(0.5, 2, 0.5), Vec3<double>(0.5, 2, 0.5), unit, true) == 0);      // a point outside
 }
+
+TEST_CASE("the sphere filter's sigma decides only with the exact sign, its cruder bound near its edge",
+          "[oracle-classify][sphere-cast]") {
+  // sigma = |r|^2 rho^2 - |s x r|^2 is decided first against 23u |s|^2 |r|^2, then against the
+  // bound by components (oracle/sphere_filter.hpp). Lines placed so that |sigma| is 2^-10 to
+  // 2^6 times u |s|^2 |r|^2 (log-uniform, either sign: the rounding errors of the computed
+  // sigma are of that order, so a bound too small gets signs wrong), the source 1 to 2^24
+  // radii from the centre (beyond, sigma cannot reach the band): wherever sigma() decides,
+  // its sign is the exact one (CGAL::Gmpq); some cases are decided and some left.
+  using Qx = CGAL::Gmpq;
+  std::mt19937_64 rng(20261125);
+  std::uniform_real_distribution<double> unit(-1, 1), octave(-10, 6);
+  int decided = 0, left = 0, wrong = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const double e = std::ldexp(1.0, int(rng() % 25));
+    const Vec3<double> s = V(unit(rng), unit(rng), unit(rng)) * e, r = V(unit(rng), unit(rng), unit(rng));
+    const double ss = s.squaredNorm(), rr = r.squaredNorm(), cc = s.cross(r).squaredNorm();
+    const double P = (rng() % 2 ? 1 : -1) * std::exp2(octave(rng)) * 0x1p-53 * ss * rr;
+    if (!(cc + P > 0)) continue;
+    const Sphere<double> sp{V(0, 0, 0), std::sqrt((cc + P) / rr)};
+    const int got = staged::SphereFilter(s, r, sp, false).sigma();
+    if (got == staged::unknown) {
+      ++left;
+      continue;
+    }
+    ++decided;
+    Qx c[3];
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      c[k] = Qx(s[i]) * Qx(r[j]) - Qx(s[j]) * Qx(r[i]);
+    }
+    const Qx rrq = Qx(r[0]) * Qx(r[0]) + Qx(r[1]) * Qx(r[1]) + Qx(r[2]) * Qx(r[2]);
+    const Qx sigma = rrq * Qx(sp.radius) * Qx(sp.radius) - (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    const int exact = CGAL::sign(sigma) > 0 ? 1 : (CGAL::sign(sigma) < 0 ? -1 : 0);
+    if (got != exact) ++wrong;
+  }
+  INFO("decided " << decided << ", left " << left);
+  CHECK(wrong == 0);
+  CHECK(decided > 1000);
+  CHECK(left > 100);
+}

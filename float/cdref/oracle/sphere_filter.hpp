@@ -73,19 +73,32 @@ struct SphereFilter {
   // u (5 rho + 9 |s|) of tangency, linear in |s| rather than quadratic. Ranges: ss, rr in
   // [2^-480, 2^480] and rho2 <= 2^480 exclude overflow; an underflowing product (2^-1075)
   // perturbs c_k absolutely and is multiplied by |c_k| <= 2^481: the absolute 2^-590 covers it.
+  // The cruder bound first: |c_k| <= m_k and |c~_k| <= m_k (1 + gamma_4), so the sum is at most
+  // (2 + 14u) sum m_k^2, and sum m_k^2 <= 2 |s|^2 |r|^2 (m_k^2 <= 2 (s_i^2 r_j^2 + s_j^2 r_i^2))
+  // <= 2 ss rr (1 + 14u) (the leaves and the computed squares): 5u times the sum is at most
+  // 21u ss rr, and 23u fl(ss rr) covers it with the roundings of its own evaluation (ss rr >=
+  // 2^-960 by the ranges, no underflow). It decides every case but those at range or near
+  // tangency, where |s|^2 |r|^2 is far above |s| |c| |r|, without the finer bound's six
+  // products and nine absolute values: the ray cast's oracle on uniform cases went from 10.5
+  // to 8.7 ns a case, 4% slower at long range (standalone loop over 16,384 cases); only the
+  // cases it leaves take the finer bound.
   int sigma() const {
     if (!(ss >= 0x1p-480 && ss <= 0x1p480 && rr >= 0x1p-480 && rr <= 0x1p480 && rho2 <= 0x1p480)) return unknown;
-    double c[3], dev = 0, cc = 0;
+    double c[3], cc = 0;
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double p = s[i] * r[j], q = s[j] * r[i];
-      c[k] = p - q;
-      const double m = std::fabs(p) + std::fabs(q);
-      dev += m * (2 * std::fabs(c[k]) + (5 * u) * m);
+      c[k] = s[i] * r[j] - s[j] * r[i];
       cc += c[k] * c[k];
     }
-    const double rrr = rr * rho2;
-    return fsign(rrr - cc, (9 * u) * rrr + (5 * u) * (dev + cc) + 0x1p-590);
+    const double rrr = rr * rho2, P = rrr - cc, fixed = (9 * u) * rrr + (5 * u) * cc + 0x1p-590;
+    if (std::fabs(P) > fixed + (23 * u) * (ss * rr)) return P > 0 ? 1 : -1;
+    double dev = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double m = std::fabs(s[i] * r[j]) + std::fabs(s[j] * r[i]);
+      dev += m * (2 * std::fabs(c[k]) + (5 * u) * m);
+    }
+    return fsign(P, fixed + (5 * u) * dev);
   }
 };
 
