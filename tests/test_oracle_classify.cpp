@@ -9,6 +9,7 @@
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/sphere_triangle.hpp>
 #include <cdref/oracle/triangle_triangle.hpp>
 #include <cdref/oracle/word_bounds.hpp>
 
@@ -920,4 +921,38 @@ TEST_CASE("the sphere filter's sigma decides only with the exact sign, its crude
   CHECK(wrong == 0);
   CHECK(decided > 1000);
   CHECK(left > 100);
+}
+
+TEST_CASE("sphere-triangle's oracle refuses what check() refuses, in check()'s order", "[oracle-classify][errors]") {
+  // Each bad value in each of the 13 slots (centre, radius, three vertices) gets check()'s
+  // message, and the valid extremes the answer of the stages on checked inputs.
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double big = std::numeric_limits<double>::max();
+  const std::vector<double> vals = {inf, -inf, nan, -1, -0x1p-1074, big, -big, 0x1p-1074, 0, -0.0};
+  const double touching[13] = {0.25, 0.25, 1, 1, 0, 0, 0, 2, 0, 0, 0, 2, 0};  // a hit
+  const double apart[13] = {0.25, 0.25, 3, 1, 0, 0, 0, 2, 0, 0, 0, 2, 0};     // a miss
+  int refused = 0, answered = 0;
+  for (const double* base : {touching, apart}) {
+    for (int slot = 0; slot < 13; ++slot) {
+      for (double v : vals) {
+        double x[13];
+        std::copy(base, base + 13, x);
+        x[slot] = v;
+        const Sphere<double> sp{V(x[0], x[1], x[2]), x[3]};
+        const Triangle<double> tri{{V(x[4], x[5], x[6]), V(x[7], x[8], x[9]), V(x[10], x[11], x[12])}};
+        CAPTURE(slot, v, base[2]);
+        const std::string want = msg([&] { check(sp, "sphere"), check(tri, "triangle"); });
+        bool got = false;
+        CHECK(msg([&] { got = oracle::classify(sp, tri); }) == want);
+        if (want == "no exception") {
+          ++answered;
+          CHECK(got == oracle::classify_checked(sp, tri));
+        } else {
+          ++refused;
+        }
+      }
+    }
+  }
+  CHECK(refused == 2 * (13 * 3 + 3));  // an infinity or a NaN in any slot, a negative radius
+  CHECK(answered == 2 * 13 * 10 - refused);
 }
