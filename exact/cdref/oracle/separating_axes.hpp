@@ -12,10 +12,12 @@
 //                (sphere) a point of the box and a direction, each a certificate with a
 //                static bound (oracle/sat_filter.hpp, with their derivations: the robust
 //                tier's certified decisions run them first too);
-//   2. double word  the robust versions' evaluation on oracle::Bounded2 (double words with a
-//                rigorous running bound; robust/separating_axes.hpp; for a segment or a ray
-//                and an oriented box the solid's cast decision first, then the axes), certain
-//                when every decisive comparison is (Stage::expansion names this stage here);
+//   2. double word  (a segment or a ray and an oriented box) Algorithm 3.3 in the box's face
+//                coordinates on double words, then the solid's cast decision on them; the axes
+//                stage 1 left open on double words with rigorous bounds (sat_words.hpp: near
+//                touching one axis of the 13 or 15); then the robust versions' evaluation of
+//                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
+//                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
 //
 #pragma once
@@ -25,6 +27,7 @@
 #include <cdref/oracle/bounded.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/sat_filter.hpp>
+#include <cdref/oracle/sat_words.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cmath>
@@ -33,14 +36,22 @@ namespace cdref::oracle {
 
 namespace sat {
 
-// Stage 2: the robust versions' double-word evaluation: 1, 0 or unknown.
-// (A segment or a ray and an oriented box: the solid's cast decision first, as there.)
+// Stage 2: the double words: 1, 0 or unknown. (A segment or a ray and an oriented box: the
+// solid's cast decision first, as in the robust tier.) `open`: the axes stage 1 left open
+// (sat::filter); run on its own (at_stage), stage 2 asks stage 1 for them.
 template <class A, class B>
-int double_word(const A& a, const B& b) {
+int double_word(const A& a, const B& b, unsigned open) {
   if constexpr (robust::detail::has_cast_decision<A, B, double>)
     if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
+  if (const int r = sat_words::decide(a, b, open); r != unknown) return r;
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
+}
+template <class A, class B>
+int double_word(const A& a, const B& b) {
+  unsigned open = 0;
+  filter(a, b, nullptr, &open);  // 0 where stage 1 decides: then only the whole formulation runs
+  return double_word(a, b, open);
 }
 
 // Stage 3: Theorem 3.1 on the true normals at CGAL::Gmpq.
@@ -64,12 +75,16 @@ int at_stage(Stage st, const A& a, const B& b) {
 
 template <class A, class B>
 bool run(Stage* used, const A& a, const B& b) {
-  for (Stage st : {Stage::filter, Stage::expansion}) {
-    const int r = at_stage(st, a, b);
-    if (r != unknown) {
-      if (used) *used = st;
-      return r != 0;
-    }
+  unsigned open = 0;
+  int r = filter(a, b, nullptr, &open);
+  Stage st = Stage::filter;
+  if (r == unknown) {
+    r = double_word(a, b, open);
+    st = Stage::expansion;
+  }
+  if (r != unknown) {
+    if (used) *used = st;
+    return r != 0;
   }
   if (used) *used = Stage::rational;
   return rational(a, b);

@@ -278,9 +278,13 @@ inline bool apart_on_box_faces(const Triangle<double>& t, const Box<double>& b) 
 }
 
 // Stage 1: 1 intersect, 0 disjoint, or unknown; *axis the first separating axis when it is
-// certain too (else -2), -1 when they intersect.
+// certain too (else -2), -1 when they intersect. *open (when given) is 0 except where the answer
+// is unknown after every axis was tested: then bit i is set for each axis i (in the book's order)
+// left undecided, every other axis certainly does not separate, and the double words need look
+// at these alone (sat_words.hpp).
 template <class A, class B>
-int filter(const A& a0, const B& b0, int* axis = nullptr) {
+int filter(const A& a0, const B& b0, int* axis = nullptr, unsigned* open = nullptr) {
+  if (open) *open = 0;
   if constexpr (std::is_same_v<A, Triangle<double>> && std::is_same_v<B, Box<double>>)
     if (!axis && apart_on_box_faces(a0, b0)) return 0;
   const BoxB b = box_b(b0);
@@ -295,13 +299,17 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
       a.kind == Shape::ray ? 6 * u * (1 + 32 * u) * (norm1(a.g[0]) * b.lambda_face) + 16 * 0x1p-1074 : -1;
   int index = 0;
   bool known_so_far = true, any_unknown = false;
+  unsigned open_bits = 0;
   auto visit = [&](int t) {
     const int at = index++;
     if (t == 1) {
       if (axis && known_so_far) *axis = at;
       return true;
     }
-    if (t == unknown) known_so_far = false, any_unknown = true;
+    if (t == unknown) {
+      known_so_far = false, any_unknown = true;
+      open_bits |= 1u << at;
+    }
     return false;
   };
   for (int k = 0; k < a.faces; ++k)
@@ -318,7 +326,10 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
       }
       if (visit(axis_test(a, b, L, bound, a.kind == Shape::ray ? -1 : dir_bound))) return 0;
     }
-  if (any_unknown) return unknown;
+  if (any_unknown) {
+    if (open) *open = open_bits;
+    return unknown;
+  }
   if (axis) *axis = -1;
   return 1;
 }
@@ -329,18 +340,19 @@ int filter(const A& a0, const B& b0, int* axis = nullptr) {
 // (they recognise exact zeros: a shot along an edge or in a face plane of an axis-aligned frame,
 // a box of zero extent, which no bound on the face coordinates decides).
 template <class Shot>
-int filter_shot_obb(const Shot& s, const OrientedBox<double>& b, int* axis) {
+int filter_shot_obb(const Shot& s, const OrientedBox<double>& b, int* axis, unsigned* open) {
+  if (open) *open = 0;
   if (const int r = staged::filter(s, b); r != unknown) {
     if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
     return r;
   }
-  return filter<Shot, OrientedBox<double>>(s, b, axis);
+  return filter<Shot, OrientedBox<double>>(s, b, axis, open);
 }
-inline int filter(const Segment<double>& s, const OrientedBox<double>& b, int* axis = nullptr) {
-  return filter_shot_obb(s, b, axis);
+inline int filter(const Segment<double>& s, const OrientedBox<double>& b, int* axis = nullptr, unsigned* open = nullptr) {
+  return filter_shot_obb(s, b, axis, open);
 }
-inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axis = nullptr) {
-  return filter_shot_obb(ray, b, axis);
+inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axis = nullptr, unsigned* open = nullptr) {
+  return filter_shot_obb(ray, b, axis, open);
 }
 
 // ---- Stage 1 for two oriented boxes: Theorem 3.1 in A's face coordinates ----
@@ -428,12 +440,14 @@ inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedB
   }
   return undecided ? unknown : 1;
 }
-inline int filter(const OrientedBox<double>& A, const OrientedBox<double>& B, int* axis = nullptr) {
+inline int filter(const OrientedBox<double>& A, const OrientedBox<double>& B, int* axis = nullptr,
+                  unsigned* open = nullptr) {
+  if (open) *open = 0;
   if (const int r = filter_face_coordinates(A, B); r != unknown) {
     if (axis) *axis = r == 1 ? -1 : -2;  // the first separating axis is not known here
     return r;
   }
-  return filter<OrientedBox<double>, OrientedBox<double>>(A, B, axis);
+  return filter<OrientedBox<double>, OrientedBox<double>>(A, B, axis, open);
 }
 
 }  // namespace sat

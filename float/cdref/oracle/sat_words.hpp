@@ -1,0 +1,241 @@
+// cdref/oracle/sat_words.hpp - Theorem 3.1 on double words, on the axes the first stage left
+// open: the second stage of the Section 3.3 classification oracle for a segment, a triangle or an
+// oriented box against an axis-aligned or an oriented box (exact/cdref/oracle/separating_axes.hpp),
+// and of the robust tier's certified decision on those pairs (robust/separating_axes.hpp).
+//
+// The first stage (sat_filter.hpp) tests every candidate axis in double against one static bound
+// and, where it cannot decide, says which axes it left open: each other axis certainly does not
+// separate. Near touching that is one axis of the 13 or 15 (a vertex near a face leaves that
+// face's axis, an edge grazing an edge their cross; counted over 400 cases a query at 2^-52 on the
+// near-touching and grazing families of triangle-box, triangle-obb and obb-obb: one open axis in
+// every case the first stage did not decide). The pair is disjoint exactly when some axis
+// separates, so the open axes decide it: one of them certainly separating makes it disjoint, all of
+// them certainly not separating makes the shapes meet, and anything else is left to the double
+// words of the whole formulation (robust/separating_axes.hpp), then to CGAL::Gmpq. Before this
+// stage those ran on every case the first stage left open, a microsecond or more where one axis
+// takes a tenth of it.
+//
+// On one axis the test is the first stage's (sat_filter.hpp): with coordinates relative to B's
+// centre, B projects onto [-r_B, r_B], r_B = sum_k h_k |g_k . L|, and A onto [lo, hi] (the extremes
+// of X . L over A's points; X_0 . L -+ sum_k h_k |a_k . L| for a box A), and L separates exactly
+// when s = lo - r_B > 0 or s' = -r_B - hi > 0. The sign of each is invariant under a positive
+// scaling of L, and a negative one swaps s and s', so L may be any nonzero multiple of the book's
+// axis; it is the same polynomial in the inputs here: A's face normal (v_1 - v_0) x (v_2 - v_0) or
+// a_j x a_k, B's face normal e_k or b_j x b_k, an edge cross e x g with e = v_{k+1} - v_k or a_k.
+// Every quantity is then a double word with a rigorous bound on its distance from the exact value
+// (word_bounds.hpp, which derives each operation's bound):
+//   X = p - c_B and e = v_{k+1} - v_k   exact pairs (Two-Sum of two inputs);
+//   L                                   cross_words of exact pairs (an input is the pair (x, 0));
+//   x . L, g . L                        dot_words (x, g exact pairs);
+//   |w|                                 the word or its negation: 1-Lipschitz, the bound unchanged;
+//   h w                                 scale_word; sums and differences add_words;
+//   min and max of two words            the one with the smaller (larger) value hi + lo, with the
+//                                       larger of the two bounds (both are 1-Lipschitz in the
+//                                       maximum norm, so the exact extreme lies within it).
+// A sign is certain when |hi| - |lo| exceeds the bound (word_bounds::sign_of); an exact zero is
+// never certain there, so an axis that is exactly zero (parallel edges the first stage could not
+// prove parallel), or a pair exactly touching, is left to the next stages, which see exact zeros.
+// Range: every input at most 2^100 in magnitude (each quantity is of degree at most 4 in them: no
+// value overflows; NaN and infinities fail the test); below, the bounds' allowance for underflow
+// (2^-1022 an operation) only widens them. Where the largest input is beyond 2^100 or below
+// 2^-100, every length (points, centres, extents; not an oriented box's axes) is first scaled by
+// the power of two that brings it to [1, 2) (robust/words.hpp, scale_of: kept only where scaling
+// back gives the inputs again, so the scaling is exact). On every axis s and s' are then
+// multiplied by a positive power of two (each is homogeneous in the lengths: of degree 1 on an
+// oriented box's face axes, 2 on an edge cross, 3 on a triangle's normal), and their signs stay. A ray's half-infinite projection (the sign of d . L,
+// exactly 0 on its own edge crosses) is not handled here: the casts on an oriented box have their
+// own second stage first (word_bounds.hpp, obb_cast_words), and a ray is left to the next stage.
+#pragma once
+
+#include <cdref/oracle/sat_filter.hpp>
+#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/robust/words.hpp>
+#include <cmath>
+
+namespace cdref::oracle::sat_words {
+
+using robust::Pair;
+using word_bounds::Word;
+
+inline constexpr int unknown = sat::unknown;
+
+// The shapes as exact pairs and inputs: A's points relative to B's centre (or a box A's centre),
+// A's edges (differences of inputs, or a box's axes), the generators and half-extents of each.
+struct Shapes {
+  int n = 0;             // A's points (0 for a box A)
+  int faces = 0, edges = 0;
+  bool zonotope = false;  // A is a box
+  bool b_aligned = true;  // B is axis-aligned
+  Pair<double> X[3][3];   // A's points, or its centre
+  Pair<double> edge[3][3];
+  Pair<double> face_b[2][3];  // a triangle's two edges from v_0, for its normal
+  Pair<double> ga[3][3], gb[3][3];
+  double ha[3] = {}, hb[3] = {};
+  bool ok = true;
+};
+
+inline Pair<double> input(double x) { return {x, 0.0}; }
+inline void check_range(Shapes& s, double x) { s.ok = s.ok && std::fabs(x) <= 0x1p100; }
+inline void relative(Shapes& s, Pair<double> (&X)[3], const Vec3<double>& p, const Vec3<double>& c) {
+  for (int i = 0; i < 3; ++i) {
+    check_range(s, p[i]);
+    X[i] = robust::two_sum(p[i], -c[i]);
+  }
+}
+inline void difference(Pair<double> (&e)[3], const Vec3<double>& p, const Vec3<double>& q) {
+  for (int i = 0; i < 3; ++i) e[i] = robust::two_sum(p[i], -q[i]);
+}
+
+inline void set_b(Shapes& s, const Box<double>& b) {
+  for (int k = 0; k < 3; ++k) {
+    check_range(s, b.center[k]);
+    check_range(s, b.extent[k]);
+    s.hb[k] = b.extent[k];
+    for (int i = 0; i < 3; ++i) s.gb[k][i] = input(i == k ? 1.0 : 0.0);
+  }
+}
+inline void set_b(Shapes& s, const OrientedBox<double>& b) {
+  s.b_aligned = false;
+  for (int k = 0; k < 3; ++k) {
+    check_range(s, b.center[k]);
+    check_range(s, b.extent[k]);
+    s.hb[k] = b.extent[k];
+    for (int i = 0; i < 3; ++i) {
+      check_range(s, b.axis[k][i]);
+      s.gb[k][i] = input(b.axis[k][i]);
+    }
+  }
+}
+inline void set_a(Shapes& s, const Segment<double>& seg, const Vec3<double>& c) {
+  s.n = 2;
+  relative(s, s.X[0], seg.source, c);
+  relative(s, s.X[1], seg.target, c);
+  s.edges = 1;
+  difference(s.edge[0], seg.target, seg.source);
+}
+inline void set_a(Shapes& s, const Triangle<double>& t, const Vec3<double>& c) {
+  s.n = 3;
+  for (int k = 0; k < 3; ++k) relative(s, s.X[k], t.vertex[k], c);
+  s.faces = 1;
+  s.edges = 3;
+  for (int k = 0; k < 3; ++k) difference(s.edge[k], t.vertex[(k + 1) % 3], t.vertex[k]);
+  difference(s.face_b[0], t.vertex[1], t.vertex[0]);
+  difference(s.face_b[1], t.vertex[2], t.vertex[0]);
+}
+inline void set_a(Shapes& s, const OrientedBox<double>& a, const Vec3<double>& c) {
+  s.zonotope = true;
+  relative(s, s.X[0], a.center, c);
+  s.faces = s.edges = 3;
+  for (int k = 0; k < 3; ++k) {
+    check_range(s, a.extent[k]);
+    s.ha[k] = a.extent[k];
+    for (int i = 0; i < 3; ++i) {
+      check_range(s, a.axis[k][i]);
+      s.ga[k][i] = s.edge[k][i] = input(a.axis[k][i]);
+    }
+  }
+}
+
+template <class A, class B>
+Shapes shapes(const A& a, const B& b) {
+  Shapes s;
+  set_b(s, b);
+  set_a(s, a, b.center);
+  return s;
+}
+
+inline Word abs_word(const Word& w) { return w.v.hi < 0 || (w.v.hi == 0 && w.v.lo < 0) ? word_bounds::negated(w) : w; }
+inline bool word_less(const Word& a, const Word& b) { return a.v.hi < b.v.hi || (a.v.hi == b.v.hi && a.v.lo < b.v.lo); }
+inline Word min_word(const Word& a, const Word& b) { return {word_less(b, a) ? b.v : a.v, std::max(a.e, b.e)}; }
+inline Word max_word(const Word& a, const Word& b) { return {word_less(a, b) ? b.v : a.v, std::max(a.e, b.e)}; }
+
+// sum_k h_k |g_k . L|
+template <class Mul>
+Word radius(const Pair<double> (&g)[3][3], const double (&h)[3], const Word (&L)[3]) {
+  static constexpr double zero[3] = {0, 0, 0};
+  Word r = word_bounds::scale_word<Mul>(abs_word(word_bounds::dot_words<Mul>(g[0], zero, L)), h[0]);
+  for (int k = 1; k < 3; ++k)
+    r = word_bounds::add_words(r, word_bounds::scale_word<Mul>(abs_word(word_bounds::dot_words<Mul>(g[k], zero, L)), h[k]), 1);
+  return r;
+}
+
+// On axis `index` in the book's order (A's faces, B's faces, A's edges x B's generators): s1 = lo -
+// r_B and s2 = -r_B - hi as words, each within its bound of the exact value.
+template <class Mul>
+void axis_words(const Shapes& s, int index, Word& s1, Word& s2) {
+  static constexpr double zero[3] = {0, 0, 0};
+  Word L[3];
+  if (index < s.faces) {
+    if (s.zonotope) word_bounds::cross_words<Mul>(s.ga[(index + 1) % 3], s.ga[(index + 2) % 3], L);
+    else word_bounds::cross_words<Mul>(s.face_b[0], s.face_b[1], L);
+  } else if (index < s.faces + 3) {
+    const int k = index - s.faces;
+    if (s.b_aligned) {
+      for (int i = 0; i < 3; ++i) L[i] = {input(i == k ? 1.0 : 0.0), 0.0};
+    } else {
+      word_bounds::cross_words<Mul>(s.gb[(k + 1) % 3], s.gb[(k + 2) % 3], L);
+    }
+  } else {
+    const int e = (index - s.faces - 3) / 3, j = (index - s.faces - 3) % 3;
+    word_bounds::cross_words<Mul>(s.edge[e], s.gb[j], L);
+  }
+  const Word rb = radius<Mul>(s.gb, s.hb, L);
+  Word lo, hi;
+  if (s.zonotope) {
+    const Word c = word_bounds::dot_words<Mul>(s.X[0], zero, L), ra = radius<Mul>(s.ga, s.ha, L);
+    lo = word_bounds::add_words(c, ra, -1);
+    hi = word_bounds::add_words(c, ra, 1);
+  } else {
+    lo = hi = word_bounds::dot_words<Mul>(s.X[0], zero, L);
+    for (int k = 1; k < s.n; ++k) {
+      const Word x = word_bounds::dot_words<Mul>(s.X[k], zero, L);
+      lo = min_word(lo, x);
+      hi = max_word(hi, x);
+    }
+  }
+  s1 = word_bounds::add_words(lo, rb, -1);
+  s2 = word_bounds::add_words(word_bounds::negated(rb), hi, -1);
+}
+
+// 1 axis `index` certainly separates, 0 it certainly does not, unknown.
+template <class Mul>
+int axis_on_words(const Shapes& s, int index) {
+  Word w1, w2;
+  axis_words<Mul>(s, index, w1, w2);
+  const int s1 = word_bounds::sign_of(w1), s2 = word_bounds::sign_of(w2);
+  if (s1 == 1 || s2 == 1) return 1;
+  if (s1 == -1 && s2 == -1) return 0;
+  return unknown;
+}
+
+template <class Mul>
+int decide_open(const Shapes& s, unsigned open) {
+  bool undecided = false;
+  for (int i = 0; open >> i; ++i) {
+    if (!((open >> i) & 1u)) continue;
+    const int t = axis_on_words<Mul>(s, i);
+    if (t == 1) return 0;
+    undecided = undecided || t == unknown;
+  }
+  return undecided ? unknown : 1;
+}
+
+// 1 they meet, 0 disjoint, unknown; `open` as sat::filter leaves it (0: nothing to go on).
+template <class A, class B>
+int decide(const A& a, const B& b, unsigned open) {
+  if constexpr (std::is_same_v<A, Ray<double>>) {
+    return unknown;
+  } else {
+    if (open == 0) return unknown;
+    // far from 1 in magnitude, both shapes scaled by one power of two (header)
+    double m = 0;
+    robust::detail::largest(a, m);
+    robust::detail::largest(b, m);
+    const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a, b);
+    const Shapes s = shapes(robust::detail::scaled(a, sc), robust::detail::scaled(b, sc));
+    if (!s.ok) return unknown;
+    return robust::with_products([&](auto mul) { return decide_open<decltype(mul)>(s, open); });
+  }
+}
+
+}  // namespace cdref::oracle::sat_words
