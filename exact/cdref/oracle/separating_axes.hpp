@@ -15,7 +15,8 @@
 //   2. double word  (a segment or a ray and an oriented box) Algorithm 3.3 in the box's face
 //                coordinates on double words, then the solid's cast decision on them; the axes
 //                stage 1 left open on double words with rigorous bounds (sat_words.hpp: near
-//                touching one axis of the 13 or 15); then the robust versions' evaluation of
+//                touching one axis of the 13 or 15); (sphere) stage 1's point and direction
+//                on double words (sat_words.hpp); then the robust versions' evaluation of
 //                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
@@ -122,6 +123,7 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 // ---- a sphere and an oriented box ----
 namespace sphere_obb {
 inline int double_word(const Sphere<double>& s, const OrientedBox<double>& b) {
+  if (const int r = sat_words::decide(s, b); r != unknown) return r;  // the two certificates
   const robust::Decision d = robust::decide(s, b);
   return d.certain ? int(d.value) : unknown;
 }

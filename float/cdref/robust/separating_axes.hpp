@@ -91,10 +91,16 @@ int open_axes_on_words(const A& a, const B& b, unsigned open) {
   if constexpr (std::is_same_v<F, double>) return oracle::sat_words::decide(a, b, open);
   else return oracle::sat::unknown;
 }
+// (For a sphere, where the filter cannot decide, its two certificates on double words: they
+// decide cases 2^-52 from tangency where the whole formulation on double words takes microseconds.)
 template <class F>
 int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
-  if constexpr (std::is_same_v<F, double>) return oracle::sphere_obb::filter(s, b);
-  else return oracle::sat::unknown;
+  if constexpr (std::is_same_v<F, double>) {
+    if (const int f = oracle::sphere_obb::filter(s, b); f != oracle::sat::unknown) return f;
+    return oracle::sat_words::decide(s, b);
+  } else {
+    return oracle::sat::unknown;
+  }
 }
 // A segment or a ray and an axis-aligned box meet exactly when Algorithm 3.3 hits, and its
 // robust certificate (ray_box.hpp: exact outcodes, the slab parameters as accurate pairs, exact
