@@ -5,8 +5,10 @@
 //   1. filter    the orientation form of the test (w0, w1, w2, Ns, Nt) in double with static
 //                error bounds (oracle/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
-//   2. double word  the book's hit() run on double words (robust/words.hpp), certain when every
-//                comparison is (Stage::expansion names this stage here);
+//   2. double word  the signs stage 1 left, on double words with rigorous bounds
+//                (oracle/triangle_words.hpp: a shot 2^-52 from an edge), then the book's hit()
+//                run on double words (robust/words.hpp), certain when every comparison is
+//                (Stage::expansion names this stage here);
 //   3. rational  book::hit at CGAL::Gmpq (coplanar shots, shots through an edge or a vertex,
 //                zero-area triangles).
 #pragma once
@@ -16,6 +18,7 @@
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 #include <cdref/robust/ray_triangle.hpp>
 #include <cmath>
 
@@ -23,8 +26,15 @@ namespace cdref::oracle {
 
 namespace ray_triangle {
 
+inline int orientation_words(const Segment<double>& s, const Triangle<double>& t) {
+  return orientation_on_words(s.source, &s.target, s.target, t);
+}
+inline int orientation_words(const Ray<double>& r, const Triangle<double>& t) {
+  return orientation_on_words(r.source, nullptr, r.direction, t);
+}
 template <class Shot>
 int double_word(const Shot& shot, const Triangle<double>& t) {
+  if (const int w = orientation_words(shot, t); w != unknown) return w;
   const auto r = robust::detail::on_words(shot, t, [](const auto& a, const auto& b) { return book::hit(a, b); });
   return r ? int(*r) : unknown;
 }

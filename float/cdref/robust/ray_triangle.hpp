@@ -24,8 +24,9 @@
 // one ulp of the truth's (the test holds it on every family of both casts).
 //
 // Classification and certificate. At double the oracle's first stage runs first (the
-// orientation form below in double against static error bounds, oracle/triangle_filter.hpp):
-// where it decides, the answer is exact and certain, and a miss returns at once. WBW's signs
+// orientation form below in double against static error bounds, oracle/triangle_filter.hpp, and
+// the signs those leave on double words, oracle/triangle_words.hpp): where it decides, the answer
+// is exact and certain, and a miss returns at once. WBW's signs
 // are exact only for the rounded sheared coordinates, not for the inputs: on a shot in the
 // triangle's plane it reports a miss (the sheared triangle is not exactly flat), and near an
 // edge it may differ from the exact answer. So the classification is taken from the inputs
@@ -44,6 +45,7 @@
 
 #include <cdref/book/ray_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 #include <cdref/stable/ray_triangle.hpp>
 
 #include "rational.hpp"
@@ -63,19 +65,28 @@ TriangleCast<F> triangle_cast_value(const TriangleCast<W>& c) {
 }
 
 // At double, the oracle's first stage (oracle/triangle_filter.hpp: the orientation form in
-// double against static bounds) before the double words: 1 (a hit), 0 (a miss) or 2
-// (undecided; always at float and long double). Where it decides, its answer is the book's at
-// an exact type, so every entry point takes it (decide(), the predicate and the cast classify
+// double against static bounds), and where it cannot decide the same signs on double words
+// (oracle/triangle_words.hpp), before the book's test on double words: 1 (a hit), 0 (a miss)
+// or 2 (undecided; always at float and long double). Where it decides, its answer is the book's
+// at an exact type, so every entry point takes it (decide(), the predicate and the cast classify
 // alike); a miss has no values, so the cast then returns at once.
 template <class F>
 int triangle_first_stage(const Segment<F>& s, const Triangle<F>& t) {
-  if constexpr (std::is_same_v<F, double>) return oracle::ray_triangle::filter(s.source, &s.target, s.target, t);
-  else return oracle::ray_triangle::unknown;
+  if constexpr (std::is_same_v<F, double>) {
+    const int f = oracle::ray_triangle::filter(s.source, &s.target, s.target, t);
+    return f != oracle::ray_triangle::unknown ? f : oracle::ray_triangle::orientation_on_words(s.source, &s.target, s.target, t);
+  } else {
+    return oracle::ray_triangle::unknown;
+  }
 }
 template <class F>
 int triangle_first_stage(const Ray<F>& r, const Triangle<F>& t) {
-  if constexpr (std::is_same_v<F, double>) return oracle::ray_triangle::filter(r.source, nullptr, r.direction, t);
-  else return oracle::ray_triangle::unknown;
+  if constexpr (std::is_same_v<F, double>) {
+    const int f = oracle::ray_triangle::filter(r.source, nullptr, r.direction, t);
+    return f != oracle::ray_triangle::unknown ? f : oracle::ray_triangle::orientation_on_words(r.source, nullptr, r.direction, t);
+  } else {
+    return oracle::ray_triangle::unknown;
+  }
 }
 
 // A sign on double words, or 2 when it is too close to call.
