@@ -19,6 +19,7 @@
 #include "queries/sphere_obb.hpp"
 #include "queries/triangle_box.hpp"
 #include "queries/triangle_casts.hpp"
+#include "queries/sphere_triangle.hpp"
 #include <cdref/oracle/sat_words.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
@@ -1027,6 +1028,43 @@ TEST_CASE("the triangle casts' orientation signs on double words decide as the b
   CHECK(near_left > 100);  // (the filter and its grid look decide most down to about 2^-40)
   CHECK(near_decided * 10 >= near_left * 9);
   CHECK(decided * 2 >= left);
+}
+
+namespace {
+template <class Q>
+void sphere_triangle_words_on_families(std::uint64_t& left, std::uint64_t& decided, std::uint64_t& near_left,
+                                       std::uint64_t& near_decided) {
+  const Query q = query_by_name(Q::name);
+  for (const Family& f : families(q))
+    for (int k : f.scales)
+      for (std::uint64_t i = 0; i < (f.name == "near-touching" ? 300u : 60u); ++i) {
+        const auto [s, t] = Q::template make<double>(make_case(7, q, f, k, i));
+        if (oracle::sphere_triangle::filter(s, t) != oracle::sphere_triangle::unknown) continue;
+        INFO(f.name << "/" << k << " case " << i);
+        const bool near = f.name == "near-touching" && k >= 20;
+        ++left;
+        near_left += near;
+        const int w = oracle::sphere_triangle::certificates_on_words(s, t);
+        if (w == oracle::sphere_triangle::unknown) continue;
+        ++decided;
+        near_decided += near;
+        REQUIRE(w == int(oracle::sphere_triangle::rational(s, t)));
+        const robust::Decision d = robust::decide(s, t);
+        REQUIRE(d.certain);
+        REQUIRE(int(d.value) == w);
+      }
+}
+}  // namespace
+
+TEST_CASE("a sphere and a triangle: the first stage's certificates on double words decide as the book at Gmpq",
+          "[oracle-classify][triangle]") {
+  std::uint64_t left = 0, decided = 0, near_left = 0, near_decided = 0;
+  sphere_triangle_words_on_families<queries::SphereTriangle>(left, decided, near_left, near_decided);
+  WARN("sphere-triangle: the first stage leaves " << left << " cases, the words decide " << decided << "; near touching from 2^-20: "
+                                                  << near_decided << " of " << near_left);
+  CHECK(near_left > 200);  // (300 cases a scale: the filter decides most down to about 2^-40)
+  CHECK(near_decided * 100 >= near_left * 95);
+  CHECK(decided * 10 >= left * 9);
 }
 
 TEST_CASE("the oriented-box casts refuse what check() refuses, a bad value in every slot",

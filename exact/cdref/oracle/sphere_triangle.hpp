@@ -5,8 +5,10 @@
 //   1. filter    two certificates from one point of the triangle in double with static
 //                error bounds (oracle/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
-//   2. double word  the robust version's evaluation (robust/sphere_triangle.hpp), certain when
-//                every decisive comparison is (Stage::expansion names this stage here);
+//   2. double word  stage 1's two certificates on double words (oracle/triangle_words.hpp: a
+//                sphere 2^-52 from tangency), then the robust version's evaluation
+//                (robust/sphere_triangle.hpp), certain when every decisive comparison is
+//                (Stage::expansion names this stage here);
 //   3. rational  the book at CGAL::Gmpq.
 #pragma once
 
@@ -15,6 +17,7 @@
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
 #include <cmath>
 
@@ -23,6 +26,7 @@ namespace cdref::oracle {
 namespace sphere_triangle {
 
 inline int double_word(const Sphere<double>& s, const Triangle<double>& t) {
+  if (const int r = certificates_on_words(s, t); r != unknown) return r;
   const robust::Decision d = robust::detail::sphere_triangle_words(s, t, want_proximity).second;
   return d.certain ? int(d.value) : unknown;
 }

@@ -2,6 +2,7 @@
 // on double words: the second stage of the Section 3.4 cast oracles (exact/cdref/oracle/
 // ray_triangle.hpp, and through it the polygon casts), and of the robust tier's certified
 // decision on those casts (robust/ray_triangle.hpp), before the book's whole test on double words.
+// Below it, a sphere and a triangle: the first stage's two certificates on double words.
 //
 // The first stage (triangle_filter.hpp) takes the signs of the five triple products of the
 // orientation form,
@@ -119,3 +120,136 @@ inline int orientation_on_words(const Vec3<double>& s0, const Vec3<double>* t0, 
 }
 
 }  // namespace cdref::oracle::ray_triangle
+
+namespace cdref::oracle::sphere_triangle {
+
+// ---- A sphere and a triangle: the first stage's two certificates on double words ----------
+// The first stage (triangle_filter.hpp) takes the book's closest point x = v0 + u e1 + v e2 in
+// double, (u, v) clamped so that x lies in the triangle exactly, and w = x - c. They meet when
+// |w| <= rho; they are disjoint along a direction g when min_k g . (v_k - c) > rho |g| (a linear
+// function's minimum over the triangle is at a vertex). Near tangency its static bounds cannot
+// tell, and here the same tests are taken on double words (word_bounds.hpp's bounds):
+//   - they meet: the same x (its (u, v) are exact doubles), w_i = X0_i + u E1_i + v E2_i with
+//     X0 = v0 - c, E1 = v1 - v0, E2 = v2 - v0 exact pairs and u E1_i, v E2_i two exact products
+//     each; rho^2 - |w|^2 certainly > 0. x is the closest point up to the rounding of (u, v),
+//     which moves |w| by the square of that (along the face or an edge): u^2 of it;
+//   - disjoint: the direction must be the normal of the closest feature to about u^2, since the
+//     test loses the tilt of g times the triangle's size, first order (with g = w the sphere-obb
+//     case failed 13% of the time at 2^-52, sat_words.hpp). So g = w + du E1 + dv E2 with (du, dv)
+//     one Gauss-Newton step for the free parameters of the closest feature (from the clamped
+//     (u, v): the face when u, v > 0 and u + v < 1; an edge when one constraint holds: v0v1
+//     (v = 0), v0v2 (u = 0), v1v2 (u + v = 1, along E2 - E1); a vertex has none), the gradient
+//     E . w on double words and the 1x1 or 2x2 system in double (g needs no exactness: any
+//     direction is a certificate); G = min_k g . X_k by dot_words (the minimum of words as in
+//     sat_words.hpp), G certainly > 0 and G^2 - rho^2 |g|^2 certainly > 0.
+// Range and scaling as for the casts (|w|^2, rho^2 and G are homogeneous of degree 2 in the
+// lengths; every input at most 2^100 after it).
+namespace words {
+
+using robust::Pair;
+using word_bounds::Word;
+
+inline bool word_less(const Word& a, const Word& b) { return a.v.hi < b.v.hi || (a.v.hi == b.v.hi && a.v.lo < b.v.lo); }
+
+template <class Mul>
+int certificates(const Sphere<double>& sp, const Triangle<double>& t) {
+  using namespace word_bounds;
+  static constexpr double zero[3] = {0, 0, 0};
+  Pair<double> X[3][3], E1[3], E2[3];
+  double Xd[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      X[k][i] = robust::two_sum(t.vertex[k][i], -sp.center[i]);
+      Xd[k][i] = X[k][i].hi;
+    }
+  for (int i = 0; i < 3; ++i) {
+    E1[i] = robust::two_sum(t.vertex[1][i], -t.vertex[0][i]);
+    E2[i] = robust::two_sum(t.vertex[2][i], -t.vertex[0][i]);
+  }
+  double u, v;
+  closest_barycentric(Xd, u, v);
+  if (!(u >= 0)) u = 0;  // clamped as the first stage clamps them (triangle_filter.hpp)
+  if (!(u <= 1)) u = 1;
+  const double r0 = 1 - u, r0_err = -u - (r0 - 1);
+  const double room = std::bit_cast<double>(std::bit_cast<std::uint64_t>(r0) - std::uint64_t(r0_err < 0));
+  if (!(v >= 0)) v = 0;
+  if (!(v <= room)) v = room;
+  // w = X0 + u E1 + v E2
+  const auto along = [](Word acc, double f, const Pair<double>& e) {
+    if (f == 0) return acc;
+    acc = add_words(acc, {Mul::prod(f, e.hi), 0}, 1);
+    return e.lo == 0 ? acc : add_words(acc, {Mul::prod(f, e.lo), 0}, 1);
+  };
+  Word w[3], ww{{0, 0}, 0};
+  for (int i = 0; i < 3; ++i) {
+    w[i] = along(along(Word{X[0][i], 0}, u, E1[i]), v, E2[i]);
+    ww = add_words(ww, mul_words<Mul>(w[i], w[i]), 1);
+  }
+  const Word rr{Mul::prod(sp.radius, sp.radius), 0};
+  if (sign_of(add_words(rr, ww, -1)) == 1) return 1;
+  // disjoint along g: one step for the closest feature's free parameters
+  const bool on_u0 = u == 0, on_v0 = v == 0, on_sum = v == room && u + v == 1;
+  const int constraints = int(on_u0) + int(on_v0) + int(on_sum);
+  double a1[3], a2[3];
+  for (int i = 0; i < 3; ++i) a1[i] = E1[i].hi, a2[i] = E2[i].hi;
+  const auto dotd = [](const double (&p)[3], const double (&q)[3]) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
+  double du = 0, dv = 0;
+  if (constraints == 0) {  // the face: the 2x2 normal equations
+    const double g1 = dot_words<Mul>(E1, zero, w).v.hi, g2 = dot_words<Mul>(E2, zero, w).v.hi;
+    const double h11 = dotd(a1, a1), h12 = dotd(a1, a2), h22 = dotd(a2, a2), det = h11 * h22 - h12 * h12;
+    if (det > 0) {
+      du = (-g1 * h22 + g2 * h12) / det;
+      dv = (-g2 * h11 + g1 * h12) / det;
+    }
+  } else if (constraints == 1) {  // an edge: one parameter along it
+    if (on_v0) {
+      const double h = dotd(a1, a1);
+      if (h > 0) du = -dot_words<Mul>(E1, zero, w).v.hi / h;
+    } else if (on_u0) {
+      const double h = dotd(a2, a2);
+      if (h > 0) dv = -dot_words<Mul>(E2, zero, w).v.hi / h;
+    } else {  // v1v2: u = 1 - s, v = s, direction E2 - E1
+      double e[3];
+      for (int i = 0; i < 3; ++i) e[i] = a2[i] - a1[i];
+      const double h = dotd(e, e);
+      if (h > 0) {
+        const double gs = dot_words<Mul>(E2, zero, w).v.hi - dot_words<Mul>(E1, zero, w).v.hi;
+        dv = -gs / h;
+        du = -dv;
+      }
+    }
+  }
+  if (!std::isfinite(du) || !std::isfinite(dv)) return unknown;
+  Word g[3], gg{{0, 0}, 0};
+  for (int i = 0; i < 3; ++i) {
+    g[i] = along(along(w[i], du, E1[i]), dv, E2[i]);
+    g[i].e = 0;  // g is a direction of our choosing: its value hi + lo is exact
+  }
+  for (int i = 0; i < 3; ++i) gg = add_words(gg, mul_words<Mul>(g[i], g[i]), 1);
+  Word G = dot_words<Mul>(X[0], zero, g);
+  for (int k = 1; k < 3; ++k) {
+    const Word x = dot_words<Mul>(X[k], zero, g);
+    G = {word_less(x, G) ? x.v : G.v, std::max(G.e, x.e)};
+  }
+  if (sign_of(G) == 1 && sign_of(add_words(mul_words<Mul>(G, G), mul_words<Mul>(rr, gg), -1)) == 1) return 0;
+  return unknown;
+}
+
+}  // namespace words
+
+// 1 they meet, 0 disjoint, unknown.
+inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double>& t0) {
+  double m = 0;
+  robust::detail::largest(sp, m);
+  robust::detail::largest(t0, m);
+  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(sp, t0);
+  const Sphere<double> s = robust::detail::scaled(sp, sc);
+  const Triangle<double> t = robust::detail::scaled(t0, sc);
+  double big = 0;
+  robust::detail::largest(s, big);
+  robust::detail::largest(t, big);
+  if (!(big <= 0x1p100)) return unknown;  // NaN and infinities too
+  return robust::with_products([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
+}
+
+}  // namespace cdref::oracle::sphere_triangle

@@ -35,6 +35,7 @@
 
 #include <cdref/book/sphere_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 
 #include "rational.hpp"
 #include "words.hpp"
@@ -49,8 +50,14 @@ namespace detail {
 // type, so every entry point takes it (decide(), the predicate and proximity's classification).
 template <class F>
 int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
-  if constexpr (std::is_same_v<F, double>) return oracle::sphere_triangle::filter(s, t);
-  else return oracle::sphere_triangle::unknown;
+  if constexpr (std::is_same_v<F, double>) {
+    // (where the static bounds cannot tell, the same two certificates on double words:
+    // oracle/triangle_words.hpp)
+    const int f = oracle::sphere_triangle::filter(s, t);
+    return f != oracle::sphere_triangle::unknown ? f : oracle::sphere_triangle::certificates_on_words(s, t);
+  } else {
+    return oracle::sphere_triangle::unknown;
+  }
 }
 
 // The book's proximity, its outputs in the face region from the triangle's normal. There the
