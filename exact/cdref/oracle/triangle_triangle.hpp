@@ -5,8 +5,10 @@
 //   1. filter    a separating plane, then the six edge-triangle casts, in double with
 //                static error bounds (oracle/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
-//   2. double word  the robust version's evaluation (robust/triangle_triangle.hpp), certain
-//                when every comparison is (Stage::expansion names this stage here);
+//   2. double word  stage 1's tests with the signs it leaves on double words
+//                (oracle/triangle_words.hpp), then the robust version's evaluation
+//                (robust/triangle_triangle.hpp), certain when every comparison is
+//                (Stage::expansion names this stage here);
 //   3. rational  book::intersect at CGAL::Gmpq.
 #pragma once
 
@@ -16,6 +18,7 @@
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 #include <cdref/robust/triangle_triangle.hpp>
 
 namespace cdref::oracle {
@@ -23,6 +26,7 @@ namespace cdref::oracle {
 namespace triangle_triangle {
 
 inline int double_word(const Triangle<double>& a, const Triangle<double>& b) {
+  if (const int r = tests_on_words(a, b); r != unknown) return r;
   const robust::Decision d = robust::detail::triangle_triangle_eval(a, b, 2).second;
   return d.certain ? int(d.value) : unknown;
 }

@@ -2,7 +2,8 @@
 // on double words: the second stage of the Section 3.4 cast oracles (exact/cdref/oracle/
 // ray_triangle.hpp, and through it the polygon casts), and of the robust tier's certified
 // decision on those casts (robust/ray_triangle.hpp), before the book's whole test on double words.
-// Below it, a sphere and a triangle: the first stage's two certificates on double words.
+// Below it, a sphere and a triangle: the first stage's two certificates on double words; and
+// two triangles: the first stage's plane and edge tests with these signs.
 //
 // The first stage (triangle_filter.hpp) takes the signs of the five triple products of the
 // orientation form,
@@ -253,3 +254,82 @@ inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double
 }
 
 }  // namespace cdref::oracle::sphere_triangle
+
+namespace cdref::oracle::triangle_triangle {
+
+// ---- Two triangles: the first stage's tests with the signs on double words ----------------
+// The first stage (triangle_filter.hpp) proves two triangles disjoint when one's vertices lie
+// strictly on one side of the other's plane, met when an edge of one meets the other (a segment
+// cast), and disjoint when none of the six edges does (two closed triangles that meet, coplanar or
+// not, have a common point on an edge of one of them: their intersection is convex and compact,
+// and an extreme point of it lies on a boundary). Here the same tests, each sign the static bounds
+// leave taken on double words: a vertex's side of a plane as the triple product (x - v0) . (e1 x
+// e2) on exact pairs (words::triple_sign above), and each edge cast by the orientation form on
+// double words (ray_triangle::orientation_on_words). An exact zero is left to the next stages (a
+// vertex on the other's plane, an edge through an edge or a vertex, coplanar triangles).
+namespace words {
+
+// The sides of q's vertices against p's plane, certain (1 or -1) or 0 (static bound, then words).
+template <class Mul>
+bool plane_separates(const Triangle<double>& p, const Triangle<double>& q, bool& finite) {
+  using robust::Pair;
+  Pair<double> e1[3], e2[3];
+  double f1[3], f2[3];
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = robust::two_sum(p.vertex[1][i], -p.vertex[0][i]);
+    e2[i] = robust::two_sum(p.vertex[2][i], -p.vertex[0][i]);
+    f1[i] = e1[i].hi, f2[i] = e2[i].hi;
+  }
+  int first = 0;
+  for (int k = 0; k < 3; ++k) {
+    Pair<double> x[3];
+    double xd[3];
+    for (int i = 0; i < 3; ++i) {
+      x[i] = robust::two_sum(q.vertex[k][i], -p.vertex[0][i]);
+      xd[i] = x[i].hi;
+    }
+    int sg = ray_triangle::triple_sign(xd, f1, f2, finite);
+    if (sg == 0) sg = ray_triangle::words::triple_sign<Mul>(x, e1, e2);
+    if (sg == 0 || (k > 0 && sg != first)) return false;
+    first = sg;
+  }
+  return true;
+}
+
+template <class Mul>
+int decide(const Triangle<double>& a, const Triangle<double>& b) {
+  bool finite = true;
+  if (plane_separates<Mul>(a, b, finite) || plane_separates<Mul>(b, a, finite)) return finite ? 0 : unknown;
+  if (!finite) return unknown;
+  bool open = false;
+  for (const Triangle<double>* from : {&a, &b}) {
+    const Triangle<double>& other = from == &a ? b : a;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3<double>& s = from->vertex[k];
+      const Vec3<double>& t = from->vertex[(k + 1) % 3];
+      int r = ray_triangle::filter(s, &t, t, other);
+      if (r == unknown) r = ray_triangle::orientation_on_words(s, &t, t, other);
+      if (r == 1) return 1;
+      open = open || r != 0;
+    }
+  }
+  return open ? unknown : 0;
+}
+
+}  // namespace words
+
+// 1 they meet, 0 disjoint, unknown.
+inline int tests_on_words(const Triangle<double>& a0, const Triangle<double>& b0) {
+  double m = 0;
+  robust::detail::largest(a0, m);
+  robust::detail::largest(b0, m);
+  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a0, b0);
+  const Triangle<double> a = robust::detail::scaled(a0, sc), b = robust::detail::scaled(b0, sc);
+  double big = 0;
+  robust::detail::largest(a, big);
+  robust::detail::largest(b, big);
+  if (!(big <= 0x1p100)) return unknown;  // NaN and infinities too
+  return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
+}
+
+}  // namespace cdref::oracle::triangle_triangle

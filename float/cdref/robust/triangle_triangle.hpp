@@ -22,6 +22,7 @@
 
 #include <cdref/book/triangle_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_words.hpp>
 
 #include "words.hpp"
 
@@ -34,10 +35,16 @@ namespace detail {
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it; disjoint triangles have no values (coplanar is
 // false, p = q = 0), so intersect() then returns at once.
+// (Where the static bounds leave it, the same tests with those signs on double words:
+// oracle/triangle_words.hpp.)
 template <class F>
 int triangle_triangle_first_stage(const Triangle<F>& a, const Triangle<F>& b) {
-  if constexpr (std::is_same_v<F, double>) return oracle::triangle_triangle::filter(a, b);
-  else return oracle::triangle_triangle::unknown;
+  if constexpr (std::is_same_v<F, double>) {
+    const int f = oracle::triangle_triangle::filter(a, b);
+    return f != oracle::triangle_triangle::unknown ? f : oracle::triangle_triangle::tests_on_words(a, b);
+  } else {
+    return oracle::triangle_triangle::unknown;
+  }
 }
 
 // The evaluation after the first stage's answer `first` (2: undecided).
