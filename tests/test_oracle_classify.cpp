@@ -969,7 +969,7 @@ TEST_CASE("a sphere and an oriented box: the first stage's certificates on doubl
         REQUIRE(w == int(oracle::sphere_obb::rational(s0, b0)));
         Sphere<double> s;
         OrientedBox<double> b;
-        REQUIRE(oracle::sat_words::sphere_obb_in_range(s0, b0, s, b));
+        REQUIRE(oracle::word_bounds::in_word_range(s0, b0, s, b));
         if (w == 1) {  // the certificate itself, at Gmpq: x in the box and |q - x| <= rho
           robust::Pair<double> dp[3], g[3];
           oracle::word_bounds::Word ww[3];

@@ -49,7 +49,6 @@
 
 #include <cdref/oracle/sat_filter.hpp>
 #include <cdref/oracle/word_bounds.hpp>
-#include <cdref/robust/words.hpp>
 #include <cmath>
 
 namespace cdref::oracle::sat_words {
@@ -227,12 +226,10 @@ int decide(const A& a, const B& b, unsigned open) {
     return unknown;
   } else {
     if (open == 0) return unknown;
-    // far from 1 in magnitude, both shapes scaled by one power of two (header)
-    double m = 0;
-    robust::detail::largest(a, m);
-    robust::detail::largest(b, m);
-    const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a, b);
-    const Shapes s = shapes(robust::detail::scaled(a, sc), robust::detail::scaled(b, sc));
+    A as;  // far from 1 in magnitude, both shapes scaled by one power of two (header)
+    B bs;
+    if (!word_bounds::in_word_range(a, b, as, bs)) return unknown;
+    const Shapes s = shapes(as, bs);
     if (!s.ok) return unknown;
     return robust::with_products([&](auto mul) { return decide_open<decltype(mul)>(s, open); });
   }
@@ -329,29 +326,11 @@ int sphere_obb_certificates(const Sphere<double>& sp, const OrientedBox<double>&
   return unknown;
 }
 
-// The pair as the certificates take it (scaled where the largest input is beyond 2^100 or below
-// 2^-100); false where an input is still beyond 2^100 (or not finite).
-inline bool sphere_obb_in_range(const Sphere<double>& sp, const OrientedBox<double>& b, Sphere<double>& s,
-                                OrientedBox<double>& bs) {
-  double m = 0;
-  robust::detail::largest(sp, m);
-  robust::detail::largest(b, m);
-  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(sp, b);
-  s = robust::detail::scaled(sp, sc);
-  bs = robust::detail::scaled(b, sc);
-  double big = 0;
-  robust::detail::largest(s, big);
-  robust::detail::largest(bs, big);
-  for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < 3; ++i) big = std::max(big, std::fabs(bs.axis[k][i]));
-  return big <= 0x1p100;  // NaN and infinities fail
-}
-
 // 1 they meet, 0 disjoint, unknown.
 inline int decide(const Sphere<double>& sp, const OrientedBox<double>& b) {
   Sphere<double> s;
   OrientedBox<double> bs;
-  if (!sphere_obb_in_range(sp, b, s, bs)) return unknown;
+  if (!word_bounds::in_word_range(sp, b, s, bs)) return unknown;
   return robust::with_products([&](auto mul) { return sphere_obb_certificates<decltype(mul)>(s, bs); });
 }
 

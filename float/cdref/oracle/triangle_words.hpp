@@ -31,7 +31,6 @@
 
 #include <cdref/oracle/triangle_filter.hpp>
 #include <cdref/oracle/word_bounds.hpp>
-#include <cdref/robust/words.hpp>
 #include <cmath>
 
 namespace cdref::oracle::ray_triangle {
@@ -101,23 +100,15 @@ int decide(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir
 // 1 a hit, 0 a miss, unknown (t: the segment's target, or nullptr for a ray along dir).
 inline int orientation_on_words(const Vec3<double>& s0, const Vec3<double>* t0, const Vec3<double>& dir0,
                                 const Triangle<double>& tri0) {
-  double m = 0;
-  robust::detail::largest(s0, m);
-  robust::detail::largest(t0 ? *t0 : dir0, m);
-  robust::detail::largest(tri0, m);
-  robust::detail::Scale sc;
-  if (!(m >= 0x1p-100 && m <= 0x1p100)) {
-    sc = t0 ? robust::detail::scale_of(Segment<double>{s0, *t0}, tri0) : robust::detail::scale_of(Ray<double>{s0, dir0}, tri0);
+  Triangle<double> tri;
+  if (t0) {
+    Segment<double> seg;
+    if (!word_bounds::in_word_range(Segment<double>{s0, *t0}, tri0, seg, tri)) return unknown;
+    return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(seg.source, &seg.target, seg.target, tri); });
   }
-  const Vec3<double> s = sc.len(s0), dir = sc.len(dir0), tt = t0 ? sc.len(*t0) : dir;
-  const Triangle<double> tri = robust::detail::scaled(tri0, sc);
-  double big = 0;
-  robust::detail::largest(s, big);
-  robust::detail::largest(tt, big);
-  robust::detail::largest(tri, big);
-  if (!(big <= 0x1p100)) return unknown;  // NaN and infinities too
-  const Vec3<double>* t = t0 ? &tt : nullptr;
-  return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(s, t, dir, tri); });
+  Ray<double> ray;
+  if (!word_bounds::in_word_range(Ray<double>{s0, dir0}, tri0, ray, tri)) return unknown;
+  return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(ray.source, nullptr, ray.direction, tri); });
 }
 
 }  // namespace cdref::oracle::ray_triangle
@@ -240,16 +231,9 @@ int certificates(const Sphere<double>& sp, const Triangle<double>& t) {
 
 // 1 they meet, 0 disjoint, unknown.
 inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double>& t0) {
-  double m = 0;
-  robust::detail::largest(sp, m);
-  robust::detail::largest(t0, m);
-  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(sp, t0);
-  const Sphere<double> s = robust::detail::scaled(sp, sc);
-  const Triangle<double> t = robust::detail::scaled(t0, sc);
-  double big = 0;
-  robust::detail::largest(s, big);
-  robust::detail::largest(t, big);
-  if (!(big <= 0x1p100)) return unknown;  // NaN and infinities too
+  Sphere<double> s;
+  Triangle<double> t;
+  if (!word_bounds::in_word_range(sp, t0, s, t)) return unknown;
   return robust::with_products([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
 }
 
@@ -320,15 +304,8 @@ int decide(const Triangle<double>& a, const Triangle<double>& b) {
 
 // 1 they meet, 0 disjoint, unknown.
 inline int tests_on_words(const Triangle<double>& a0, const Triangle<double>& b0) {
-  double m = 0;
-  robust::detail::largest(a0, m);
-  robust::detail::largest(b0, m);
-  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a0, b0);
-  const Triangle<double> a = robust::detail::scaled(a0, sc), b = robust::detail::scaled(b0, sc);
-  double big = 0;
-  robust::detail::largest(a, big);
-  robust::detail::largest(b, big);
-  if (!(big <= 0x1p100)) return unknown;  // NaN and infinities too
+  Triangle<double> a, b;
+  if (!word_bounds::in_word_range(a0, b0, a, b)) return unknown;
   return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
 }
 

@@ -46,6 +46,7 @@
 #include <cdref/oracle/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/robust/eft.hpp>
+#include <cdref/robust/words.hpp>
 #include <cmath>
 
 namespace cdref::oracle::word_bounds {
@@ -243,6 +244,30 @@ inline int obb_cast_words(const Segment<double>& s, const OrientedBox<double>& b
 }
 inline int obb_cast_words(const Ray<double>& r, const OrientedBox<double>& b) {
   return obb_cast_any(r.source, r.direction, b, false);
+}
+
+// The pair of primitives as the double-word stages take it (sat_words.hpp, triangle_words.hpp):
+// where the largest input (a length: points, centres, extents, radii; an oriented box's axes are
+// not scaled) lies beyond [2^-100, 2^100], both scaled by the power of two that brings it to
+// [1, 2) (robust/words.hpp, scale_of: kept only where scaling back gives the inputs again, so
+// the scaling is exact); false where an input is still beyond 2^100 after it, or not finite (an
+// oriented box's axes included), and the stage then leaves the case to the next.
+template <class A, class B>
+bool in_word_range(const A& a, const B& b, A& as, B& bs) {
+  double m = 0;
+  robust::detail::largest(a, m);
+  robust::detail::largest(b, m);
+  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a, b);
+  as = robust::detail::scaled(a, sc);
+  bs = robust::detail::scaled(b, sc);
+  double big = 0;
+  robust::detail::largest(as, big);
+  robust::detail::largest(bs, big);
+  if constexpr (std::is_same_v<B, OrientedBox<double>>)
+    for (int k = 0; k < 3; ++k) robust::detail::largest(bs.axis[k], big);
+  if constexpr (std::is_same_v<A, OrientedBox<double>>)
+    for (int k = 0; k < 3; ++k) robust::detail::largest(as.axis[k], big);
+  return big <= 0x1p100;  // NaN and infinities fail
 }
 
 }  // namespace cdref::oracle::word_bounds
