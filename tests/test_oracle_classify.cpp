@@ -404,7 +404,10 @@ TEST_CASE("oracle::enter on an oriented box: the entering face alone outside in_
   for (int n = 0; n < 4000; ++n) {
     // a rotation from a random quaternion, a component replaced by a tiny one
     double q[4], qq = 0;
-    for (double& c : q) qq += (c = U(rng)) * c;
+    for (double& c : q) {
+      c = U(rng);
+      qq += c * c;
+    }
     for (double& c : q) c /= std::sqrt(qq);
     const double w = q[0], x = q[1], y = q[2], z = q[3];
     OrientedBox<double> b;
