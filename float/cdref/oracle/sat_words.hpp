@@ -55,6 +55,10 @@ namespace cdref::oracle::sat_words {
 
 using robust::Pair;
 using word_bounds::Word;
+using word_bounds::abs_word;
+using word_bounds::max_word;
+using word_bounds::min_word;
+using word_bounds::pair_less;
 
 inline constexpr int unknown = sat::unknown;
 
@@ -142,11 +146,6 @@ Shapes shapes(const A& a, const B& b) {
   set_a(s, a, b.center);
   return s;
 }
-
-inline Word abs_word(const Word& w) { return w.v.hi < 0 || (w.v.hi == 0 && w.v.lo < 0) ? word_bounds::negated(w) : w; }
-inline bool word_less(const Word& a, const Word& b) { return a.v.hi < b.v.hi || (a.v.hi == b.v.hi && a.v.lo < b.v.lo); }
-inline Word min_word(const Word& a, const Word& b) { return {word_less(b, a) ? b.v : a.v, std::max(a.e, b.e)}; }
-inline Word max_word(const Word& a, const Word& b) { return {word_less(a, b) ? b.v : a.v, std::max(a.e, b.e)}; }
 
 // sum_k h_k |g_k . L|
 template <class Mul>
@@ -268,7 +267,6 @@ void sphere_obb_offset(const Pair<double> (&d)[3], const Pair<double> (&g)[3], c
     }
   }
 }
-inline bool pair_less(const Pair<double>& a, const Pair<double>& b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
 
 // The point x's coordinates g_i (exact pairs, |g_i| <= h_i) and w = q - x on double words.
 template <class Mul>

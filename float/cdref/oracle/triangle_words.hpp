@@ -141,8 +141,6 @@ namespace words {
 using robust::Pair;
 using word_bounds::Word;
 
-inline bool word_less(const Word& a, const Word& b) { return a.v.hi < b.v.hi || (a.v.hi == b.v.hi && a.v.lo < b.v.lo); }
-
 template <class Mul>
 int certificates(const Sphere<double>& sp, const Triangle<double>& t) {
   using namespace word_bounds;
@@ -221,7 +219,7 @@ int certificates(const Sphere<double>& sp, const Triangle<double>& t) {
   Word G = dot_words<Mul>(X[0], zero, g);
   for (int k = 1; k < 3; ++k) {
     const Word x = dot_words<Mul>(X[k], zero, g);
-    G = {word_less(x, G) ? x.v : G.v, std::max(G.e, x.e)};
+    G = min_word(G, x);
   }
   if (sign_of(G) == 1 && sign_of(add_words(mul_words<Mul>(G, G), mul_words<Mul>(rr, gg), -1)) == 1) return 0;
   return unknown;

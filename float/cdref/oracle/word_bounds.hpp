@@ -167,6 +167,13 @@ inline Word mul_words(const Word& x, const Word& y) {
 }
 inline int sign_of(const Word& x) { return magnitude_lo(x) > 0 ? (x.v.hi > 0 ? 1 : -1) : staged::unknown; }
 inline Word negated(const Word& x) { return {{-x.v.hi, -x.v.lo}, x.e}; }
+// The order of two normalized pairs by value (hi first, then lo).
+inline bool pair_less(const Pair<double>& a, const Pair<double>& b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
+// |x|, min and max need no decision: each is 1-Lipschitz, so the computed value with the larger
+// bound encloses the exact result.
+inline Word abs_word(const Word& w) { return pair_less(w.v, {0.0, 0.0}) ? negated(w) : w; }
+inline Word min_word(const Word& a, const Word& b) { return {pair_less(b.v, a.v) ? b.v : a.v, std::max(a.e, b.e)}; }
+inline Word max_word(const Word& a, const Word& b) { return {pair_less(a.v, b.v) ? b.v : a.v, std::max(a.e, b.e)}; }
 
 // Stage 2 of a cast on an oriented box (header): the signs of ObbFilter on double words.
 template <class Mul>
