@@ -36,17 +36,21 @@
 // same certain sign and Ns (and Nt) certainly have theirs. A non-finite value leaves the case to the next stage.
 //
 // Where a sign is left undecided, a second look, exact: each axis's coordinates (the source,
-// the target or the direction, the three vertices) as integers on a grid of that axis, 2^E_i
-// with E_i = (the exponent of the axis's largest coordinate) - 61, so that each is below 2^62
-// and each difference fits in 64 bits. Every monomial of a triple product takes one coordinate
-// from each axis, so scaling the axes by 2^-E_i scales it by a positive constant and keeps its
-// sign; on integers below 2^L_i an axis with L_0 + L_1 + L_2 <= 124 every partial sum stays
-// below 2^127, and the products are evaluated in 128-bit integers without rounding. Inputs
-// with bits below their axis's grid (the general decimal case), non-finite ones, coordinates
-// all below 2^-962 (the scale would not be a double) or differences too wide for 128 bits
-// leave the case to the next stage. Inputs on a grid pass: a mesh 10^12 from the origin
-// (multiples of 2^-13 there, a few units apart: about 25 bits an axis), integer lattices,
-// triangles of size 2^-400. A shot through a vertex or along an edge is exactly degenerate
+// the target, the three vertices) as integers on the coarsest grid 2^G_i they share, read off
+// their bits (x = m 2^e with m odd; G_i the smallest e), so that no scaling rounds and
+// subnormals are no exception. Every monomial of a triple product takes one coordinate from
+// each axis, so the grids scale it by the positive constant 2^-(G_0 + G_1 + G_2) and keep its
+// sign. A ray's direction is not a difference of positions, and a unit direction has bits far
+// below the grid of coordinates 10^6 from the origin: it takes grids of its own, 2^(G_i + delta)
+// with one delta for the three axes (each monomial of d . (A x B) takes d from one axis and A, B
+// from the other two: the scale is again common). Each integer has at most 62 bits, so each
+// difference fits in 64; the triple products are evaluated in 128-bit integers where the axes'
+// widths sum to at most 124 (every partial sum below 2^127), in 192-bit magnitudes summed in 256
+// bits otherwise. An axis whose values span more than 62 bits (1e12 beside 0.1), a direction
+// too wide for its grids, or a non-finite input leaves the case to the next stage. So a mesh
+// 10^12 from the origin (multiples of 2^-13 there), integer lattices, decimal coordinates of
+// like magnitude and a unit direction through a vertex 10^6 away are all decided here. A shot
+// through a vertex or along an edge is exactly degenerate
 // there, and the bound above cannot decide a sign that is exactly 0. With the exact signs the
 // book's test is decided as it stands: opposite signs miss; all three w_k zero (the shot's
 // line in the plane, or a zero-area triangle met in it) is left to the next stage; otherwise
@@ -127,35 +131,48 @@ inline constexpr int unknown = 2;
 namespace exact_eval {
 
 using Wide = __int128;
+using UWide = unsigned __int128;
 
-// The coordinates of one axis as integers: n_j = x_j 2^-E with E = e - 61, e the exponent of the
-// largest |x_j| (|x_j| < 2^(e+1)), so that |n_j| < 2^62 and a difference of two fits in an
-// int64. The scaling by 2^-E is exact unless its result falls below the normal range, and
-// there it is below 1: not an integer, or 0 (a coordinate far below the largest, which the
-// fuzz target found: 2^-1034 beside 2^769). So a coordinate passes where its scaled value is an
-// integer (converted back, the same double) and is 0 only if the coordinate is. false where a
-// coordinate has bits below 2^E, where one is not finite, or where the largest is below
-// 2^-962 (the scale 2^-E would not be a double): the look then steps aside.
+// A finite double as m 2^e with m odd, or m = 0: 2^e is the coarsest grid it lies on.
+struct Dyadic {
+  std::int64_t m = 0;
+  int e = 0;
+};
+inline Dyadic dyadic(double x) {
+  const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+  const int biased = int((b >> 52) & 0x7ff);
+  std::uint64_t mant = b & ((std::uint64_t(1) << 52) - 1);
+  if (biased != 0) mant |= std::uint64_t(1) << 52;  // a subnormal has no implicit bit
+  if (mant == 0) return {};
+  const int tz = std::countr_zero(mant);
+  mant >>= tz;
+  const int e = (biased == 0 ? -1074 : biased - 1075) + tz;
+  return {(b >> 63) ? -std::int64_t(mant) : std::int64_t(mant), e};
+}
+
+// One axis's coordinates as integers on the coarsest grid 2^G they share (G the smallest e of
+// their dyadic forms): n_j = x_j 2^-G exactly. false where one is not finite or where an n_j
+// needs more than 62 bits (the axis's values span more than 62 bits, from the largest's top bit
+// to the finest's lowest), so that a difference of two fits in an int64. `grid` is G, or
+// no_grid where every value is 0 (any grid does).
+inline constexpr int no_grid = 1 << 20;
 template <int N>
-bool to_grid(const double (&x)[N], std::int64_t (&n)[N]) {
-  double m = 0;
-  bool ok = true;
+bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
+  Dyadic d[N];
+  grid = no_grid;
   for (int j = 0; j < N; ++j) {
-    const double a = std::fabs(x[j]);
-    ok &= a <= std::numeric_limits<double>::max();  // false for NaN and infinities
-    m = max_value(m, a);
+    if (!(std::fabs(x[j]) <= std::numeric_limits<double>::max())) return false;  // NaN, infinities
+    d[j] = dyadic(x[j]);
+    if (d[j].m != 0) grid = std::min(grid, d[j].e);
   }
-  // e + 1023 (all zero: any grid does)
-  const int biased = m == 0 ? 61 : int(std::bit_cast<std::uint64_t>(m) >> 52);
-  if (!ok || biased < 61) return false;
-  // 2^-E = 2^(1084 - biased), a normal double for biased in [61, 2046]
-  const double scale = std::bit_cast<double>(std::uint64_t(2107 - biased) << 52);
   for (int j = 0; j < N; ++j) {
-    const double y = x[j] * scale;  // |y| < 2^62: the conversion is defined
-    n[j] = std::int64_t(y);
-    ok &= (double(n[j]) == y) & ((y != 0) | (x[j] == 0));
+    n[j] = 0;
+    if (d[j].m == 0) continue;
+    const int shift = d[j].e - grid;  // >= 0
+    if (std::bit_width(std::uint64_t(std::llabs(d[j].m))) + shift > 62) return false;
+    n[j] = d[j].m * (std::int64_t(1) << shift);
   }
-  return ok;
+  return true;
 }
 
 // The exact sign of a . (b x c) for integer vectors whose i-th coordinates are below 2^L_i in
@@ -169,32 +186,96 @@ inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const 
   return int(v > 0) - int(v < 0);
 }
 
+// The same for any coordinates below 2^63 in magnitude (differences of 62-bit integers): a
+// cross product's component b_j c_k - b_k c_j is below 2^127 and exact in a signed 128-bit
+// integer; each a_i x_i is below 2^190, taken as a 192-bit magnitude (two 64 x 64 -> 128-bit
+// products) and added to or subtracted from a 256-bit two's-complement sum, below 2^192.
+inline int triple_wide(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const std::int64_t (&c)[3]) {
+  std::uint64_t acc[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const Wide x = Wide(b[j]) * c[k] - Wide(b[k]) * c[j];
+    if (x == 0 || a[i] == 0) continue;
+    const bool neg = (x < 0) != (a[i] < 0);
+    const UWide mx = x < 0 ? UWide(-x) : UWide(x);  // |x| < 2^127: -x does not overflow
+    const std::uint64_t ma = a[i] < 0 ? -std::uint64_t(a[i]) : std::uint64_t(a[i]);
+    const UWide lo = UWide(std::uint64_t(mx)) * ma, hi = UWide(std::uint64_t(mx >> 64)) * ma;
+    const UWide mid = (lo >> 64) + std::uint64_t(hi);
+    const std::uint64_t m[4] = {std::uint64_t(lo), std::uint64_t(mid), std::uint64_t(mid >> 64) + std::uint64_t(hi >> 64), 0};
+    // acc +- m, limb by limb with the carry or borrow
+    UWide carry = 0;
+    for (int l = 0; l < 4; ++l) {
+      if (!neg) {
+        const UWide t = UWide(acc[l]) + m[l] + carry;
+        acc[l] = std::uint64_t(t);
+        carry = t >> 64;
+      } else {
+        const UWide t = UWide(acc[l]) - m[l] - carry;
+        acc[l] = std::uint64_t(t);
+        carry = (t >> 64) != 0;  // a borrow wraps the high half
+      }
+    }
+  }
+  if (std::int64_t(acc[3]) < 0) return -1;
+  return (acc[0] | acc[1] | acc[2] | acc[3]) != 0 ? 1 : 0;
+}
+
+// A ray's direction on grids of its own, 2^(G_i + delta) on axis i with one delta for the three:
+// every monomial of d . (A x B) takes d from one axis and A, B from the other two, so each is
+// scaled by 2^-(delta + G_0 + G_1 + G_2), the same positive factor. delta is the largest that
+// keeps every d_i an integer (a unit direction beside coordinates 10^6 from the origin has bits
+// far below their grid). false where a d_i would need more than 62 bits (its axes' grids too far
+// apart for the direction's spread), where it is not finite, or where it is zero. An axis whose
+// positions are all 0 (no grid) takes d_i's own.
+inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int64_t (&d)[3]) {
+  Dyadic q[3];
+  int delta = no_grid;
+  for (int i = 0; i < 3; ++i) {
+    if (!(std::fabs(dir[i]) <= std::numeric_limits<double>::max())) return false;
+    q[i] = dyadic(dir[i]);
+    if (q[i].m == 0) continue;
+    if (grid[i] == no_grid) grid[i] = q[i].e;
+    delta = std::min(delta, q[i].e - grid[i]);
+  }
+  if (delta == no_grid) return false;
+  for (int i = 0; i < 3; ++i) {
+    d[i] = 0;
+    if (q[i].m == 0) continue;
+    const int shift = q[i].e - grid[i] - delta;  // >= 0
+    if (std::bit_width(std::uint64_t(std::llabs(q[i].m))) + shift > 62) return false;
+    d[i] = q[i].m * (std::int64_t(1) << shift);
+  }
+  return true;
+}
+
 // The cast decided from the static signs (nonzero: certain; 0: undecided) and the exact ones
-// where those are undecided; `unknown` where the inputs are not on a grid fine enough or the
-// shot lies in the triangle's plane.
+// where those are undecided; `unknown` where the inputs are on no grid narrow enough (an axis
+// spanning more than 62 bits) or the shot lies in the triangle's plane.
 [[gnu::noinline]] inline int settle(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir, const Triangle<double>& tri,
                                     int w0, int w1, int w2) {
-  // per axis: the source, the target (a segment) or the direction (a ray), the three vertices
+  // per axis: the source, the target (a segment; a ray's source again, unused), the three vertices
   std::int64_t A[3][3], d[3], e1[3], e2[3], T0[3];
+  int grid[3];
+  for (int i = 0; i < 3; ++i) {
+    const double x[5] = {s[i], t ? (*t)[i] : s[i], tri.vertex[0][i], tri.vertex[1][i], tri.vertex[2][i]};
+    std::int64_t n[5];
+    if (!axis_on_grid(x, n, grid[i])) return unknown;
+    for (int k = 0; k < 3; ++k) A[k][i] = n[2 + k] - n[0];
+    d[i] = n[1] - n[0];  // a segment's t - s
+    e1[i] = n[3] - n[2];
+    e2[i] = n[4] - n[2];
+    T0[i] = t ? n[2] - n[1] : 0;
+  }
+  if (!t && !direction_on_grid(dir, grid, d)) return unknown;
   // the values a triple product below takes on axis i, or'd (each below 2^63 in magnitude)
   const auto all = [&](int i, auto f) { return f(A[0][i]) | f(A[1][i]) | f(A[2][i]) | f(d[i]) | f(e1[i]) | f(e2[i]) | f(T0[i]); };
   const auto magnitude = [](std::int64_t x) { return std::uint64_t(std::llabs(x)); };
   int bits = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double x[5] = {s[i], t ? (*t)[i] : dir[i], tri.vertex[0][i], tri.vertex[1][i], tri.vertex[2][i]};
-    std::int64_t n[5];
-    if (!to_grid(x, n)) return unknown;
-    for (int k = 0; k < 3; ++k) A[k][i] = n[2 + k] - n[0];
-    d[i] = t ? n[1] - n[0] : n[1];
-    e1[i] = n[3] - n[2];
-    e2[i] = n[4] - n[2];
-    T0[i] = t ? n[2] - n[1] : 0;
-    bits += std::bit_width(all(i, magnitude));
-  }
+  for (int i = 0; i < 3; ++i) bits += std::bit_width(all(i, magnitude));
   if (bits > 124) {
-    // too wide as they stand (a lattice's differences are as wide as its coordinates at the
-    // grid of its largest): divide each axis by the power of two its values have in common
-    // (-x has the trailing zeros of x)
+    // too wide for 128 bits as they stand (a lattice's differences can have more trailing
+    // zeros than its coordinates): divide each axis by the power of two its values have in
+    // common (-x has the trailing zeros of x)
     bits = 0;
     for (int i = 0; i < 3; ++i) {
       const std::uint64_t any = all(i, [](std::int64_t x) { return std::uint64_t(x); });
@@ -203,18 +284,21 @@ inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const 
       d[i] >>= common, e1[i] >>= common, e2[i] >>= common, T0[i] >>= common;
       bits += std::bit_width(all(i, magnitude));
     }
-    if (bits > 124) return unknown;
   }
+  // 128-bit products where the widths allow, 192-bit ones otherwise
+  const auto sign = [wide = bits > 124](const std::int64_t (&a)[3], const std::int64_t (&b)[3], const std::int64_t (&c)[3]) {
+    return wide ? triple_wide(a, b, c) : triple(a, b, c);
+  };
   int w[3] = {w0, w1, w2};
   for (int k = 0; k < 3; ++k)
-    if (w[k] == 0) w[k] = triple(d, A[(k + 1) % 3], A[(k + 2) % 3]);
+    if (w[k] == 0) w[k] = sign(d, A[(k + 1) % 3], A[(k + 2) % 3]);
   const bool neg = w[0] < 0 || w[1] < 0 || w[2] < 0, pos = w[0] > 0 || w[1] > 0 || w[2] > 0;
   if (neg && pos) return 0;
   if (!(neg || pos)) return unknown;  // the shot's line in the triangle's plane
   const int sD = pos ? 1 : -1;
   // Ns = (v0 - s) . (e1 x e2): lambda's numerator; Nt = (v0 - t) . (e1 x e2)
-  if (triple(A[0], e1, e2) == -sD) return 0;        // lambda < 0
-  if (t && triple(T0, e1, e2) == sD) return 0;      // lambda > 1
+  if (sign(A[0], e1, e2) == -sD) return 0;        // lambda < 0
+  if (t && sign(T0, e1, e2) == sD) return 0;      // lambda > 1
   return 1;
 }
 
