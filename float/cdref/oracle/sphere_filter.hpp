@@ -83,7 +83,8 @@ struct SphereFilter {
   // to 8.7 ns a case, 4% slower at long range (standalone loop over 16,384 cases); only the
   // cases it leaves take the finer bound.
   int sigma() const {
-    if (!(ss >= 0x1p-480 && ss <= 0x1p480 && rr >= 0x1p-480 && rr <= 0x1p480 && rho2 <= 0x1p480)) return unknown;
+    // one branch for the five range tests (each false on a NaN)
+    if (!((ss >= 0x1p-480) & (ss <= 0x1p480) & (rr >= 0x1p-480) & (rr <= 0x1p480) & (rho2 <= 0x1p480))) return unknown;
     double c[3], cc = 0;
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -136,8 +137,11 @@ int segment_sphere_logic(const P& p) {
 }
 
 // The cast's filter on its inputs: 1 hit, 0 miss, `unknown`. `to` is the target (segment) or
-// the direction (ray).
-inline int sphere_cast_filter(const Vec3<double>& from, const Vec3<double>& to, const Sphere<double>& sp,
+// the direction (ray). Flattened: with sigma() and the logic called out of line, the segment's
+// filter (the cast's and Algorithm 3.2's) took twice as long (standalone loop over 16,384 cases
+// on a 2-core AMD EPYC, best of 6: Algorithm 3.2's oracle 34.1 -> 17.5 ns uniform, 37.1 -> 24.7
+// ns at 10^12; the ray's unchanged).
+[[gnu::flatten]] inline int sphere_cast_filter(const Vec3<double>& from, const Vec3<double>& to, const Sphere<double>& sp,
                               bool segment) {
   return hit_sphere_logic(SphereFilter(from, to, sp, segment), segment);
 }
