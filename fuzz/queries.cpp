@@ -52,6 +52,8 @@ Query query_by_name(const std::string& name) {
 
 Answer truth(Query q, const Inputs& in, int precision) { return info(q).truth(in, precision); }
 
+Answer truth_classification(Query q, const Inputs& in) { return info(q).truth_classification(in); }
+
 Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used) {
   return info(q).oracle_truth(in, precision, exact_used);
 }

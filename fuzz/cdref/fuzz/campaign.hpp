@@ -149,6 +149,10 @@ struct QueryInfo {
   std::function<Answer(int precision, const Inputs&)> stable_classification;  // empty without a stable tier
   // The exact answer, each value rounded correctly to the precision.
   std::function<Answer(const Inputs&, int precision)> truth;
+  // The exact classification alone (cls and pred; no values): the truth's formulation at
+  // CGAL::Gmpq asked for no outputs. The reference the classification oracle is tested against
+  // and a classification-only campaign's exact truth.
+  std::function<Answer(const Inputs&)> truth_classification;
   // The same from the fast oracle (a filter with a rigorous error bound, the exact path when
   // it cannot decide); `exact_used` tells which path answered.
   std::function<Answer(const Inputs&, int precision, bool* exact_used)> oracle_truth;
@@ -191,6 +195,9 @@ const Implementation& implementation_by_name(const std::string& name);
 // The exact answer on the given inputs, each value rounded correctly to float (precision
 // 24), double (53) or long double (64).
 Answer truth(Query q, const Inputs& in, int precision);
+
+// The exact classification alone (see QueryInfo::truth_classification).
+Answer truth_classification(Query q, const Inputs& in);
 
 // The same answer from the fast oracle (see QueryInfo::oracle_truth).
 Answer oracle_truth(Query q, const Inputs& in, int precision, bool* exact_used = nullptr);

@@ -258,6 +258,7 @@ QueryInfo describe() {
                             : book_at<Spec, CGAL::Epeck::FT, double>(in, true);
   };
   qi.truth = truth_of<Spec>;
+  qi.truth_classification = [](const Inputs& in) { return truth_at<Spec, CGAL::Gmpq, double>(in, false); };
   qi.oracle_truth = oracle_truth_of<Spec>;
   qi.oracle_classify = oracle_classify_of<Spec>;
   if constexpr (is_cast<Spec>)
