@@ -588,14 +588,15 @@ bool same_answer(const Answer& a, const Answer& b) {
 
 TEST_CASE("the oracle gives exactly the exact answer, on every family of every query", "[oracle]") {
   // The filter's answers are accepted only when certain; whatever path answers, the result
-  // must be the book at Gmpq rounded correctly, bit for bit, at float and double precision.
-  std::uint64_t cases = 0, filtered = 0, uniform_cases = 0, uniform_filtered = 0;
+  // must be the book at Gmpq rounded correctly, bit for bit, at float, double and long double
+  // precision.
+  std::uint64_t cases = 0, filtered = 0, uniform_cases = 0, uniform_filtered = 0, cases64 = 0, filtered64 = 0;
   for (Query q : all_queries())
     for (const Family& f : families(q))
       for (int k : f.scales)
-        for (std::uint64_t i = 0; i < 60; ++i) {
+        for (std::uint64_t i = 0; i < 40; ++i) {
           const Inputs in = make_case(5, q, f, k, i);
-          for (int precision : {24, 53}) {
+          for (int precision : {24, 53, 64}) {
             const Inputs x = precision == 24 ? float_inputs(q, in) : in;
             bool finite = true;
             for (std::size_t j = 0; j < info(q).inputs.size(); ++j) finite = finite && std::isfinite(x[j]);
@@ -614,6 +615,7 @@ TEST_CASE("the oracle gives exactly the exact answer, on every family of every q
             ++cases;
             filtered += !used_exact;
             if (f.name == "uniform") ++uniform_cases, uniform_filtered += !used_exact;
+            if (precision == 64) ++cases64, filtered64 += !used_exact;
           }
         }
   // The double-word filter (oracle::Bounded2) certifies the decisions and the values,
@@ -621,11 +623,12 @@ TEST_CASE("the oracle gives exactly the exact answer, on every family of every q
   // boundary or the book's own cancellation eats the extra 53 bits (long range past ~1e6
   // radii): measured 138,096 of 156,360 cases and 3,308 of 3,360 uniform ones. Both paths must
   // be exercised here, and the filter must carry most of the load.
-  std::printf("oracle (all outputs): the filter answered %llu of %llu cases, %llu of %llu uniform\n",
+  std::printf("oracle (all outputs): the filter answered %llu of %llu cases, %llu of %llu uniform, %llu of %llu at long double\n",
               (unsigned long long)filtered, (unsigned long long)cases, (unsigned long long)uniform_filtered,
-              (unsigned long long)uniform_cases);
+              (unsigned long long)uniform_cases, (unsigned long long)filtered64, (unsigned long long)cases64);
   REQUIRE(cases > 40000);
   REQUIRE(filtered > cases * 3 / 4);
+  if (std::numeric_limits<long double>::digits == 64) REQUIRE(filtered64 > cases64 * 3 / 4);
   REQUIRE(uniform_filtered > uniform_cases * 9 / 10);
   REQUIRE(filtered < cases);
 }

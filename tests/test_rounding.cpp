@@ -293,7 +293,7 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
   std::uniform_real_distribution<double> mant(-1, 1);
   std::uniform_int_distribution<int> expo(-60, 60), pick(0, 5);
   auto draw = [&] { return std::ldexp(mant(rng), expo(rng)); };
-  int checked = 0, roots = 0, quotients = 0, exact_ties = 0;
+  int checked = 0, roots = 0, quotients = 0, exact_ties = 0, long_doubles = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     // a chain of operations with cancellation on purpose: values near one another
     std::vector<Tracked> pool;
@@ -322,6 +322,12 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
             const Bounded2 root = Bounded2::root(s.b);
             REQUIRE(dw_encloses_root(root, s.x));
             ++roots;
+            try {
+              const long double l = root.rounded_long_double();
+              REQUIRE(l == exact::round_long_double(QS::sqrt_of(s.x)));
+              ++long_doubles;
+            } catch (const oracle::uncertain&) {
+            }
             continue;  // the root is not rational: not kept in the pool
           }
         }
@@ -347,6 +353,10 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
       }
       if (const auto d = certain([&] { return r.b.rounded(); })) REQUIRE(*d == round_double(r.x));
       if (const auto f = certain([&] { return r.b.rounded_float(); })) REQUIRE(*f == round_float(r.x));
+      if (const auto l = certain([&] { return r.b.rounded_long_double(); })) {
+        REQUIRE(*l == exact::round_long_double(r.x));
+        ++long_doubles;
+      }
       pool.push_back(r);
     }
   }
@@ -354,6 +364,32 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
   CHECK(roots > 3000);
   CHECK(quotients > 3000);
   CHECK(exact_ties > 100);
+  CHECK(long_doubles > 20000);  // long double roundings the double word certifies
+}
+
+TEST_CASE("oracle::Bounded2 rounds to long double: midpoints uncertain, either side decided", "[rounding][oracle]") {
+  if (std::numeric_limits<long double>::digits != 64) {  // (then rounded_long_double is rounded() or uncertain)
+    WARN("long double is not the x87 extended format here: nothing to check");
+    return;
+  }
+  // 1 and 1 + 2^-63 are neighbours; 1 + 2^-64 is the midpoint between them, a double word
+  const long double up = 1.0L + std::ldexp(1.0L, -63);
+  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, 0x1p-64).rounded_long_double(), oracle::uncertain);
+  CHECK(Bounded2::exact_pair(1.0, 0x1p-64 + 0x1p-116).rounded_long_double() == up);
+  CHECK(Bounded2::exact_pair(1.0, 0x1p-64 - 0x1p-117).rounded_long_double() == 1.0L);
+  // an error bound that reaches the midpoint is uncertain; one that stops short is not
+  CHECK_THROWS_AS(Bounded2::within(1.0, 0x1p-64 + 0x1p-100, 0x1p-99).rounded_long_double(), oracle::uncertain);
+  CHECK(Bounded2::within(1.0, 0x1p-64 + 0x1p-100, 0x1p-102).rounded_long_double() == up);
+  // below a power of two the gap halves: 1 - 2^-65 is the midpoint between 1 - 2^-64 and 1
+  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, -0x1p-65).rounded_long_double(), oracle::uncertain);
+  CHECK(Bounded2::exact_pair(1.0, -0x1p-65 + 0x1p-118).rounded_long_double() == 1.0L);
+  CHECK(Bounded2::exact_pair(1.0, -0x1p-65 - 0x1p-117).rounded_long_double() == 1.0L - std::ldexp(1.0L, -64));
+  // negative values, zero, and the ends of the range it takes
+  CHECK(Bounded2::exact_pair(-1.0, -0x1p-64 - 0x1p-116).rounded_long_double() == -up);
+  CHECK(std::signbit(Bounded2(0.0).rounded_long_double()) == false);
+  CHECK(Bounded2(0x1p-899).rounded_long_double() == std::ldexp(1.0L, -899));
+  CHECK_THROWS_AS(Bounded2(0x1p-1000).rounded_long_double(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2(0x1p1010).rounded_long_double(), oracle::uncertain);
 }
 
 TEST_CASE("oracle::Bounded2 certifies square roots that the double filter cannot", "[rounding][oracle]") {

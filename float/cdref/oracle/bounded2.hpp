@@ -49,7 +49,10 @@
 // Rounding to double: hi is the double nearest to hi + lo; the exact value rounds to hi
 // when [v - e, v + e] lies strictly inside hi's rounding interval (the midpoints to both
 // neighbours), checked with the differences to the midpoints computed exactly; an exact
-// value (e = 0) on a midpoint rounds to the even neighbour, as IEEE does.
+// value (e = 0) on a midpoint rounds to the even neighbour, as IEEE does. Rounding to float
+// and to long double: the same test against the midpoints of the float or long double nearest
+// hi + lo (exact doubles for a float, exact double words for an x87 long double); a value on
+// a midpoint is uncertain there (left to the exact path).
 #pragma once
 
 #include <Eigen/Core>
@@ -281,6 +284,38 @@ class Bounded2 {
     const bool inside_hi = (dhi.hi_ - std::fabs(dhi.lo_)) * (1 - 2 * u) > (dhi.e_ + e_) * grow;
     if (inside_lo && inside_hi) return f;
     throw uncertain();
+  }
+  // The exact value rounded to nearest long double, or uncertain. For the x87 extended format
+  // (64 significant bits): f = fl(hi + lo) in long double is the long double nearest hi + lo
+  // (one rounding of an exact sum). The ends of f's rounding interval, f - gd and f + gu (gd,
+  // gu half the gaps to its neighbours, powers of two), have 65 bits: each is formed as a
+  // double word from f's own exact split into the double nearest it and the rest (at most 11
+  // bits, exact in a double), with the bound of that sum; then, as for a float, the exact
+  // value's interval [v - e, v + e] must lie strictly inside. Kept well inside the range of
+  // doubles (|hi| in [2^-900, 2^1000]) so that every part is a normal double; outside it,
+  // and for a long double of another format than these two, uncertain.
+  long double rounded_long_double() const {
+    if constexpr (std::numeric_limits<long double>::digits == std::numeric_limits<double>::digits) {
+      return rounded();
+    } else {
+      if (std::numeric_limits<long double>::digits != 64 || !finite()) throw uncertain();
+      if (hi_ == 0 && lo_ == 0 && e_ == 0) return 0.0L;  // +0, never -0
+      const double a = std::fabs(hi_);
+      if (!(a >= 0x1p-900 && a <= 0x1p1000)) throw uncertain();
+      const long double f = static_cast<long double>(hi_) + static_cast<long double>(lo_);
+      const long double inf = std::numeric_limits<long double>::infinity();
+      const double gd = static_cast<double>((f - std::nextafter(f, -inf)) / 2);
+      const double gu = static_cast<double>((std::nextafter(f, inf) - f) / 2);
+      const double fh = static_cast<double>(f);
+      const double fl = static_cast<double>(f - static_cast<long double>(fh));
+      const Bounded2 F = exact_pair(fh, fl);
+      const Bounded2 v = exact_part(*this);
+      const Bounded2 dlo = v - (F - Bounded2(gd)), dhi = (F + Bounded2(gu)) - v;
+      const bool inside_lo = (dlo.hi_ - std::fabs(dlo.lo_)) * (1 - 2 * u) > (dlo.e_ + e_) * grow;
+      const bool inside_hi = (dhi.hi_ - std::fabs(dhi.lo_)) * (1 - 2 * u) > (dhi.e_ + e_) * grow;
+      if (inside_lo && inside_hi) return f;
+      throw uncertain();
+    }
   }
 
  private:

@@ -233,7 +233,7 @@ long double value(const S& x) {
     else if constexpr (std::is_same_v<F, double>)
       return x.rounded();
     else
-      throw oracle::uncertain();  // a double filter cannot certify a long double
+      return x.rounded_long_double();
   } else if constexpr (!number_traits<S>::is_exact)
     return static_cast<long double>(x);
   else if constexpr (std::is_same_v<F, long double>)
@@ -404,17 +404,16 @@ Answer truth_of(const Inputs& in, int precision) {
 }
 
 // The truth's formulation run on oracle::Bounded2 (a double word with a rigorous error
-// bound), accepted when every comparison and every rounding is certain; otherwise the exact
-// path (always at precision 64: a double word cannot certify a long double rounding).
+// bound, about 106 bits: room for a float's, a double's and a long double's rounding),
+// accepted when every comparison and every rounding is certain; otherwise the exact path.
 template <class Spec>
 Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   if (exact_used) *exact_used = false;
-  if (precision != 64) {
-    try {
-      return precision == 24 ? truth_at<Spec, oracle::Bounded2, float>(in, true, true)
+  try {
+    return precision == 24   ? truth_at<Spec, oracle::Bounded2, float>(in, true, true)
+           : precision == 64 ? truth_at<Spec, oracle::Bounded2, long double>(in, true, true)
                              : truth_at<Spec, oracle::Bounded2, double>(in, true, true);
-    } catch (const oracle::uncertain&) {
-    }
+  } catch (const oracle::uncertain&) {
   }
   if (exact_used) *exact_used = true;
   return truth_of<Spec>(in, precision);
