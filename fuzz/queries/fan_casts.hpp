@@ -41,7 +41,8 @@ struct FanCastQuery {
   static std::vector<std::string> inputs() {
     auto c = spec::cols({{"source", 3}, {Ray ? "direction" : "target", 3}, {"n", 1}, {"closed", 1}, {"center", 3}});
     for (int i = 0; i < spec::Fan<double>::max_ring; ++i) {
-      const std::string r = "r" + std::to_string(i);
+      std::string r = "r";  // (not "r" + std::to_string(i): g++ 12 warns of a false overflow in it)
+      r += std::to_string(i);
       c = spec::concat(c, spec::cols({{r.c_str(), 3}}));
     }
     return c;
