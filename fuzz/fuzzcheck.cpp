@@ -110,6 +110,12 @@ void check_query(Query q, const std::uint8_t* data, std::size_t size) {
   if (o.cls != t.cls || o.pred != t.pred) violated(q, in, "the oracle classifies differently from the truth");
   for (int k = 0; k < max_values; ++k)
     if (!same_value(o.v[k], t.v[k])) violated(q, in, "the oracle's values differ from the truth's");
+  // and at long double precision, where the double word rounds to long double too
+  const Answer t64 = truth(q, in, 64), o64 = oracle_truth(q, in, 64);
+  if (o64.cls != t64.cls || o64.pred != t64.pred)
+    violated(q, in, "the oracle classifies differently from the truth at long double precision");
+  for (int k = 0; k < max_values; ++k)
+    if (!same_value(o64.v[k], t64.v[k])) violated(q, in, "the oracle's long double values differ from the truth's");
   Answer oc;
   if (refuses([&] { return oracle_classify(q, in); }, oc))
     violated(q, in, "the classification oracle refused an input the exact types take");

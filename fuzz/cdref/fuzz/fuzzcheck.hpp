@@ -9,7 +9,8 @@
 //     otherwise agree exactly, every output rounded correctly to double; and at exact types
 //     the root- and division-free predicate must agree with the full query, and
 //     Algorithm 3.1 with Algorithm 3.2 for segments and spheres;
-//   - the oracle (filter first, then exact) must give exactly the Gmpq answer.
+//   - the oracle (filter first, then exact) must give exactly the Gmpq answer, rounded to
+//     double and to long double.
 // A violated check prints the inputs in hex-float and aborts.
 // check_case_reader feeds bytes as a case file to the case-file parser; check_results_reader
 // as a campaign's text form and as a cdref-mpi rank's checkpoint (read back after writing).
