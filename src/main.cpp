@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include <cdref/exact/gmp_pool.hpp>
 #include "campaign_cli.hpp"
 #include "casefiles.hpp"
 #include "report.hpp"
@@ -200,6 +201,7 @@ int describe() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  cdref::exact::use_gmp_pool();  // GMP's small blocks cached per thread (gmp_pool.hpp)
   Args a;
   for (int i = 1; i < argc; ++i) a.v.push_back(argv[i]);
   try {

@@ -9,6 +9,11 @@
 //   - MPFR's mpfr_set_q with the double exponent range and subnormals.
 // CGAL::to_double(CORE::Expr), which truncates, is shown to differ where it must.
 #include <random>
+#include <thread>
+
+#include <gmpxx.h>
+
+#include <cdref/exact/gmp_pool.hpp>
 
 #include "support.hpp"
 
@@ -402,4 +407,53 @@ TEST_CASE("oracle::Bounded2 certifies square roots that the double filter cannot
   CHECK((Bounded2(mid) * Bounded2(mid)).rounded() == mid * mid);  // 49 bits: exact
   CHECK_THROWS_AS(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded_float(), oracle::uncertain);
   CHECK(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded() == mid);
+}
+
+TEST_CASE("GMP's block cache: installed, exact sizes kept, contents moved, threads and their ends", "[rounding][gmp-pool]") {
+  namespace gp = cdref::exact::gmp_pool_detail;
+  // tests/main.cpp installs it, as cdref's main does
+  void* (*a)(std::size_t) = nullptr;
+  void* (*r)(void*, std::size_t, std::size_t) = nullptr;
+  void (*f)(void*, std::size_t) = nullptr;
+  mp_get_memory_functions(&a, &r, &f);
+  REQUIRE(a == &gp::allocate);
+  REQUIRE(r == &gp::reallocate);
+  REQUIRE(f == &gp::release);
+  // cached sizes: multiples of 8 up to 256, and only those
+  REQUIRE(gp::class_of(8) == 0);
+  REQUIRE(gp::class_of(256) == 31);
+  REQUIRE(gp::class_of(0) == -1);
+  REQUIRE(gp::class_of(12) == -1);
+  REQUIRE(gp::class_of(264) == -1);
+  // a freed block comes back for a request of its own size, never for another
+  void* p = gp::allocate(40);
+  gp::release(p, 40);
+  void* q = gp::allocate(48);
+  REQUIRE(q != p);
+  REQUIRE(gp::allocate(40) == p);
+  gp::release(q, 48);
+  // realloc keeps the contents across sizes, cached or not
+  for (std::size_t from : {8u, 24u, 100u, 256u, 1000u})
+    for (std::size_t to : {16u, 40u, 256u, 300u, 4096u}) {
+      auto* b = static_cast<unsigned char*>(gp::allocate(from));
+      for (std::size_t i = 0; i < from; ++i) b[i] = static_cast<unsigned char>(i * 7 + from);
+      auto* c = static_cast<unsigned char*>(gp::reallocate(b, from, to));
+      for (std::size_t i = 0; i < std::min(from, to); ++i) REQUIRE(c[i] == static_cast<unsigned char>(i * 7 + from));
+      gp::release(c, to);
+    }
+  gp::release(p, 40);
+  // threads compute, hand their numbers to this thread and end; this thread frees them
+  auto harmonic = [](int n) {
+    mpq_class s = 0;
+    for (int k = 1; k <= n; ++k) s += mpq_class(1, k);
+    return s;
+  };
+  const mpq_class expected = harmonic(300);
+  std::vector<mpq_class> got(4);
+  std::vector<std::thread> ts;
+  for (int t = 0; t < 4; ++t) ts.emplace_back([&, t] { got[t] = harmonic(300); });
+  for (auto& t : ts) t.join();
+  for (const auto& g : got) REQUIRE(g == expected);
+  got.clear();  // blocks allocated by ended threads, freed here
+  REQUIRE(harmonic(300) == expected);
 }
