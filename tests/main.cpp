@@ -2,10 +2,11 @@
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 #include <cdref/float/mpfr.hpp>
-#include <cdref/exact/gmp_pool.hpp>
+
+void cdref_tests_use_gmp_pool();  // gmp_pool.cpp
 
 int main(int argc, char* argv[]) {
-  cdref::exact::use_gmp_pool();  // GMP's small blocks cached per thread (gmp_pool.hpp)
+  cdref_tests_use_gmp_pool();  // GMP's small blocks cached per thread (cdref/exact/gmp_pool.hpp)
   mpfr::mpreal::set_default_prec(128);
   return Catch::Session().run(argc, argv);
 }
