@@ -1,7 +1,7 @@
 // src/demo.cpp - cdref's built-in demonstration: the chapter's algorithms at float and
 // double beside the exact answer (CGAL::Gmpq, square roots kept exactly as a + b sqrt d),
 // on a few hard cases, printing where the float versions drift.
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 #include <cmath>
 #include <cstdio>
 #include <string>

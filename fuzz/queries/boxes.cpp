@@ -8,9 +8,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> box_queries() {
-  return {spec::describe<queries::BoxBox>(), spec::describe<queries::BoxCast<false>>(),
-          spec::describe<queries::BoxCast<true>>()};
-}
+std::vector<QueryInfo> box_queries() { return {CDREF_BOX_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

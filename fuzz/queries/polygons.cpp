@@ -7,10 +7,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> polygon_queries() {
-  return {spec::describe<queries::PolygonCast<true>>(), spec::describe<queries::PolygonCast<false>>(),
-          spec::describe<queries::PolygonPolygon>(), spec::describe<queries::PolygonBox>(),
-          spec::describe<queries::PolygonSphere>()};
-}
+std::vector<QueryInfo> polygon_queries() { return {CDREF_POLYGON_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

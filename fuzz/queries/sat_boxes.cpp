@@ -8,9 +8,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> sat_box_queries() {
-  return {spec::describe<queries::SegmentBox<false>>(), spec::describe<queries::SegmentBox<true>>(),
-          spec::describe<queries::TriangleBox>()};
-}
+std::vector<QueryInfo> sat_box_queries() { return {CDREF_SAT_BOX_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

@@ -10,10 +10,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> obb_queries() {
-  return {spec::describe<queries::ObbObb>(),          spec::describe<queries::ShapeObb<false>>(),
-          spec::describe<queries::ShapeObb<true>>(),  spec::describe<queries::ObbCast<false>>(),
-          spec::describe<queries::ObbCast<true>>(),   spec::describe<queries::SphereObb>()};
-}
+std::vector<QueryInfo> obb_queries() { return {CDREF_OBB_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

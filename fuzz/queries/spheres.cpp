@@ -10,10 +10,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> sphere_queries() {
-  return {spec::describe<queries::SphereSphere>(), spec::describe<queries::SphereCast<false>>(),
-          spec::describe<queries::SphereCast<true>>(), spec::describe<queries::SegmentSphere>(),
-          spec::describe<queries::SphereBox>()};
-}
+std::vector<QueryInfo> sphere_queries() { return {CDREF_SPHERE_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

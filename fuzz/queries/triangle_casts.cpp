@@ -9,9 +9,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> triangle_cast_queries() {
-  return {spec::describe<queries::TriangleCast<true>>(), spec::describe<queries::TriangleCast<false>>(),
-          spec::describe<queries::FanCastQuery<true>>(), spec::describe<queries::FanCastQuery<false>>()};
-}
+std::vector<QueryInfo> triangle_cast_queries() { return {CDREF_TRIANGLE_CAST_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

@@ -8,8 +8,6 @@
 
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> triangle_queries() {
-  return {spec::describe<queries::SphereTriangle>(), spec::describe<queries::TriangleTriangle>()};
-}
+std::vector<QueryInfo> triangle_queries() { return {CDREF_TRIANGLE_QUERIES(CDREF_DESCRIBE)}; }
 
 }  // namespace cdref::fuzz

@@ -1,7 +1,7 @@
 // src/scene/run_exact.cpp - the exact scene run: rational positions (CGAL::Gmpq) and every
 // query at that type, square roots in Quad. The only translation unit of the scene code that
 // instantiates an exact type.
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 
 #include "engine.hpp"
 

@@ -1,16 +1,12 @@
 // cdref/exact/traits.hpp - number_traits for the exact types:
 //   CGAL::Gmpq                       rational, no square root: sqrt_type = Quad<Gmpq>
 //   CGAL::Lazy_exact_nt<ET>          (CGAL::Epeck::FT) lazy rational, sqrt_type = Quad<...>
-//   CORE::Expr                       (Epeck_with_sqrt::FT) exact real algebraic numbers,
-//                                    sqrt_type = Expr
 //   cdref::Quad<T>                   a + b sqrt(d) over one of the rationals above
 // to_double / to_float round correctly through exact/cdref/exact/rounding.hpp.
-// CGAL::to_double(CORE::Expr) truncates and is used only as a guess.
+// CORE::Expr's are in core_expr.hpp (see there why apart).
 #pragma once
 
-#include <CGAL/CORE_Expr.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Lazy_exact_nt.h>
 #include <gmpxx.h>
@@ -29,7 +25,6 @@ namespace exact {
 
 using Rational = CGAL::Gmpq;
 using LazyRational = CGAL::Epeck::FT;
-using Real = CORE::Expr;
 
 // The GMP rational behind each exact rational type (Epeck::FT's exact type is gmpxx's
 // mpq_class when CGAL is built with gmpxx, Boost's mpq_rational otherwise).
@@ -101,14 +96,6 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> : exact::field_rounding<CGAL::Lazy
   using sqrt_type = Quad<CGAL::Lazy_exact_nt<ET>>;
   static sqrt_type sqrt(const CGAL::Lazy_exact_nt<ET>& x) { return sqrt_type::sqrt_of(x); }
   static std::string name() { return "Epeck::FT"; }
-};
-
-template <>
-struct number_traits<CORE::Expr> : exact::field_rounding<CORE::Expr> {
-  static constexpr sqrt_support sqrt_kind = sqrt_support::exact;
-  using sqrt_type = CORE::Expr;
-  static CORE::Expr sqrt(const CORE::Expr& x) { return CGAL::sqrt(x); }
-  static std::string name() { return "CORE::Expr"; }
 };
 
 template <class T>

@@ -84,7 +84,7 @@
 #pragma once
 
 #include <cdref/cdref.hpp>
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/box_cast_filter.hpp>
 #include <cdref/oracle/sphere_filter.hpp>
 #include <cdref/oracle/rational.hpp>

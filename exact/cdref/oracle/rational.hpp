@@ -2,7 +2,7 @@
 // rational stage.
 #pragma once
 
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 
 namespace cdref::oracle {
 

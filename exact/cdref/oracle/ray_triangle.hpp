@@ -14,7 +14,7 @@
 #pragma once
 
 #include <cdref/cdref.hpp>
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/oracle/triangle_filter.hpp>

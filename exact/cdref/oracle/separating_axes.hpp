@@ -24,7 +24,7 @@
 #pragma once
 
 #include <cdref/cdref.hpp>
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/bounded.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/sat_filter.hpp>

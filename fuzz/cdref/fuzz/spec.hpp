@@ -30,7 +30,7 @@
 #include <bit>
 #include <concepts>
 
-#include <cdref/exact.hpp>
+#include <cdref/exact/rationals.hpp>
 #include <cdref/exact/long_double.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/bounded2.hpp>
