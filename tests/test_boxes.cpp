@@ -3,6 +3,10 @@
 // exact, written as rationals or a + b sqrt(d).
 #include "prox_check.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_boxes {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -289,3 +293,5 @@ TEMPLATE_TEST_CASE("sphere-box (3.2.2) on hard cases", "[sphere-box]", CDREF_ALL
       return std::pair{book::proximity(in.first, in.second), book::intersect(in.first, in.second)};
     });
 }
+
+}  // namespace cdref_test_boxes

@@ -20,6 +20,10 @@
 
 #include "queries/obb_casts.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_campaign {
+
 using namespace cdref::fuzz;
 
 namespace {
@@ -768,3 +772,5 @@ TEST_CASE("a campaign with --outputs certain grades a certified implementation's
   CHECK(fewer > 0);  // the uncertain hits' values were left out
   CHECK(worst_cert <= 2);
 }
+
+}  // namespace cdref_test_campaign

@@ -71,6 +71,10 @@
 
 #include "support.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_cgal_crosscheck {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -947,3 +951,5 @@ TEST_CASE("cgal crosscheck: sphere-box", "[cgal]") {
 }
 
 }  // namespace
+
+}  // namespace cdref_test_cgal_crosscheck

@@ -3,6 +3,10 @@
 // boxes, a zero direction for an infinite ray. Case by case, for every query.
 #include "support.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_errors {
+
 using namespace cdref;
 using namespace cdref::test;
 using Catch::Matchers::Contains;
@@ -86,3 +90,5 @@ TEMPLATE_TEST_CASE("domain errors are refused by name", "[errors]", double, floa
   REQUIRE_NOTHROW(book::intersect(Sphere<T>{o, T(0)}, box));
   REQUIRE_NOTHROW(book::hit(Segment<T>{o, e}, Box<T>{o, o}));
 }
+
+}  // namespace cdref_test_errors

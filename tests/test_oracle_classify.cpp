@@ -33,6 +33,10 @@
 #include <string>
 #include <vector>
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_oracle_classify {
+
 using namespace cdref;
 using namespace cdref::fuzz;
 using oracle::Stage;
@@ -1394,3 +1398,5 @@ TEST_CASE("sphere-triangle's oracle refuses what check() refuses, in check()'s o
   CHECK(refused == 2 * (13 * 3 + 3));  // an infinity or a NaN in any slot, a negative radius
   CHECK(answered == 2 * 13 * 10 - refused);
 }
+
+}  // namespace cdref_test_oracle_classify

@@ -13,6 +13,10 @@
 
 #include "support.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_robust_boxes {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -686,3 +690,5 @@ TEMPLATE_TEST_CASE("stable oriented-box casts: with the identity frame, the axis
     REQUIRE(hits > 300);
   }
 }
+
+}  // namespace cdref_test_robust_boxes

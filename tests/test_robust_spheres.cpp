@@ -22,6 +22,10 @@
 
 #include "support.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_robust_spheres {
+
 namespace {
 
 using namespace cdref;
@@ -923,3 +927,5 @@ TEMPLATE_TEST_CASE("stable sphere casts: every misclassification lies in the hea
                 << wrong << " misclassified (the book " << book_wrong << ")\n";
   }
 }
+
+}  // namespace cdref_test_robust_spheres

@@ -13,9 +13,14 @@
 
 #include <gmpxx.h>
 
+#include <cdref/oracle/bounded2.hpp>
 #include <cdref/exact/gmp_pool.hpp>
 
 #include "support.hpp"
+
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_rounding {
 
 using namespace cdref;
 using namespace cdref::test;
@@ -268,7 +273,6 @@ TEST_CASE("rationals and a + b sqrt(d) round to the nearest long double", "[roun
 }
 
 // ---- oracle::Bounded2: every operation's bound holds, checked exactly ----
-#include <cdref/oracle/bounded2.hpp>
 
 namespace {
 
@@ -457,3 +461,5 @@ TEST_CASE("GMP's block cache: installed, exact sizes kept, contents moved, threa
   got.clear();  // blocks allocated by ended threads, freed here
   REQUIRE(harmonic(300) == expected);
 }
+
+}  // namespace cdref_test_rounding

@@ -9,6 +9,10 @@
 
 #include "support.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_sat {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -579,3 +583,5 @@ TEST_CASE("the axes' independence is decided exactly", "[sat][errors]") {
     REQUIRE(det3_sign(x, y, z) == CGAL::sign(exact_vec(x).dot(exact_vec(y).cross(exact_vec(z)))));
   }
 }
+
+}  // namespace cdref_test_sat

@@ -10,6 +10,10 @@
 
 #include "scene.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_scenes {
+
 using namespace cdref::scene;
 using Q = CGAL::Gmpq;
 
@@ -252,3 +256,5 @@ TEST_CASE("the scene files in scenes/ load and run at every precision", "[scene]
     CHECK(!run_scene(s, Precision::float_).events.empty());
   }
 }
+
+}  // namespace cdref_test_scenes

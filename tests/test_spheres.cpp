@@ -5,6 +5,10 @@
 
 #include "prox_check.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_spheres {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -341,3 +345,5 @@ TEMPLATE_TEST_CASE("Algorithms 3.1 and 3.2 agree at exact types", "[segment-sphe
         }
   REQUIRE(n == 7 * 7 * 5 * 4);
 }
+
+}  // namespace cdref_test_spheres

@@ -27,6 +27,10 @@
 #include "prox_check.hpp"
 #include "queries/triangle_casts.hpp"
 
+// This file's names in a namespace of its own: the test files are compiled several to a unit
+// (tests/CMakeLists.txt).
+namespace cdref_test_triangles {
+
 using namespace cdref;
 using namespace cdref::test;
 
@@ -902,3 +906,5 @@ TEMPLATE_TEST_CASE("stable polygon-sphere without checks decides as the nearest 
   REQUIRE(n > 3000);  // every family and scale, 100 cases each, those the checked query takes
   REQUIRE(hits > n / 10);
 }
+
+}  // namespace cdref_test_triangles
