@@ -143,10 +143,10 @@ TEST_CASE("times of impact on the grown box and triangle: faces, edges and corne
     double t;
   } cases[] = {
       {"0", "0", box, 3.0},
-      {"1.5", "0", box, 4 - std::sqrt(0.75L)},
-      {"1.5", "1.5", box, 4 - std::sqrt(0.5L)},
+      {"1.5", "0", box, double(4 - std::sqrt(0.75L))},
+      {"1.5", "1.5", box, double(4 - std::sqrt(0.5L))},
       {"0", "0", tri, 3.0},                       // the triangle's face (x = -1)
-      {"0", "1.5", tri, 4 - std::sqrt(0.75L)},  // its vertex (-1, 0, 1), from above it
+      {"0", "1.5", tri, double(4 - std::sqrt(0.75L))},  // its vertex (-1, 0, 1), from above it
   };
   for (const Case& c : cases) {
     const Scene s = parse_scene(scene(c.y, c.z, c.target), "toi");

@@ -2,7 +2,8 @@
 // specs (fuzz/queries/<query>.hpp) instantiated together to keep the exact types' compile
 // time in few units. The registry (fuzz/queries.cpp) orders them by id. Each group's specs are
 // listed once, below: the group describes them, and fuzz/queries/core_rows.cpp (the one unit of
-// the library that includes CORE) instantiates their CORE::Expr row of the cost report.
+// the library that includes CORE) instantiates their CORE::Expr row of the cost report; a
+// spec's header is included by its group's file and by core_rows.cpp.
 #pragma once
 
 #include <cdref/fuzz/campaign.hpp>

@@ -3,7 +3,7 @@
 //   CGAL::Lazy_exact_nt<ET>          (CGAL::Epeck::FT) lazy rational, sqrt_type = Quad<...>
 //   cdref::Quad<T>                   a + b sqrt(d) over one of the rationals above
 // to_double / to_float round correctly through exact/cdref/exact/rounding.hpp.
-// CORE::Expr's are in core_expr.hpp (see there why apart).
+// CORE::Expr's traits are in core_expr.hpp, which says why they are apart.
 #pragma once
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
