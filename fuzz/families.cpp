@@ -6,6 +6,11 @@
 // lying in face planes, degenerate placements, and magnitudes from 1e-300 to 1e300 (10^k
 // applied to a uniform case, k = -320..300: squares overflow past 1e154 and underflow below
 // 1e-154, and at k = -310 and -320 the coordinates themselves are subnormal).
+//
+// No expression takes two draws from the stream where C++ leaves their order open (the
+// arguments of one call, the operands of an overloaded operator): a seed gives the same cases
+// from every compiler. Where a case once took several draws in one call, the named locals are
+// drawn in the order the g++ builds took them, so seeds keep the cases they always had.
 #include <cdref/fuzz/families.hpp>
 
 #include "family_tools.hpp"
@@ -48,7 +53,8 @@ std::vector<Family> sphere_shot_families(bool ray) {
                [S](Next& next, int) {
                  const V c = uvec(next, -1, 1);
                  const double rho = uni(next, 0.25, 2);
-                 return S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho);
+                 const V t = uvec(next, -4, 4), s = uvec(next, -4, 4);
+                 return S.make(s, t, c, rho);
                }});
   f.push_back({"long-range", "source 10^k radii away, passing 0 to 1.25 radii from the centre", decades(),
                [S](Next& next, int k) { return S.aimed(next, std::pow(10.0, k), uni(next, 0, 1.25)); }});
@@ -72,7 +78,8 @@ std::vector<Family> sphere_shot_families(bool ray) {
                    }
                    case 2: {  // source exactly on the sphere, along an axis, in or out
                      const V s = c + axis(i, sg * rho);
-                     const V t = s + axis(i, (pick(next, 2) ? 1 : -1) * uni(next, 0.5, 4));
+                     const double out = pick(next, 2) ? 1 : -1;
+                     const V t = s + axis(i, out * uni(next, 0.5, 4));
                      return S.make(s, t, c, rho);
                    }
                    case 3: {  // radius 0, line through the point or not
@@ -81,7 +88,8 @@ std::vector<Family> sphere_shot_families(bool ray) {
                      return S.make(s, t, c, 0.0);
                    }
                    default: {  // zero-length segment, inside, on or outside
-                     const V s = c + (uni(next, 0, 2) * rho) * unit(next);
+                     const V u = unit(next);
+                     const V s = c + (uni(next, 0, 2) * rho) * u;
                      return S.make(s, s, c, rho);
                    }
                  }
@@ -89,7 +97,8 @@ std::vector<Family> sphere_shot_families(bool ray) {
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [S](Next& next, int k) {
                  const V c = uvec(next, -1, 1);
                  const double rho = uni(next, 0.25, 2);
-                 return scaled(S.make(uvec(next, -4, 4), uvec(next, -4, 4), c, rho), 10, k);
+                 const V t = uvec(next, -4, 4), s = uvec(next, -4, 4);
+                 return scaled(S.make(s, t, c, rho), 10, k);
                }});
   return f;
 }
@@ -111,27 +120,39 @@ Inputs touching_spheres(Next& next, double rel, V offset) {
 std::vector<Family> sphere_sphere_families() {
   std::vector<Family> f;
   f.push_back({"uniform", "centres in [-2,2]^3, radii in [0.1,2]", {0}, [](Next& next, int) {
-                 return two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2));
+                 const double rb = uni(next, 0.1, 2);
+                 const V b = uvec(next, -2, 2);
+                 const double ra = uni(next, 0.1, 2);
+                 return two_spheres(uvec(next, -2, 2), ra, b, rb);
                }});
   f.push_back({"near-touching", "centres (rhoA + rhoB)(1 +- 2^-k) apart", tangency_scales(), [](Next& next, int k) {
                  return touching_spheres(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
   f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades(),
                [](Next& next, int k) {
-                 return touching_spheres(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return touching_spheres(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "concentric, internally tangent along an axis, radius 0", {0}, [](Next& next, int) {
                  const V a = uvec(next, -1, 1);
                  const double ra = uni(next, 0.5, 2), rb = uni(next, 0.5, 2);
                  switch (pick(next, 3)) {
                    case 0: return two_spheres(a, ra, a, rb);
-                   case 1: return two_spheres(a, ra, a + axis(pick(next, 3), sign(next) * std::fabs(ra - rb)), rb);
-                   default: return two_spheres(a, 0.0, uvec(next, -2, 2), pick(next, 2) ? 0.0 : rb);
+                   case 1: {
+                     const double d = sign(next) * std::fabs(ra - rb);
+                     return two_spheres(a, ra, a + axis(pick(next, 3), d), rb);
+                   }
+                   default: {
+                     const double r = pick(next, 2) ? 0.0 : rb;
+                     return two_spheres(a, 0.0, uvec(next, -2, 2), r);
+                   }
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
-                 return scaled(two_spheres(uvec(next, -2, 2), uni(next, 0.1, 2), uvec(next, -2, 2), uni(next, 0.1, 2)),
-                               8, k);
+                 const double rb = uni(next, 0.1, 2);
+                 const V b = uvec(next, -2, 2);
+                 const double ra = uni(next, 0.1, 2);
+                 return scaled(two_spheres(uvec(next, -2, 2), ra, b, rb), 8, k);
                }});
   return f;
 }
@@ -169,14 +190,17 @@ std::vector<Family> sphere_box_families() {
   std::vector<Family> f;
   f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3; sphere centre in [-4,4]^3", {0},
                [](Next& next, int) {
-                 return sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2));
+                 const V bh = uvec(next, 0.1, 2), bc = uvec(next, -1, 1);
+                 const double rho = uni(next, 0.1, 2);
+                 return sphere_box(uvec(next, -4, 4), rho, bc, bh);
                }});
   f.push_back({"near-touching", "touching a face, edge or corner to within 2^-k radii", tangency_scales(),
                [](Next& next, int k) {
                  return touching_sphere_box(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
   f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
-                 return touching_sphere_box(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return touching_sphere_box(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "centre inside, on a face, at the box centre; zero extent; radius 0", {0},
                [](Next& next, int) {
@@ -195,8 +219,9 @@ std::vector<Family> sphere_box_families() {
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
-                 return scaled(sphere_box(uvec(next, -4, 4), uni(next, 0.1, 2), uvec(next, -1, 1), uvec(next, 0.1, 2)),
-                               10, k);
+                 const V bh = uvec(next, 0.1, 2), bc = uvec(next, -1, 1);
+                 const double rho = uni(next, 0.1, 2);
+                 return scaled(sphere_box(uvec(next, -4, 4), rho, bc, bh), 10, k);
                }});
   return f;
 }
@@ -223,24 +248,29 @@ Inputs touching_boxes(Next& next, double gap, V offset) {
 std::vector<Family> box_box_families() {
   std::vector<Family> f;
   f.push_back({"uniform", "centres in [-2,2]^3, extents in [0.1,2]^3", {0}, [](Next& next, int) {
-                 return two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2));
+                 const V h2 = uvec(next, 0.1, 2), c2 = uvec(next, -2, 2), h1 = uvec(next, 0.1, 2);
+                 return two_boxes(uvec(next, -2, 2), h1, c2, h2);
                }});
   f.push_back({"near-touching", "faces, edges or corners 2^-k (relative) apart or overlapping", tangency_scales(),
                [](Next& next, int k) { return touching_boxes(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}); }});
   f.push_back({"long-range", "touching to within 1e-9 relative, 10^k from the origin", decades(), [](Next& next, int k) {
-                 return touching_boxes(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return touching_boxes(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "zero extents, identical boxes, exactly touching", {0}, [](Next& next, int) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
                  switch (pick(next, 3)) {
-                   case 0: return two_boxes(c, V{0, 0, 0}, uvec(next, -2, 2), pick(next, 2) ? V{0, 0, 0} : h);
+                   case 0: {
+                     const V h2 = pick(next, 2) ? V{0, 0, 0} : h;
+                     return two_boxes(c, V{0, 0, 0}, uvec(next, -2, 2), h2);
+                   }
                    case 1: return two_boxes(c, h, c, h);
                    default: return touching_boxes(next, 0, V{0, 0, 0});
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
-                 return scaled(two_boxes(uvec(next, -2, 2), uvec(next, 0.1, 2), uvec(next, -2, 2), uvec(next, 0.1, 2)),
-                               12, k);
+                 const V h2 = uvec(next, 0.1, 2), c2 = uvec(next, -2, 2), h1 = uvec(next, 0.1, 2);
+                 return scaled(two_boxes(uvec(next, -2, 2), h1, c2, h2), 12, k);
                }});
   return f;
 }
@@ -270,7 +300,8 @@ std::vector<Family> box_shot_families(bool ray) {
   f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3, endpoints in [-4,4]^3", {0},
                [B](Next& next, int) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
-                 return B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h);
+                 const V t = uvec(next, -4, 4), s = uvec(next, -4, 4);
+                 return B.make(s, t, c, h);
                }});
   f.push_back({"long-range", "from 10^k box sizes away, aimed within 1.2 extents of the centre", decades(),
                [B](Next& next, int k) {
@@ -287,8 +318,14 @@ std::vector<Family> box_shot_families(bool ray) {
                  for (int j = 0; j < 3; ++j) {
                    const int i = (first + j) % 3;
                    const double hi = i == 0 ? h.x : (i == 1 ? h.y : h.z);
-                   aim = aim + axis(i, j < dims ? sign(next) * hi * (1 + sign(next) * std::ldexp(1.0, -k))
-                                                : uni(next, -hi, hi));
+                   double x;
+                   if (j < dims) {
+                     const double side = sign(next);
+                     x = side * hi * (1 + sign(next) * std::ldexp(1.0, -k));
+                   } else {
+                     x = uni(next, -hi, hi);
+                   }
+                   aim = aim + axis(i, x);
                  }
                  return B.aimed(next, c, h, aim, 4);
                }});
@@ -301,7 +338,8 @@ std::vector<Family> box_shot_families(bool ray) {
                  V s = c + uvec(next, -4, 4), t = c + uvec(next, -4, 4);
                  switch (pick(next, 3)) {
                    case 0: {  // parallel to face i: both endpoints share coordinate i
-                     const double off = hi * (1 + sign(next) * std::ldexp(1.0, -pick(next, 40)));
+                     const double sg_off = sign(next);
+                     const double off = hi * (1 + sg_off * std::ldexp(1.0, -pick(next, 40)));
                      const double ci = (i == 0 ? c.x : (i == 1 ? c.y : c.z)) + sg * off;
                      s = s - axis(i, dot(s, axis(i)) - ci);
                      t = t - axis(i, dot(t, axis(i)) - ci);
@@ -327,7 +365,8 @@ std::vector<Family> box_shot_families(bool ray) {
                    case 0: {
                      V hz = h;
                      if (pick(next, 2)) hz.x = 0; else hz.z = 0;
-                     return B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, hz);
+                     const V t = uvec(next, -4, 4), s = uvec(next, -4, 4);
+                     return B.make(s, t, c, hz);
                    }
                    case 1: {
                      const V s = c + V{uni(next, -h.x, h.x), uni(next, -h.y, h.y), uni(next, -h.z, h.z)};
@@ -341,7 +380,8 @@ std::vector<Family> box_shot_families(bool ray) {
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [B](Next& next, int k) {
                  const V c = uvec(next, -1, 1), h = uvec(next, 0.1, 2);
-                 return scaled(B.make(uvec(next, -4, 4), uvec(next, -4, 4), c, h), 12, k);
+                 const V t = uvec(next, -4, 4), s = uvec(next, -4, 4);
+                 return scaled(B.make(s, t, c, h), 12, k);
                }});
   return f;
 }

@@ -3,6 +3,9 @@
 // the fan of the vertex list is what the query answers), shots aimed at their edges and at the
 // fan's diagonals, spheres and boxes touching them, two polygons touching; degenerate vertex
 // lists (repeated, collinear, not convex, not planar) on the integer lattice.
+//
+// As in families.cpp, no expression takes two draws where C++ leaves their order open; the named
+// locals are drawn in the order the g++ builds took them, so seeds keep their cases.
 #include <cdref/fuzz/families.hpp>
 #include <cmath>
 
@@ -56,8 +59,13 @@ Inputs shot_poly(V s, V t, const std::vector<V>& v) {
   put_polygon(in, 6, v);
   return in;
 }
+// A convex polygon of radius 0.5 to 2 around a centre in [-w, w]^3.
+Poly random_polygon(Next& next, double w) {
+  const double r = uni(next, 0.5, 2);
+  return convex_polygon(next, uvec(next, -w, w), r);
+}
 Inputs shot_poly_uniform(Next& next, bool ray) {
-  const Poly p = convex_polygon(next, uvec(next, -1, 1), uni(next, 0.5, 2));
+  const Poly p = random_polygon(next, 1);
   const V s = uvec(next, -3, 3);
   return shot_poly(s, ray ? unit(next) : uvec(next, -3, 3), p.v);
 }
@@ -76,7 +84,10 @@ Inputs shot_poly_edge(Next& next, bool ray, double rel, V offset, int kind) {
   }
   V x = kind == 2 ? a : a + uni(next, 0.05, 0.95) * (b - a);
   x = x + (rel * size) * normalized(cross(b - a, p.n));
-  const V s = x + uni(next, 1, 4) * size * normalized(sign(next) * p.n + uni(next, -0.8, 0.8) * unit(next));
+  const V tilt = unit(next);
+  const double amount = uni(next, -0.8, 0.8);
+  const double side = sign(next);
+  const V s = x + uni(next, 1, 4) * size * normalized(side * p.n + amount * tilt);
   const V d = x - s;
   return shot_poly(s, ray ? d : s + uni(next, 1.1, 3) * d, p.v);
 }
@@ -89,8 +100,8 @@ Inputs poly_poly(const std::vector<V>& a, const std::vector<V>& b) {
   return in;
 }
 Inputs poly_poly_uniform(Next& next) {
-  return poly_poly(convex_polygon(next, uvec(next, -1, 1), uni(next, 0.5, 2)).v,
-                   convex_polygon(next, uvec(next, -1, 1), uni(next, 0.5, 2)).v);
+  const Poly b = random_polygon(next, 1);
+  return poly_poly(random_polygon(next, 1).v, b.v);
 }
 // B's vertex 0 at a point of A (inside, or on a fan diagonal) moved rel * size along A's normal,
 // B's other vertices on that side.
@@ -98,7 +109,8 @@ Inputs poly_poly_touching(Next& next, double rel, V offset) {
   const double size = uni(next, 0.5, 2);
   const Poly a = convex_polygon(next, offset, size);
   const int n = int(a.v.size());
-  const V x = a.v[0] + uni(next, 0.1, 0.9) * (a.v[1 + pick(next, n - 1)] - a.v[0]);
+  const V toward = a.v[1 + pick(next, n - 1)];
+  const V x = a.v[0] + uni(next, 0.1, 0.9) * (toward - a.v[0]);
   const double side = sign(next);
   Poly b = convex_polygon(next, x, size);
   // turn B so that it leaves x on one side of A: put x first, lift the others
@@ -121,8 +133,8 @@ Inputs poly_box(const std::vector<V>& v, V c, V h) {
   return in;
 }
 Inputs poly_box_uniform(Next& next) {
-  return poly_box(convex_polygon(next, uvec(next, -2, 2), uni(next, 0.5, 2)).v, uvec(next, -1, 1),
-                  uvec(next, 0.1, 1.5));
+  const V h = uvec(next, 0.1, 1.5), c = uvec(next, -1, 1);
+  return poly_box(random_polygon(next, 2).v, c, h);
 }
 // A polygon in a plane that touches the box at a corner (or along an edge, for a plane that
 // holds an edge direction), moved rel * size along its normal.
@@ -135,7 +147,8 @@ Inputs poly_box_touching(Next& next, double rel, V offset) {
   const V corner{c.x - (n.x > 0 ? h.x : -h.x), c.y - (n.y > 0 ? h.y : -h.y), c.z - (n.z > 0 ? h.z : -h.z)};
   const V at = corner - (rel * size) * n;  // rel > 0: off the box
   std::vector<V> v;
-  const V shift = uni(next, -0.5, 0.5) * size * perp(next, n);
+  const V across = perp(next, n);
+  const V shift = uni(next, -0.5, 0.5) * size * across;
   for (const V& q : p.v) v.push_back(at + q + shift);
   return poly_box(v, c, h);
 }
@@ -149,8 +162,9 @@ Inputs poly_sphere(const std::vector<V>& v, V c, double rho) {
   return in;
 }
 Inputs poly_sphere_uniform(Next& next) {
-  return poly_sphere(convex_polygon(next, uvec(next, -1, 1), uni(next, 0.5, 2)).v, uvec(next, -3, 3),
-                     uni(next, 0.1, 2));
+  const double rho = uni(next, 0.1, 2);
+  const V c = uvec(next, -3, 3);
+  return poly_sphere(random_polygon(next, 1).v, c, rho);
 }
 // The sphere touching the polygon at an interior point (along the normal) or at a vertex (along
 // a direction away from the polygon), at rho (1 + rel).
@@ -161,7 +175,8 @@ Inputs poly_sphere_touching(Next& next, double rel, V offset) {
   V x, dir;
   if (pick(next, 2) == 0) {
     const int n = int(p.v.size());
-    x = p.v[0] + uni(next, 0.1, 0.8) * (p.v[1 + pick(next, n - 2)] - p.v[0]) + 0.1 * (p.v[2] - p.v[1]);
+    const V toward = p.v[1 + pick(next, n - 2)];
+    x = p.v[0] + uni(next, 0.1, 0.8) * (toward - p.v[0]) + 0.1 * (p.v[2] - p.v[1]);
     dir = sign(next) * p.n;
   } else {
     const int i = pick(next, int(p.v.size()));
@@ -182,11 +197,14 @@ std::vector<Family> polygon_shot_family_list(bool ray) {
                "aimed at a point of an edge or of a fan diagonal v0 - v_i, or at a vertex, moved 2^-k of the size "
                "across it",
                tangency_scales(), [ray](Next& next, int k) {
-                 return shot_poly_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
+                 const int kind = pick(next, 3);
+                 return shot_poly_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "aimed at an edge, a diagonal or a vertex to within 1e-9, 10^k from the origin", decades(),
                [ray](Next& next, int k) {
-                 return shot_poly_edge(next, ray, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
+                 const int kind = pick(next, 3);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return shot_poly_edge(next, ray, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "vertex lists on the integer lattice: repeated, collinear, not convex, not planar", {0},
                [ray](Next& next, int) {
@@ -217,10 +235,14 @@ std::vector<Family> polygon_polygon_family_list() {
                }});
   f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades(),
                [](Next& next, int k) {
-                 return poly_poly_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return poly_poly_touching(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "degenerate vertex lists on the integer lattice, against each other", {0},
-               [](Next& next, int) { return poly_poly(degenerate_polygon(next), degenerate_polygon(next)); }});
+               [](Next& next, int) {
+                 const std::vector<V> b = degenerate_polygon(next);
+                 return poly_poly(degenerate_polygon(next), b);
+               }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  Inputs in = poly_poly_uniform(next);
                  const double na = in[0], nb = in[25];
@@ -241,13 +263,14 @@ std::vector<Family> polygon_box_family_list() {
                }});
   f.push_back({"long-range", "touching to within 1e-9 of the size, 10^k from the origin", decades(),
                [](Next& next, int k) {
-                 return poly_box_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return poly_box_touching(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "degenerate vertex lists on the integer lattice, boxes with integer corners", {0},
                [](Next& next, int) {
-                 return poly_box(degenerate_polygon(next),
-                                 V{double(pick(next, 5)) - 2, double(pick(next, 5)) - 2, double(pick(next, 5)) - 2},
-                                 V{double(pick(next, 3)), double(1 + pick(next, 2)), double(pick(next, 3))});
+                 const V h{double(pick(next, 3)), double(1 + pick(next, 2)), double(pick(next, 3))};
+                 const V c{double(pick(next, 5)) - 2, double(pick(next, 5)) - 2, double(pick(next, 5)) - 2};
+                 return poly_box(degenerate_polygon(next), c, h);
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(), [](Next& next, int k) {
                  Inputs in = poly_box_uniform(next);
@@ -268,7 +291,8 @@ std::vector<Family> polygon_sphere_family_list() {
                  return poly_sphere_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0});
                }});
   f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
-                 return poly_sphere_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next));
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return poly_sphere_touching(next, uni(next, -1e-9, 1e-9), offset);
                }});
   f.push_back({"degenerate", "degenerate vertex lists on the integer lattice; the centre on a vertex, radius 0 or 1",
                {0}, [](Next& next, int) {

@@ -8,6 +8,9 @@
 // edge, a corner, grazing, parallel to a face), the oriented family places it the same way
 // in the box's frame and moves the whole case with the box's rotation, so "2^-k from a face"
 // survives (up to the rotation's rounding).
+//
+// As in families.cpp, no expression takes two draws where C++ leaves their order open; the named
+// locals are drawn in the order the g++ builds took them, so seeds keep their cases.
 #include <cdref/fuzz/families.hpp>
 #include <cmath>
 
@@ -90,7 +93,8 @@ Inputs tri_box(V a, V b, V c, V bc, V bh) {
 }
 Inputs tri_box_uniform(Next& next) {
   const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
-  return tri_box(uvec(next, -3, 3), uvec(next, -3, 3), uvec(next, -3, 3), bc, bh);
+  const V c = uvec(next, -3, 3), b = uvec(next, -3, 3);
+  return tri_box(uvec(next, -3, 3), b, c, bc, bh);
 }
 // A triangle touching the box to within `rel` (of the box's size): a vertex near a face, the
 // triangle's plane near a corner, or an edge near an edge (the grazing case).
@@ -116,8 +120,10 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
       n = normalized(n);
       const V p = corner + (rel * size) * n;
       const V t1 = perp(next, n), t2 = cross(n, t1);
-      return tri_box(p + uni(next, 0.5, 3) * t1, p - uni(next, 0.5, 3) * t1 + uni(next, 0.5, 3) * t2,
-                     p - uni(next, 0.5, 3) * t1 - uni(next, 0.5, 3) * t2, bc, bh);
+      const double c2 = uni(next, 0.5, 3), c1 = uni(next, 0.5, 3);  // the third vertex's
+      const double b2 = uni(next, 0.5, 3), b1 = uni(next, 0.5, 3);  // the second's
+      const double a1 = uni(next, 0.5, 3);
+      return tri_box(p + a1 * t1, p - b1 * t1 + b2 * t2, p - c1 * t1 - c2 * t2, bc, bh);
     }
     default: {  // an edge passing a box edge (along axis i) at rel * size
       const int i = pick(next, 3);
@@ -128,7 +134,8 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
       const V e_dir = normalized(axis(i, 1) + uni(next, -2, 2) * cross(axis(i, 1), out));  // skew to the box edge
       const V q = p + (rel * size) * out;
       const double l0 = uni(next, 0.5, 3), l1 = uni(next, 0.5, 3);
-      return tri_box(q - l0 * e_dir, q + l1 * e_dir, q + uni(next, 0.5, 3) * out + uni(next, -1, 1) * e_dir, bc, bh);
+      const double along = uni(next, -1, 1), away = uni(next, 0.5, 3);
+      return tri_box(q - l0 * e_dir, q + l1 * e_dir, q + away * out + along * e_dir, bc, bh);
     }
   }
 }
@@ -152,7 +159,10 @@ Inputs tri_box_near_parallel(Next& next, int k) {
   const V t1 = normalized(cross(m, in_plane)), t2 = cross(m, t1);
   const V p = bc + axis(i, sg * at(bh, i)) + uni(next, -1e-9, 1e-9) * size * n;  // on the face plane
   V v[3];
-  for (V& x : v) x = p + uni(next, -2, 2) * t1 + uni(next, -2, 2) * t2;
+  for (V& x : v) {
+    const double b = uni(next, -2, 2);
+    x = p + uni(next, -2, 2) * t1 + b * t2;
+  }
   // lift the triangle so that its lowest vertex (towards the box) sits at p's height along n
   double low = dot(v[0] - p, n);
   for (const V& x : v) low = std::min(low, dot(x - p, n));
@@ -171,7 +181,8 @@ Inputs shot_near_parallel(Next& next, int k, bool ray) {
   V out = V{s.x, s.y, s.z} - axis(i, at(s, i));
   out = normalized(out);
   const V d = turned(axis(i, 1), normalized(cross(axis(i, 1), unit(next))), std::ldexp(1.0, -k));
-  const V mid = corner + uni(next, -1e-9, 1e-9) * size * out + axis(i, uni(next, -at(bh, i), at(bh, i)));
+  const V along = axis(i, uni(next, -at(bh, i), at(bh, i)));
+  const V mid = corner + uni(next, -1e-9, 1e-9) * size * out + along;
   const double l = uni(next, 1, 4) * size;
   Inputs in{};
   put(in, 0, mid - l * d);
@@ -196,14 +207,17 @@ std::vector<Family> triangle_box_family_list() {
                [](Next& next, int) { return tri_box_uniform(next); }});
   f.push_back({"near-touching", "a vertex near a face or the plane near a corner, 2^-k box sizes apart or in",
                tangency_scales(), [](Next& next, int k) {
-                 return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 2));
+                 const int kind = pick(next, 2);
+                 return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"grazing", "an edge passing a box edge 2^-k box sizes outside or inside", tangency_scales(),
                [](Next& next, int k) { return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 2); }});
   f.push_back({"near-parallel", "in a face's plane turned by 2^-k radians, within 1e-9 box sizes of the face",
                range(4, 52, 4), [](Next& next, int k) { return tri_box_near_parallel(next, k); }});
   f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades(), [](Next& next, int k) {
-                 return tri_box_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
+                 const int kind = pick(next, 3);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return tri_box_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), flat boxes, coplanar with a face", {0},
                [](Next& next, int) {
@@ -256,7 +270,8 @@ Inputs obbs_touching(Next& next, double rel, V offset, int kind, const Rot* rb =
   if (kind == 0)
     L = pick(next, 2) ? A.r.col[pick(next, 3)] : B.r.col[pick(next, 3)];
   else {
-    L = cross(A.r.col[pick(next, 3)], B.r.col[pick(next, 3)]);
+    const int j = pick(next, 3);
+    L = cross(A.r.col[pick(next, 3)], B.r.col[j]);
     if (dot(L, L) < 1e-20) L = A.r.col[0];
   }
   L = sign(next) * normalized(L);
@@ -291,11 +306,14 @@ std::vector<Family> obb_obb_family_list() {
   f.push_back({"near-parallel", "B's frame A's turned by 2^-k radians, placed face or edge to face 1e-9 apart or in",
                range(4, 52, 4), [](Next& next, int k) {
                  const Rot t = small_rotation(next, std::ldexp(1.0, -k));
-                 return obbs_touching(next, uni(next, -1e-9, 1e-9), V{0, 0, 0}, pick(next, 2), &t);
+                 const int kind = pick(next, 2);
+                 return obbs_touching(next, uni(next, -1e-9, 1e-9), V{0, 0, 0}, kind, &t);
                }});
   f.push_back({"long-range", "placed face or edge to face within 1e-9 of touching, 10^k from the origin", decades(),
                [](Next& next, int k) {
-                 return obbs_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 2));
+                 const int kind = pick(next, 2);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return obbs_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero extents, identical boxes, signed-permutation frames touching exactly", {0},
                [](Next& next, int) {

@@ -3,6 +3,9 @@
 // segment casts on a triangle (aimed at an edge or a vertex, grazing the plane, in the plane,
 // zero-area triangles); fans of triangles around a shared vertex or edge of a closed mesh (the
 // watertight family).
+//
+// As in families.cpp, no expression takes two draws where C++ leaves their order open; the named
+// locals are drawn in the order the g++ builds took them, so seeds keep their cases.
 #include <cdref/fuzz/families.hpp>
 #include <algorithm>
 #include <array>
@@ -30,7 +33,8 @@ Inputs sphere_tri(V c, double rho, V a, V b, V d) {
 Inputs sphere_tri_uniform(Next& next) {
   const V c = uvec(next, -3, 3);
   const double rho = uni(next, 0.1, 2);
-  return sphere_tri(c, rho, uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2));
+  const V d = uvec(next, -2, 2), b = uvec(next, -2, 2);
+  return sphere_tri(c, rho, uvec(next, -2, 2), b, d);
 }
 
 // A triangle and a sphere whose closest point x is an interior point of the triangle, of an
@@ -57,7 +61,8 @@ Inputs sphere_tri_touching(Next& next, double rel, V offset, int kind) {
       x = a + uni(next, 0.05, 0.95) * (b - a);
       V out = normalized(cross(b - a, n));
       if (dot(out, d - a) > 0) out = -1.0 * out;
-      dir = normalized(uni(next, 0.1, 1) * out + uni(next, -1, 1) * n);
+      const double up = uni(next, -1, 1);
+      dir = normalized(uni(next, 0.1, 1) * out + up * n);
       break;
     }
     default: {  // the vertex a: along a direction with (b - a) . dir <= 0 and (d - a) . dir <= 0
@@ -98,7 +103,8 @@ V random_triangle(Next& next, V offset, V& a, V& b, V& d) {
 }
 Inputs shot_tri_uniform(Next& next, bool ray) {
   const V s = uvec(next, -3, 3);
-  return shot_tri(s, ray ? unit(next) : uvec(next, -3, 3), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2));
+  const V d = uvec(next, -2, 2), b = uvec(next, -2, 2), a = uvec(next, -2, 2);
+  return shot_tri(s, ray ? unit(next) : uvec(next, -3, 3), a, b, d);
 }
 // Aimed at a point of an edge (kind 0) or at a vertex (kind 1), moved by rel (relative to the
 // triangle's size) across the edge in the plane (outward for rel > 0), from a source on either
@@ -116,7 +122,10 @@ Inputs shot_tri_edge(Next& next, bool ray, double rel, V offset, int kind) {
     out = normalized((a - b) + (a - d));
   }
   x = x + (rel * std::sqrt(dot(b - a, b - a))) * out;
-  const V s = x + uni(next, 1, 4) * normalized(sign(next) * n + uni(next, -0.8, 0.8) * unit(next));
+  const V tilt = unit(next);
+  const double amount = uni(next, -0.8, 0.8);
+  const double side = sign(next);
+  const V s = x + uni(next, 1, 4) * normalized(side * n + amount * tilt);
   return aimed(next, ray, s, x, a, b, d);
 }
 // Aimed at an interior point, the direction 2^-k radians from the triangle's plane.
@@ -284,7 +293,9 @@ Inputs shot_fan_watertight(Next& next, bool ray, int k) {
   }
   const double edge = size * 0.3;
   const double dist = pick(next, 2) == 0 ? uni(next, 1, 4) * edge : std::pow(10.0, uni(next, 3, 4)) * size;
-  V dir = normalized(sign(next) * normal + uni(next, -0.7, 0.7) * unit(next));
+  const V tilt = unit(next);
+  const double amount = uni(next, -0.7, 0.7);
+  const V dir = normalized(sign(next) * normal + amount * tilt);
   const V s = x + dist * dir;
   const V d = x - s;
   return shot_fan(s, ray ? d : x + uni(next, 0.1, 2) * d, f);
@@ -315,8 +326,9 @@ Inputs tri_tri(V a0, V a1, V a2, V b0, V b1, V b2) {
   return in;
 }
 Inputs tri_tri_uniform(Next& next) {
-  return tri_tri(uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2), uvec(next, -2, 2),
-                 uvec(next, -2, 2));
+  const V b2 = uvec(next, -2, 2), b1 = uvec(next, -2, 2), b0 = uvec(next, -2, 2);
+  const V a2 = uvec(next, -2, 2), a1 = uvec(next, -2, 2);
+  return tri_tri(uvec(next, -2, 2), a1, a2, b0, b1, b2);
 }
 // B's tip at a point x of A (interior, an edge or a vertex: kind 0, 1, 2) moved rel * size
 // along A's normal (rel > 0: off A, on the side where B lies), B's other vertices on that side.
@@ -334,7 +346,11 @@ Inputs tri_tri_touching(Next& next, double rel, V offset, int kind) {
     x = a;
   }
   const double side = sign(next), size = std::sqrt(dot(b - a, b - a));
-  auto up = [&] { return x + (side * uni(next, 0.3, 2)) * n + uni(next, 0.5, 2) * unit(next); };
+  auto up = [&] {
+    const V tilt = unit(next);
+    const double amount = uni(next, 0.5, 2);
+    return x + (side * uni(next, 0.3, 2)) * n + amount * tilt;
+  };
   V y1 = up(), y2 = up();
   // keep B's other vertices strictly on its side of A's plane
   if (side * dot(y1 - x, n) < 0.1) y1 = y1 + (side * (0.1 - side * dot(y1 - x, n))) * n;
@@ -348,15 +364,18 @@ Inputs tri_tri_parallel(Next& next, int k) {
   const V c = (1.0 / 3) * (a + b + d);
   const V tilt = std::ldexp(1.0, -k) * perp(next, n);
   auto lift = [&](V p) { return p + (dot(p - c, tilt) + uni(next, -1, 1) * std::ldexp(1.0, -k)) * n; };
-  const V off = uni(next, -1, 1) * (b - a) + uni(next, -1, 1) * (d - a);
-  return tri_tri(a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), lift(b + off + uvec(next, -0.5, 0.5)),
-                 lift(d + off + uvec(next, -0.5, 0.5)));
+  const double off2 = uni(next, -1, 1);
+  const V off = uni(next, -1, 1) * (b - a) + off2 * (d - a);
+  const V b2 = lift(d + off + uvec(next, -0.5, 0.5));
+  const V b1 = lift(b + off + uvec(next, -0.5, 0.5));
+  return tri_tri(a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), b1, b2);
 }
 // Two triangles exactly in one plane: a lattice triangle and one of points in its plane.
 Inputs tri_tri_coplanar(Next& next) {
   const LatticePlane pl(next);
   auto in_plane = [&] { return pl.point(next, 13, 4); };
-  return tri_tri(pl.a, pl.b, pl.d, in_plane(), in_plane(), in_plane());
+  const V b2 = in_plane(), b1 = in_plane();
+  return tri_tri(pl.a, pl.b, pl.d, in_plane(), b1, b2);
 }
 
 }  // namespace
@@ -368,11 +387,14 @@ std::vector<Family> triangle_triangle_family_list() {
                "B's tip 2^-k of A's size from A's face, an edge or a vertex (off it or through it), B's other "
                "vertices on one side",
                tangency_scales(), [](Next& next, int k) {
-                 return tri_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
+                 const int kind = pick(next, 3);
+                 return tri_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "touching to within 1e-9 of A's size, 10^k from the origin", decades(),
                [](Next& next, int k) {
-                 return tri_tri_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
+                 const int kind = pick(next, 3);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return tri_tri_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"near-parallel", "B tilted 2^-k from A's plane, within 2^-k of it, overlapping it in projection",
                tangency_scales(), [](Next& next, int k) { return tri_tri_parallel(next, k); }});
@@ -442,11 +464,14 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
                {0}, [ray](Next& next, int) { return shot_tri_uniform(next, ray); }});
   f.push_back({"near-edge", "aimed at a point of an edge or at a vertex, moved 2^-k of the edge's length across it",
                tangency_scales(), [ray](Next& next, int k) {
-                 return shot_tri_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 2));
+                 const int kind = pick(next, 2);
+                 return shot_tri_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "aimed at an edge or a vertex to within 1e-9, the triangle 10^k from the origin", decades(),
                [ray](Next& next, int k) {
-                 return shot_tri_edge(next, ray, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 2));
+                 const int kind = pick(next, 2);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return shot_tri_edge(next, ray, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"grazing", "aimed at an interior point, 2^-k radians from the triangle's plane", tangency_scales(),
                [ray](Next& next, int k) { return shot_tri_grazing(next, ray, k); }});
@@ -485,17 +510,23 @@ std::vector<Family> sphere_triangle_family_list() {
                [](Next& next, int) { return sphere_tri_uniform(next); }});
   f.push_back({"near-touching", "touching the face, an edge or a vertex, at rho (1 +- 2^-k) from it", tangency_scales(),
                [](Next& next, int k) {
-                 return sphere_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, pick(next, 3));
+                 const int kind = pick(next, 3);
+                 return sphere_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
-                 return sphere_tri_touching(next, uni(next, -1e-9, 1e-9), std::pow(10.0, k) * unit(next), pick(next, 3));
+                 const int kind = pick(next, 3);
+                 const V offset = std::pow(10.0, k) * unit(next);
+                 return sphere_tri_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), the centre on the triangle, radius 0, slivers",
                {0}, [](Next& next, int) {
                  const V a = uvec(next, -2, 2), b = uvec(next, -2, 2), d = uvec(next, -2, 2);
                  const double rho = uni(next, 0.25, 2);
                  switch (pick(next, 5)) {
-                   case 0: return sphere_tri(uvec(next, -3, 3), rho, a, b, a + uni(next, -1, 2) * (b - a));  // collinear
+                   case 0: {  // collinear
+                     const V e = a + uni(next, -1, 2) * (b - a);
+                     return sphere_tri(uvec(next, -3, 3), rho, a, b, e);
+                   }
                    case 1: return sphere_tri(uvec(next, -3, 3), rho, a, a, a);                              // a point
                    case 2: return sphere_tri(a + 0.3 * (b - a) + 0.3 * (d - a), rho, a, b, d);             // centre on it
                    case 3: return sphere_tri(uvec(next, -3, 3), 0.0, a, b, d);                              // radius 0
