@@ -6,6 +6,7 @@
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/sphere_cast_foot.hpp>
 #include <cdref/stable/ray_sphere.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 
@@ -59,6 +60,12 @@ struct SphereCast {
   }
   static bool oracle(const Shot<double>& a, const Sphere<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
+  }
+  // every output in the perpendicular foot's formulation, the book's at exact types, for the
+  // every-output oracle's double words (oracle/sphere_cast_foot.hpp)
+  template <class T>
+  static auto oracle_formulation(const Shot<T>& a, const Sphere<T>& b, unsigned w) {
+    return cdref::oracle::foot_cast(a, b, w);
   }
   static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Sphere<double>& b, bool* exact_used) {
     return cdref::oracle::enter(a, b, exact_used);
