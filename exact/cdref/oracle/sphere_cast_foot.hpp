@@ -32,63 +32,27 @@
 // the source itself (x = s), with no normal; a sphere of radius 0 has no normal.
 #pragma once
 
-#include <cdref/book/common.hpp>
+#include <cdref/book/ray_sphere.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 
 namespace cdref::oracle {
 
-namespace detail {
-
-template <class T>
-Cast<sqrt_t<T>> foot_cast_local(const Vec3<T>& s, const Vec3<T>& r, const Sphere<T>& sp, bool bounded, unsigned w) {
-  using S = sqrt_t<T>;
-  Cast<S> res;
-  const T& rho = sp.radius;
-  const T rr = r.squaredNorm();
-  const T rho2 = rho * rho;
-  if (rr == T(0)) {  // a zero-length segment: a point
-    res.hit = s.squaredNorm() <= rho2;
-    if (res.hit && (w & want_lambda_exit)) res.lambda_exit = S(1);
-    if (res.hit && (w & want_point)) res.point = lift<S>(Vec3<T>(s + sp.center));
-    return res;
+// The foot's sigma and entry point, for book::detail::cast_sphere_local (which takes every
+// decision and computes the roots as the book does).
+struct FootForm {
+  template <class T>
+  static T sigma(const Vec3<T>& s, const Vec3<T>& r, const T& rr, const T& /*sr*/, const T& rho2) {
+    return rr * rho2 - s.cross(r).squaredNorm();
   }
-  const T sr = s.dot(r);
-  const Vec3<T> q = s.cross(r);
-  const T sigma = rr * rho2 - q.squaredNorm();
-  if (!(sigma >= T(0))) return res;
-  const S root_sigma = root(sigma);
-  const S lambda1 = (S(-sr) - root_sigma) / S(rr);
-  const S num2 = S(-sr) + root_sigma;  // lambda_2 * |r|^2
-  if (bounded && !(lambda1 <= S(1))) return res;
-  if (!(num2 >= S(0))) return res;
-  res.hit = true;
-  res.enters = lambda1 >= S(0);
-  res.lambda_enter = res.enters ? lambda1 : S(0);
-  if (w & want_lambda_exit) {
-    const S lambda2 = num2 / S(rr);
-    res.lambda_exit = bounded ? book::detail::min_of(lambda2, S(1)) : lambda2;
+  template <class S, class T>
+  static Vec3<S> entry(const Vec3<T>& s, const Vec3<T>& r, const T& rr, const S& root_sigma, const S& /*lambda1*/) {
+    const Vec3<T> h = r.cross(Vec3<T>(s.cross(r)));  // |r|^2 times the foot of the perpendicular
+    const S inv = S(1) / S(rr);                      // one quotient, three products
+    return Vec3<S>((S(h[0]) - root_sigma * S(r[0])) * inv, (S(h[1]) - root_sigma * S(r[1])) * inv,
+                   (S(h[2]) - root_sigma * S(r[2])) * inv);
   }
-  if (!(w & (want_point | want_normal))) return res;
-  if (!res.enters) {  // entering at 0: the source itself
-    if (w & want_point) res.point = lift<S>(Vec3<T>(s + sp.center));
-    return res;
-  }
-  const Vec3<T> h = r.cross(q);  // |r|^2 times the foot of the perpendicular
-  Vec3<S> ax;                    // |r|^2 x
-  for (int i = 0; i < 3; ++i) ax[i] = S(h[i]) - root_sigma * S(r[i]);
-  if (w & want_point) {
-    const S inv = S(1) / S(rr);  // one quotient, three products (exact types: the same values)
-    for (int i = 0; i < 3; ++i) res.point[i] = ax[i] * inv + S(sp.center[i]);
-  }
-  if ((w & want_normal) && rho != T(0)) {
-    const S inv = S(1) / S(T(rr * rho));
-    for (int i = 0; i < 3; ++i) res.normal[i] = ax[i] * inv;
-  }
-  return res;
-}
-
-}  // namespace detail
+};
 
 // The same signatures, checks and results as book::cast.
 template <class T>
@@ -97,14 +61,14 @@ Cast<sqrt_t<T>> foot_cast(const Segment<T>& seg, const Sphere<T>& sp, unsigned w
   check(sp, "sphere");
   const Vec3<T> s = seg.source - sp.center;
   const Vec3<T> t = seg.target - sp.center;
-  return detail::foot_cast_local(s, Vec3<T>(t - s), sp, true, w);
+  return book::detail::cast_sphere_local<T, FootForm>(s, Vec3<T>(t - s), sp, true, w);
 }
 
 template <class T>
 Cast<sqrt_t<T>> foot_cast(const Ray<T>& ray, const Sphere<T>& sp, unsigned w = want_cast) {
   check(ray, "ray");
   check(sp, "sphere");
-  return detail::foot_cast_local(Vec3<T>(ray.source - sp.center), ray.direction, sp, false, w);
+  return book::detail::cast_sphere_local<T, FootForm>(Vec3<T>(ray.source - sp.center), ray.direction, sp, false, w);
 }
 
 }  // namespace cdref::oracle

@@ -56,23 +56,37 @@ bool hit_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const T& rho, bool bou
   return exit_ahead && (sr + rr >= T(0) || t.squaredNorm() <= rho2);  // lambda_1 <= 1
 }
 
-template <class T>
+// The chapter's formulation of sigma and of the entry point x = s + lambda_1 r. The cast below
+// takes it as a parameter: the every-output oracle runs the same cast with the perpendicular
+// foot's formulation (exact/cdref/oracle/sphere_cast_foot.hpp), equal to this one at exact types.
+struct ChapterForm {
+  template <class T>
+  static T sigma(const Vec3<T>& s, const Vec3<T>& /*r*/, const T& rr, const T& sr, const T& rho2) {
+    return sr * sr - rr * (s.squaredNorm() - rho2);
+  }
+  template <class S, class T>
+  static Vec3<S> entry(const Vec3<T>& s, const Vec3<T>& r, const T& /*rr*/, const S& /*root_sigma*/,
+                       const S& lambda1) {
+    return affine(s, lambda1, r);
+  }
+};
+
+template <class T, class Form = ChapterForm>
 Cast<sqrt_t<T>> cast_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const Sphere<T>& sp, bool bounded,
                                   unsigned w) {
   using S = sqrt_t<T>;
   Cast<S> res;
   const T& rho = sp.radius;
   const T rr = r.squaredNorm();
-  const T ss = s.squaredNorm();
   const T rho2 = rho * rho;
   if (rr == T(0)) {  // a zero-length segment: a point
-    res.hit = ss <= rho2;
+    res.hit = s.squaredNorm() <= rho2;
     if (res.hit && (w & want_lambda_exit)) res.lambda_exit = S(1);
     if (res.hit && (w & want_point)) res.point = lift<S>(Vec3<T>(s + sp.center));
     return res;
   }
   const T sr = s.dot(r);
-  const T sigma = sr * sr - rr * (ss - rho2);
+  const T sigma = Form::sigma(s, r, rr, sr, rho2);
   if (!(sigma >= T(0))) return res;
   const S root_sigma = root(sigma);
   const S lambda1 = (S(-sr) - root_sigma) / S(rr);
@@ -87,7 +101,8 @@ Cast<sqrt_t<T>> cast_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const Sphe
     res.lambda_exit = bounded ? min_of(lambda2, S(1)) : lambda2;
   }
   if (w & (want_point | want_normal)) {
-    const Vec3<S> x = affine(s, res.lambda_enter, r);
+    // entering at 0 (the source inside): x = s + 0 r = s
+    const Vec3<S> x = res.enters ? Form::entry(s, r, rr, root_sigma, lambda1) : lift<S>(s);
     if (w & want_point) res.point = Vec3<S>(x + lift<S>(sp.center));
     if ((w & want_normal) && res.enters && rho != T(0)) res.normal = x / S(rho);
   }
