@@ -1,7 +1,8 @@
 // cdref/oracle/sphere_cast_foot.hpp - Algorithm 3.1's every output in the perpendicular foot's
 // formulation: equal to book::cast at every exact type, and the one the every-output oracle
 // evaluates on oracle::Bounded2 (double words with a rigorous error bound, certain or it throws)
-// before the exact path (fuzz/cdref/fuzz/spec.hpp, oracle_truth_of).
+// where the book's own formulation is not certain there, before the exact path
+// (fuzz/cdref/fuzz/spec.hpp, oracle_truth_of).
 //
 // Why another formulation. The book's (book/ray_sphere.hpp), with s = source - centre and r the
 // direction (target - source for a segment), a = |r|^2, b = s.r, c = |s|^2 - rho^2:
