@@ -765,16 +765,30 @@ bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
 
 // The cast's classification with its certificate (decision.hpp; bound in the header): the
 // cast's own computation and a bound on each decisive sign.
+// decide_words: the double words alone, on inputs already checked and where the filters have
+// already left the case open (the classification oracle's second stage: there the filters ran
+// four times and the checks three, a third of its 2^-52-from-tangency path).
+template <class F>
+Decision decide_words(const Segment<F>& seg, const Sphere<F>& sp) {
+  Pair<F> s[3], r[3];
+  detail::diff_pairs(seg.source, sp.center, s);
+  detail::diff_pairs(seg.target, seg.source, r);
+  return within_range(detail::decide_cast(s, r, sp, true), seg, sp);
+}
+template <class F>
+Decision decide_words(const Ray<F>& ray, const Sphere<F>& sp) {
+  Pair<F> s[3];
+  detail::diff_pairs(ray.source, sp.center, s);
+  const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
+  return within_range(detail::decide_cast(s, r, sp, false), ray, sp);
+}
 template <class F>
 [[gnu::noinline]] Decision decide_checked(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
   if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
-  Pair<F> s[3], r[3];
-  detail::diff_pairs(seg.source, sp.center, s);
-  detail::diff_pairs(seg.target, seg.source, r);
-  return within_range(detail::decide_cast(s, r, sp, true), seg, sp);
+  return decide_words(seg, sp);
 }
 template <class F>
 Decision decide(const Segment<F>& seg, const Sphere<F>& sp) {
@@ -789,10 +803,7 @@ template <class F>
   check(sp, "sphere");
   if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(ray), detail::widened(sp));
   if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) return Decision{f > 0, true};
-  Pair<F> s[3];
-  detail::diff_pairs(ray.source, sp.center, s);
-  const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
-  return within_range(detail::decide_cast(s, r, sp, false), ray, sp);
+  return decide_words(ray, sp);
 }
 template <class F>
 Decision decide(const Ray<F>& ray, const Sphere<F>& sp) {
