@@ -428,9 +428,25 @@ Answer formulation_at(const Inputs& in) {
   r.pred = r.cls;
   return r;
 }
+// Where the spec also has `oracle_formulation_first(in)`, the cases it names try the other
+// formulation first: those where the truth's own is seldom certain, whose failed attempt (an
+// evaluation, then the `uncertain` it throws) costs more than the other formulation's.
+template <class Spec>
+constexpr bool has_formulation_first = requires(const Inputs& in) {
+  { Spec::oracle_formulation_first(in) } -> std::same_as<bool>;
+};
 template <class Spec, class T, class F>
 Answer oracle_formulation_at(const Inputs& in) {
   if constexpr (has_oracle_formulation<Spec>) {
+    if constexpr (has_formulation_first<Spec>) {
+      if (Spec::oracle_formulation_first(in)) {
+        try {
+          return formulation_at<Spec, T, F>(in);
+        } catch (const oracle::uncertain&) {
+        }
+        return truth_at<Spec, T, F>(in, true, true);
+      }
+    }
     try {
       return truth_at<Spec, T, F>(in, true, true);
     } catch (const oracle::uncertain&) {
