@@ -72,7 +72,9 @@
 // 16 eta, nx = ||x^||_1 >= |x^|, E_Q dot2_cert's bound. Where that leaves the sign open (a
 // band about u |x|^2 wide near tangency), the sphere casts' certificate on double words
 // decides (ray_sphere.hpp, decide_cast: the same exact answer, a band u^2 wide); intersect()
-// and proximity() classify as decide_closest() does. (decide(Segment, Sphere) in
+// and proximity() classify as decide_closest() does. (decide_closest() past the filter tries
+// decide_cast first and the closest point only where that is uncertain: the same answers and
+// certificates, the u-wide evaluation skipped where the u^2-wide one decides.) (decide(Segment, Sphere) in
 // ray_sphere.hpp certifies the cast's formulation; the two classifications are the same
 // exact answer, Algorithms 3.1 and 3.2 agreeing at exact types, but their float values
 // may differ where neither is certain, hence two names.)
@@ -354,6 +356,17 @@ template <class F>
   // (at F = float every entry point runs at double on the same inputs: decision.hpp, widened)
   if constexpr (std::is_same_v<F, float>) return decide_closest_checked(detail::widened(seg), detail::widened(sp));
   if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) return Decision{f > 0, true};
+  // The sphere casts' double words before the closest point: where they are certain their value
+  // is the exact answer, which is what closest_decision() returns wherever it is certain itself,
+  // so the answer and its certainty are unchanged; past the filter (near tangency, or out of its
+  // range) they are nearly always certain, and the closest point's double words, whose band is
+  // u wide, are then not computed. Standalone, 4000 cases each (2-core AMD EPYC, 2026-11-28):
+  // 2^-52 from tangency 738 -> 278 ns a case, 10^12 radii within 1e-9 of tangency 495 -> 267
+  // ns, every answer and certificate the same.
+  Pair<F> s[3], r[3];
+  detail::diff_pairs(seg.source, sp.center, s);
+  detail::diff_pairs(seg.target, seg.source, r);
+  if (const Decision words = within_range(detail::decide_cast(s, r, sp, true), seg, sp); words.certain) return words;
   const auto L = detail::seg_sph_local(seg, sp);
   return detail::closest_decision(seg, sp, L, detail::seg_sph_solve(L));
 }
