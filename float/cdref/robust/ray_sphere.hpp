@@ -763,11 +763,9 @@ bool hit(const Ray<F>& ray, const Sphere<F>& sp) {
   return hit_checked(ray, sp);
 }
 
-// The cast's classification with its certificate (decision.hpp; bound in the header): the
-// cast's own computation and a bound on each decisive sign.
 // decide_words: the double words alone, on inputs already checked and where the filters have
-// already left the case open (the classification oracle's second stage: there the filters ran
-// four times and the checks three, a third of its 2^-52-from-tangency path).
+// already left the case open (the classification oracle's second stage: through decide() the
+// filters ran there four times and the checks twice, a third of its 2^-52-from-tangency path).
 template <class F>
 Decision decide_words(const Segment<F>& seg, const Sphere<F>& sp) {
   Pair<F> s[3], r[3];
@@ -782,6 +780,8 @@ Decision decide_words(const Ray<F>& ray, const Sphere<F>& sp) {
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
   return within_range(detail::decide_cast(s, r, sp, false), ray, sp);
 }
+// The cast's classification with its certificate (decision.hpp; bound in the header): the
+// cast's own computation and a bound on each decisive sign.
 template <class F>
 [[gnu::noinline]] Decision decide_checked(const Segment<F>& seg, const Sphere<F>& sp) {
   check(seg, "segment");
