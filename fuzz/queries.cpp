@@ -71,13 +71,20 @@ Inputs float_inputs(Query q, const Inputs& in) {
 
 const std::vector<Implementation>& builtin_implementations() {
   static const std::vector<Implementation> impls = [] {
+    // the book at float, double, long double: the full query, its classification alone, and
+    // that over a block of cases
+    const auto book = [](const char* name, int precision) {
+      return Implementation{name, precision, [precision](Query q, const Inputs& in) { return info(q).book(precision, in); },
+                            {},
+                            [precision](Query q, const Inputs& in) { return info(q).book_classification(precision, in); },
+                            [precision](Query q, const Inputs* in, std::size_t n, Verdict* out) {
+                              info(q).book_classification_block(precision, in, n, out);
+                            }};
+    };
     std::vector<Implementation> v = {
-        {"book-float", 24, [](Query q, const Inputs& in) { return info(q).book(24, in); }, {},
-         [](Query q, const Inputs& in) { return info(q).book_classification(24, in); }},
-        {"book-double", 53, [](Query q, const Inputs& in) { return info(q).book(53, in); }, {},
-         [](Query q, const Inputs& in) { return info(q).book_classification(53, in); }},
-        {"book-long-double", 64, [](Query q, const Inputs& in) { return info(q).book(64, in); }, {},
-         [](Query q, const Inputs& in) { return info(q).book_classification(64, in); }},
+        book("book-float", 24),
+        book("book-double", 53),
+        book("book-long-double", 64),
         {"robust-float", 24, [](Query q, const Inputs& in) { return info(q).robust(24, in); }},
         {"robust-double", 53, [](Query q, const Inputs& in) { return info(q).robust(53, in); }},
         {"robust-long-double", 64, [](Query q, const Inputs& in) { return info(q).robust(64, in); }},
@@ -87,7 +94,10 @@ const std::vector<Implementation>& builtin_implementations() {
       const int precision = tier.second;  // (clang 14 cannot capture a structured binding)
       Implementation im{tier.first, precision,
                         [precision](Query q, const Inputs& in) { return info(q).stable(precision, in); }, {},
-                        [precision](Query q, const Inputs& in) { return info(q).stable_classification(precision, in); }};
+                        [precision](Query q, const Inputs& in) { return info(q).stable_classification(precision, in); },
+                        [precision](Query q, const Inputs* in, std::size_t n, Verdict* out) {
+                          info(q).stable_classification_block(precision, in, n, out);
+                        }};
       for (Query q : all_queries())
         if (info(q).stable) im.queries.push_back(q);
       if (!im.queries.empty()) v.push_back(std::move(im));

@@ -87,7 +87,8 @@ struct SphereFilter {
   struct Bounded {
     double P, B;
   };
-  static Bounded sigma_bounded(const double* s, const double* r, double ss, double rr, double rho2) {
+  [[gnu::always_inline]] static Bounded sigma_bounded(const double* s, const double* r, double ss, double rr,
+                                                      double rho2) {
     double c[3], cc = 0;
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -200,7 +201,7 @@ template <bool Segment>
     hit = hit & ((tr > Bt) | (t_in & (dt < -Bu)));
     miss = miss | (sg_pos & (tr < -Bt) & t_in & (dt > Bu));
   }
-  return hit | miss ? int(hit) : unknown;
+  return (hit | miss) ? int(hit) : unknown;
 }
 // Flattened and specialized: with sigma() and the logic called out of line, the segment's
 // filter (the cast's and Algorithm 3.2's) took twice as long (Algorithm 3.2's oracle 34.1 ->

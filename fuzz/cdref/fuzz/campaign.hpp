@@ -61,6 +61,17 @@ struct Answer {
   std::uint64_t given = ~std::uint64_t(0);
 };
 
+// A classification alone, as an evaluation over a block of cases gives it (QueryInfo's
+// *_block members, Implementation::classify_block): the fields of Answer a campaign grading
+// the classifications reads, and whether the evaluation refused the inputs (invalid_input).
+struct Verdict {
+  bool cls = false;
+  bool pred = false;
+  bool certified = false;
+  bool certain = false;
+  bool refused = false;
+};
+
 // ---- families ----
 // The stream of random words a case is made from: word n of case key k is SplitMix64's
 // mixing function of k + n * 0x632be59bd9b4e019 (a counter-based generator: no state but the
@@ -115,6 +126,9 @@ struct Implementation {
   // The classification and predicate alone, no values (a campaign with --outputs cls calls
   // it); empty: run.
   std::function<Answer(Query, const Inputs&)> classify{};
+  // The same over a block of cases, out[k] for in[k] (a campaign grading the classifications
+  // calls it once per block); empty: classify (or run) case by case.
+  std::function<void(Query, const Inputs* in, std::size_t n, Verdict* out)> classify_block{};
   bool supports(Query q) const {
     return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
   }
@@ -147,6 +161,11 @@ struct QueryInfo {
   // the predicate, no values: what a campaign grading the classification alone runs.
   std::function<Answer(int precision, const Inputs&)> book_classification;
   std::function<Answer(int precision, const Inputs&)> stable_classification;  // empty without a stable tier
+  // The two above over a block of cases, out[k] for in[k], a refusal as out[k].refused: one
+  // call per block and the per-case work inlined, where a call per case cost as much as the
+  // evaluation itself (a classification-only campaign calls these).
+  std::function<void(int precision, const Inputs* in, std::size_t n, Verdict* out)> book_classification_block;
+  std::function<void(int precision, const Inputs* in, std::size_t n, Verdict* out)> stable_classification_block;
   // The exact answer, each value rounded correctly to the precision.
   std::function<Answer(const Inputs&, int precision)> truth;
   // The exact classification alone (cls and pred; no values): the truth's formulation at
@@ -158,6 +177,8 @@ struct QueryInfo {
   std::function<Answer(const Inputs&, int precision, bool* exact_used)> oracle_truth;
   // The exact classification alone (cls = pred), from oracle::classify.
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_classify;
+  // ... over a block of cases, out[k] for in[k] (cls = pred; a refusal as out[k].refused).
+  std::function<void(const Inputs* in, std::size_t n, Verdict* out)> oracle_classify_block;
   // A cast's classification and lambda_enter alone (cls = pred, v[0]; the other values 0),
   // lambda_enter correctly rounded to double (0 on a miss): oracle::enter (exact/cdref/oracle/
   // enter.hpp) for the sphere, box, oriented-box, triangle, fan and polygon casts (a cast whose

@@ -244,6 +244,11 @@ QueryInfo describe() {
     if (precision == 64) return book_at<Spec, long double, long double>(in, false);
     return book_at<Spec, double, double>(in, false);
   };
+  qi.book_classification_block = [](int precision, const Inputs* in, std::size_t n, Verdict* out) {
+    if (precision == 24) return book_classification_block<Spec, float>(in, n, out);
+    if (precision == 64) return book_classification_block<Spec, long double>(in, n, out);
+    return book_classification_block<Spec, double>(in, n, out);
+  };
   qi.robust = [](int precision, const Inputs& in) {
     if (precision == 24) return robust_at<Spec, float>(in);
     if (precision == 64) return robust_at<Spec, long double>(in);
@@ -257,6 +262,11 @@ QueryInfo describe() {
     qi.stable_classification = [](int precision, const Inputs& in) {
       return precision == 24 ? stable_at<Spec, float>(in, false) : stable_at<Spec, double>(in, false);
     };
+  if constexpr (has_stable<Spec>)
+    qi.stable_classification_block = [](int precision, const Inputs* in, std::size_t n, Verdict* out) {
+      return precision == 24 ? stable_classification_block<Spec, float>(in, n, out)
+                             : stable_classification_block<Spec, double>(in, n, out);
+    };
   qi.book_exact = [](Exact t, const Inputs& in) {
     return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)
                             : book_at<Spec, CGAL::Epeck::FT, double>(in, true);
@@ -265,6 +275,7 @@ QueryInfo describe() {
   qi.truth_classification = [](const Inputs& in) { return truth_at<Spec, CGAL::Gmpq, double>(in, false); };
   qi.oracle_truth = oracle_truth_of<Spec>;
   qi.oracle_classify = oracle_classify_of<Spec>;
+  qi.oracle_classify_block = oracle_classify_block_of<Spec>;
   if constexpr (is_cast<Spec>)
     qi.oracle_enter = [](const Inputs& in, bool* exact_used) {
       const oracle::Entry e = oracle_enter_of<Spec>(in, exact_used);
