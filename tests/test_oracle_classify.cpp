@@ -1366,6 +1366,58 @@ TEST_CASE("the sphere filter's sigma decides only with the exact sign, its crude
   CHECK(left > 100);
 }
 
+TEST_CASE("sigma on double words decides only with the exact sign, within about u^2 of tangency",
+          "[oracle-classify][sphere-cast]") {
+  // The sphere casts' and Algorithm 3.2's second stage (staged::sigma_words, classify.hpp).
+  // Lines at d = rho (1 + delta) from the centre, delta = +-2^-j for j up to 60, the source
+  // displaced along the line by up to 2^59 radii (so that the cross product's terms are up to
+  // 2^59 times the result: its cancellation is what the bound must cover), radii from 2^-20 to
+  // 2^20, rays and segments (the segment's direction a double-word difference): wherever it
+  // decides, its sign is the exact one (CGAL::Gmpq); most cases are decided, some left (the
+  // closest within u^2 |s| |r| of tangency).
+  using Qx = CGAL::Gmpq;
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int decided = 0, left = 0, wrong = 0;
+  for (int n = 0; n < 40000; ++n) {
+    const bool segment = n % 2;
+    const double rho = std::ldexp(0.75 + unit(rng) / 4, int(rng() % 41) - 20);
+    const Vec3<double> c = V(unit(rng), unit(rng), unit(rng)) * (4 * rho), r = V(unit(rng), unit(rng), unit(rng));
+    Vec3<double> w = V(unit(rng), unit(rng), unit(rng));
+    w -= (w.dot(r) / r.squaredNorm()) * r;
+    if (!(w.squaredNorm() > 1e-6)) continue;
+    const double d = rho * (1 + std::ldexp(unit(rng), -int(rng() % 61)));
+    const double along = std::ldexp(unit(rng), int(rng() % 60)) * rho;
+    const Vec3<double> src = c + (d / w.norm()) * w + along * r;
+    const Vec3<double> to = segment ? Vec3<double>(src + (8 * unit(rng)) * r) : r;
+    const staged::SphereWords words(src, to, Sphere<double>{c, rho}, segment);
+    const int got = staged::sigma_words(words.s, words.r, words.rho);
+    if (got == staged::unknown) {
+      ++left;
+      continue;
+    }
+    ++decided;
+    Qx sq[3], rq[3];
+    for (int i = 0; i < 3; ++i) {
+      sq[i] = Qx(src[i]) - Qx(c[i]);
+      rq[i] = segment ? Qx(to[i]) - Qx(src[i]) : Qx(to[i]);
+    }
+    Qx cc = 0, rr = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const Qx ck = sq[i] * rq[j] - sq[j] * rq[i];
+      cc += ck * ck;
+      rr += rq[k] * rq[k];
+    }
+    const int exact = CGAL::sign(rr * Qx(rho) * Qx(rho) - cc);
+    if (got != exact) ++wrong;
+  }
+  INFO("decided " << decided << ", left " << left);
+  CHECK(wrong == 0);
+  CHECK(decided > 30000);
+  CHECK(left > 100);
+}
+
 TEST_CASE("sphere-triangle's oracle refuses what check() refuses, in check()'s order", "[oracle-classify][errors]") {
   // Each bad value in each of the 13 slots (centre, radius, three vertices) gets check()'s
   // message, and the valid extremes (the largest doubles, subnormals, zeros) the book's answer

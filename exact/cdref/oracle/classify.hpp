@@ -463,6 +463,106 @@ struct SphereStaged {
   int sigma() const { const int s = f.sigma(); return s != unknown ? s : x.sigma(); }
 };
 
+// sigma = |r|^2 rho^2 - |s x r|^2 on double words: the sphere casts' and Algorithm 3.2's second
+// stage, where the filter leaves sigma's sign open (within about u |s|^2 |r|^2 of 0, the line
+// near tangency). Inputs: s = source - centre and r (target - source, or the direction) as exact
+// pairs hi + lo (two_sum), and rho. sigma = sum_k (D_k^2 - C_k^2) with D_k = r_k rho and
+// C_k = s_i r_j - s_j r_i ((i, j) = (k+1, k+2) mod 3), each taken as a double word X + L
+// (|L| <= u |X|, from two_sum) within eps of its exact value:
+//   C_k: P = s_i.hi r_j.hi and Q = s_j.hi r_i.hi exactly (two_prod); (x, y) = two_sum(P.hi,
+//     -Q.hi); m = (s_i.hi r_j.lo + s_i.lo r_j.hi) - (s_j.hi r_i.lo + s_j.lo r_i.hi);
+//     lo = ((y + P.lo) - Q.lo) + m; (X, L) = two_sum(x, lo). With M = |P.hi| + |Q.hi|
+//     (|s.lo| <= u |s.hi|, |r.lo| <= u |r.hi|): |y|, |P.lo| + |Q.lo| <= u M (1 + u), |m| <=
+//     2u M (1 + 4u), so lo's three roundings are at most 3u 4.1u M; m's four products and three
+//     sums err by at most 8.1 u^2 M + 4 eta; the terms s.lo r.lo left out are at most u^2 M:
+//     eps_C <= 21.4 u^2 M + 4 eta, taken as 32 u^2 M + 8 eta.
+//   D_k: (a, b) = two_prod(r_k.hi, rho) exactly; lo = fl(b + fl(r_k.lo rho)); (X, L) =
+//     two_sum(a, lo): eps_D <= u |r.lo rho| + eta + u |lo| <= 2.1 u^2 |a| + 2 eta, taken as
+//     4 u^2 |a| + 4 eta.
+//   A square: v^2 - (X + L)^2 <= eps (2 (|X| + |L|) + eps); (X + L)^2 = Z.hi + Z.lo + 2 X L + L^2
+//     with Z = two_prod(X, X) (exact, or within eta where X^2 < 2^-968), fl(2 X L) within
+//     2u^2 X^2 + eta, L^2 <= u^2 X^2 left out: its error is at most eps (2 (|X| + |L|) + eps) +
+//     3u^2 X^2 + 3 eta.
+// The six Z.hi are summed exactly (a chain of two_sum, its five errors kept), the 17 small terms
+// (six Z.lo, six 2 X L, five errors) in double, within 16u (1 + 16u) of the sum of their
+// magnitudes; then V = fl(H + that sum) is within u |V| of H + it. The sign of V is sigma's when
+// |V| (1 - u) exceeds the sum of every bound above, computed with a factor 1 + 64u for the
+// rounding of the bounds themselves (a few dozen nonnegative terms, each rounded a few times).
+// Range: every nonzero s.hi, r.hi and rho in [2^-300, 2^200] (the inputs scaled() leaves are
+// in [2^-180, 2^100], their differences above 2^-233), so each two_prod of two of them is exact
+// and no square overflows; otherwise, and on a non-finite bound, unknown.
+inline int sigma_words(const robust::Pair<double> (&s)[3], const robust::Pair<double> (&r)[3], double rho) {
+  using std::fabs;
+  using P2 = robust::Pair<double>;
+  constexpr double u = 0x1p-53, eta = 0x1p-1074;
+  const auto in_range = [](double x) { return x == 0 || (fabs(x) >= 0x1p-300 && fabs(x) <= 0x1p200); };
+  bool ok = in_range(rho);
+  for (int i = 0; i < 3; ++i) ok = ok & in_range(s[i].hi) & in_range(r[i].hi);
+  if (!ok) return unknown;
+  const auto prod = [](double a, double b) { return robust::two_prod_split(a, b); };
+  double high[6], small[17], err = 0;
+  int ns = 0;
+  // v^2 (sign +1) or -v^2 (sign -1) for v within eps of X + L
+  const auto square = [&](int k, double X, double L, double eps, double sign) {
+    const P2 Z = prod(X, X);
+    high[k] = sign * Z.hi;
+    small[ns++] = sign * Z.lo;
+    small[ns++] = sign * ((2 * X) * L);
+    err += eps * (2 * (fabs(X) + fabs(L)) + eps) + 3 * u * u * (X * X) + 3 * eta;
+  };
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const P2 Pk = prod(s[i].hi, r[j].hi), Qk = prod(s[j].hi, r[i].hi);
+    const P2 xy = robust::two_sum(Pk.hi, -Qk.hi);
+    const double m = (s[i].hi * r[j].lo + s[i].lo * r[j].hi) - (s[j].hi * r[i].lo + s[j].lo * r[i].hi);
+    const P2 C = robust::two_sum(xy.hi, ((xy.lo + Pk.lo) - Qk.lo) + m);
+    square(k, C.hi, C.lo, 32 * u * u * (fabs(Pk.hi) + fabs(Qk.hi)) + 8 * eta, -1);
+    const P2 ab = prod(r[k].hi, rho);
+    const P2 D = robust::two_sum(ab.hi, ab.lo + r[k].lo * rho);
+    square(3 + k, D.hi, D.lo, 4 * u * u * fabs(ab.hi) + 4 * eta, +1);
+  }
+  double H = high[0];
+  for (int k = 1; k < 6; ++k) {
+    const P2 t = robust::two_sum(H, high[k]);
+    H = t.hi;
+    small[ns++] = t.lo;
+  }
+  double lows = 0, mags = 0;
+  for (int k = 0; k < ns; ++k) {
+    lows += small[k];
+    mags += fabs(small[k]);
+  }
+  const double V = H + lows;
+  const double E = (err + 16 * u * (1 + 16 * u) * mags) * (1 + 64 * u);
+  if (!std::isfinite(V) || !std::isfinite(E)) return unknown;
+  if (fabs(V) * (1 - u) > E) return V > 0 ? 1 : -1;
+  return unknown;
+}
+
+// The filter's signs, and sigma on double words where the filter leaves it open (the second
+// stage's first try; the other signs open: unknown, for the robust tier's double words).
+struct SphereWords {
+  SphereFilter f;
+  robust::Pair<double> s[3], r[3];
+  double rho;
+  bool rzero;
+  SphereWords(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment)
+      : f(src, rt, sp, segment), rho(sp.radius), rzero(f.rzero) {
+    for (int i = 0; i < 3; ++i) {
+      s[i] = robust::two_sum(src[i], -sp.center[i]);
+      r[i] = segment ? robust::two_sum(rt[i], -src[i]) : robust::Pair<double>{rt[i], 0.0};
+    }
+  }
+  int ss_rho2() const { return f.ss_rho2(); }
+  int tt_rho2() const { return f.tt_rho2(); }
+  int sr() const { return f.sr(); }
+  int tr() const { return f.tr(); }
+  int sigma() const {
+    const int g = f.sigma();
+    return g != unknown ? g : sigma_words(s, r, rho);
+  }
+};
+
 // (inlined where the classification is: a call here was a tenth of a campaign's case)
 [[gnu::always_inline]] inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
   return sphere_cast_filter(seg.source, seg.target, sp, true);
@@ -679,10 +779,27 @@ inline int double_word(const Sphere<double>& a, const Sphere<double>& b) { retur
 // checked and the first stage past, which robust::decide would run again; the robust tier's
 // own single-word filter after it, whose band near tangency is about u |s| wide where the
 // double words' is u^2 wide, is skipped too)
+// Before them, sigma on double words over the filter's other signs (SphereWords: a sixth of the
+// robust tier's analysis, which computes the foot and its quotient), on the scaled inputs.
+inline int sphere_words(const Segment<double>& seg0, const Sphere<double>& sp0, bool alg32) {
+  Segment<double> seg;
+  Sphere<double> sp;
+  if (!scaled(seg0, sp0, seg, sp)) return unknown;
+  const SphereWords w(seg.source, seg.target, sp, true);
+  return alg32 ? segment_sphere_logic(w) : hit_sphere_logic(w, true);
+}
+inline int sphere_words(const Ray<double>& ray0, const Sphere<double>& sp0) {
+  Ray<double> ray;
+  Sphere<double> sp;
+  if (!scaled(ray0, sp0, ray, sp)) return unknown;
+  return hit_sphere_logic(SphereWords(ray.source, ray.direction, sp, false), false);
+}
 inline int double_word(const Segment<double>& s, const Sphere<double>& b) {
+  if (const int r = sphere_words(s, b, false); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
 inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
+  if (const int r = sphere_words(s, b); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
 inline int double_word(const Sphere<double>& a, const Box<double>& b) { return certain_or_unknown(robust::decide(a, b)); }
@@ -690,6 +807,7 @@ inline int double_word(const Sphere<double>& a, const Box<double>& b) { return c
 // Algorithm 3.1's cast hits), whose double words leave a band u^2 wide (decide_closest's, on
 // the closest point, is u wide: it decided few cases 2^-52 from tangency)
 inline int double_word(const Segment<double>& s, const Sphere<double>& b, alg32) {
+  if (const int r = sphere_words(s, b, true); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
 
