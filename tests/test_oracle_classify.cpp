@@ -1391,7 +1391,9 @@ TEST_CASE("sigma on double words decides only with the exact sign, within about 
     const Vec3<double> src = c + (d / w.norm()) * w + along * r;
     const Vec3<double> to = segment ? Vec3<double>(src + (8 * unit(rng)) * r) : r;
     const staged::SphereWords words(src, to, Sphere<double>{c, rho}, segment);
-    const int got = staged::sigma_words(words.s, words.r, words.rho);
+    const int got = staged::sigma_words(words.s, words.r, words.rho);  // fused products where the CPU has them
+    // ... and split ones: the same decisions (both exact products, the same sums)
+    REQUIRE(staged::sigma_words_with<robust::SplitProduct>(words.s, words.r, words.rho) == got);
     if (got == staged::unknown) {
       ++left;
       continue;
