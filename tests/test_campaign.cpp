@@ -108,16 +108,20 @@ TEST_CASE("shards merge into exactly the unsharded result, whatever the thread c
   one_thread.threads = 1;
   REQUIRE(run(one_thread) == all);
 
-  std::vector<Saved> parts;
-  for (int k = 0; k < 3; ++k) {
-    Spec s = whole;
-    s.shard = k;
-    s.shards = 3;
-    s.threads = 1 + k % 2;
-    const Results r = run(s);
-    // through the text form, as `cdref merge` reads them
-    parts.push_back(deserialize(serialize(s, r, total_items(s)), "shard" + std::to_string(k)));
-  }
+  // the campaign in 3 shards, on 1 or 2 threads, each through the text form as `cdref merge`
+  // reads them
+  const auto shards_of = [](const Spec& spec) {
+    std::vector<Saved> parts;
+    for (int k = 0; k < 3; ++k) {
+      Spec s = spec;
+      s.shard = k;
+      s.shards = 3;
+      s.threads = 1 + k % 2;
+      parts.push_back(deserialize(serialize(s, run(s), total_items(s)), "shard" + std::to_string(k)));
+    }
+    return parts;
+  };
+  const std::vector<Saved> parts = shards_of(whole);
   REQUIRE_FALSE(parts[0].results == all);
   const Results merged = merge_shards(parts);
   REQUIRE(merged == all);
@@ -133,15 +137,8 @@ TEST_CASE("shards merge into exactly the unsharded result, whatever the thread c
     Spec cls = whole;
     cls.classification_only = true;
     const Results cls_all = run(cls);
-    std::vector<Saved> cls_parts;
-    for (int k = 0; k < 3; ++k) {
-      Spec s = cls;
-      s.shard = k;
-      s.shards = 3;
-      s.threads = 1 + k % 2;
-      cls_parts.push_back(deserialize(serialize(s, run(s), total_items(s)), "shard" + std::to_string(k)));
-      REQUIRE(cls_parts.back().results.cells.size() == cls_all.cells.size());
-    }
+    const std::vector<Saved> cls_parts = shards_of(cls);
+    for (const Saved& part : cls_parts) REQUIRE(part.results.cells.size() == cls_all.cells.size());
     REQUIRE(merge_shards(cls_parts) == cls_all);
     // the counts of the classification and the predicate are the full campaign's
     for (const auto& [k, f] : all.cells) {
