@@ -334,8 +334,9 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
 // descriptor inlines the per-case work there; a call per case through the registry cost as
 // much as the evaluations). The same counts and examples as run_case on each case.
 struct BlockScratch {
-  std::vector<Inputs> in, rounded;     // the cases, and their float rounding
-  std::vector<Verdict> truth[2], got;  // the truth on `rounded` and on `in`; an implementation's
+  std::vector<Inputs> in, rounded;  // the cases, and their float rounding
+  std::vector<Verdict> truth[2];    // the truth on `rounded` (0) and on `in` (1)
+  std::vector<Verdict> got;         // an implementation's answers
 };
 void run_block_classification(const Cell& cell, const std::uint64_t* index, std::size_t m,
                               const std::vector<const Implementation*>& impls, const std::vector<CellStats*>& stats,
