@@ -416,17 +416,14 @@ Answer stable_at(const Inputs& in, bool values = true) {
   r.pred = Spec::stable_pred(a, b);
   return r;
 }
-// The book's (and the stable tier's) classification and predicate over a block of cases, as
-// book_at (stable_at) with no values, one Verdict per case (a refusal: invalid_input).
-template <class Spec, class T>
-void book_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
+// A block of cases' verdicts: set(in[k], v) fills v's classification and predicate; inputs it
+// refuses (invalid_input) leave v refused and nothing else.
+template <class Set>
+void verdicts(const Inputs* in, std::size_t n, Verdict* out, const Set& set) {
   for (std::size_t k = 0; k < n; ++k) {
     Verdict v;
     try {
-      require_finite<Spec, T>(in[k]);
-      const auto [a, b] = Spec::template make<T>(in[k]);
-      v.cls = classification(Spec::book(a, b, 0u));
-      v.pred = bool(Spec::book_pred(a, b));
+      set(in[k], v);
     } catch (const invalid_input&) {
       v = Verdict{};
       v.refused = true;
@@ -434,20 +431,24 @@ void book_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
     out[k] = v;
   }
 }
+// The book's (and the stable tier's) classification and predicate over a block of cases, as
+// book_at (stable_at) with no values.
+template <class Spec, class T>
+void book_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
+  verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
+    require_finite<Spec, T>(x);
+    const auto [a, b] = Spec::template make<T>(x);
+    v.cls = classification(Spec::book(a, b, 0u));
+    v.pred = bool(Spec::book_pred(a, b));
+  });
+}
 template <class Spec, class F>
 void stable_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
-  for (std::size_t k = 0; k < n; ++k) {
-    Verdict v;
-    try {
-      const auto [a, b] = Spec::template make<F>(in[k]);
-      v.cls = classification(Spec::stable(a, b, 0u));
-      v.pred = Spec::stable_pred(a, b);
-    } catch (const invalid_input&) {
-      v = Verdict{};
-      v.refused = true;
-    }
-    out[k] = v;
-  }
+  verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
+    const auto [a, b] = Spec::template make<F>(x);
+    v.cls = classification(Spec::stable(a, b, 0u));
+    v.pred = Spec::stable_pred(a, b);
+  });
 }
 
 template <class Spec>
@@ -604,12 +605,13 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
     // the formulation, which refuses them with its own message.
     if (outputs_on_hit_alone<Spec>()) {
       Answer c;
+      bool miss = false;
       try {
         c = oracle_classify_of<Spec>(in, exact_used);
-      } catch (const invalid_input&) {
-        c.cls = true;
+        miss = !c.cls;
+      } catch (const invalid_input&) {  // (refused below, with the formulation's message)
       }
-      if (!c.cls) return c;
+      if (miss) return c;
     }
   }
   if (exact_used) *exact_used = false;
@@ -623,21 +625,14 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   return truth_of<Spec>(in, precision);
 }
 
-// ... over a block of cases, one Verdict per case (cls = pred; a refusal: invalid_input).
+// ... over a block of cases, one Verdict per case (cls = pred).
 template <class Spec>
 void oracle_classify_block_of(const Inputs* in, std::size_t n, Verdict* out) {
-  for (std::size_t k = 0; k < n; ++k) {
-    Verdict v;
-    try {
-      require_finite<Spec, CGAL::Gmpq>(in[k]);
-      const auto [a, b] = Spec::template make<double>(in[k]);
-      v.cls = v.pred = Spec::oracle(a, b, nullptr);
-    } catch (const invalid_input&) {
-      v = Verdict{};
-      v.refused = true;
-    }
-    out[k] = v;
-  }
+  verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
+    require_finite<Spec, CGAL::Gmpq>(x);
+    const auto [a, b] = Spec::template make<double>(x);
+    v.cls = v.pred = Spec::oracle(a, b, nullptr);
+  });
 }
 
 // The book at an exact type, values rounded to double: beside the truth where the book assumes
