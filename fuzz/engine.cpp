@@ -1,5 +1,6 @@
 // fuzz/engine.cpp - running a campaign: cells, work items, threads, statistics, shards,
 // checkpoints and their text form.
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cdref/error.hpp>
@@ -335,6 +336,7 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
 // much as the evaluations). The same counts and examples as run_case on each case.
 struct BlockScratch {
   std::vector<Inputs> in, rounded;  // the cases, and their float rounding
+  std::size_t width = 0;  // slots of `in` that may be nonzero: the most inputs of a query made here
   std::vector<Verdict> truth[2];    // the truth on `rounded` (0) and on `in` (1)
   std::vector<Verdict> got;         // an implementation's answers
 };
@@ -345,9 +347,15 @@ void run_block_classification(const Cell& cell, const std::uint64_t* index, std:
   bool need_float = false, need_wide = false;  // precision 24; 53 or 64 (the same truth)
   for (std::size_t j = 0; j < impls.size(); ++j)
     if (stats[j]) (impls[j]->precision == 24 ? need_float : need_wide) = true;
-  // each case made in its place (an assignment copied it, as long as making it)
+  // each case made in its place, over the slots its query's inputs can take, zeroed first; the
+  // slots past `width` are zero from the first resize on (clearing all 64 slots of every case
+  // took as long as the family drawing it)
   s.in.resize(m);
-  for (std::size_t k = 0; k < m; ++k) ::new (&s.in[k]) Inputs(make_case_of(cell.key, *cell.family, cell.scale, index[k]));
+  s.width = std::max(s.width, qi.inputs.size());
+  for (std::size_t k = 0; k < m; ++k) {
+    std::fill_n(s.in[k].begin(), s.width, 0.0);
+    make_case_into(cell.key, *cell.family, cell.scale, index[k], s.in[k]);
+  }
   if (need_float) {
     s.rounded.resize(m);
     for (std::size_t k = 0; k < m; ++k) ::new (&s.rounded[k]) Inputs(float_inputs(cell.q, s.in[k]));

@@ -82,23 +82,21 @@ V comp(V v, int i) { return i == 0 ? V{v.x, 0, 0} : (i == 1 ? V{0, v.y, 0} : V{0
 double at(V v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
 
 // ---- a triangle and an axis-aligned box: v0, v1, v2, box centre, box extent ----
-Inputs tri_box(V a, V b, V c, V bc, V bh) {
-  Inputs in{};
+void tri_box(Inputs& in, V a, V b, V c, V bc, V bh) {
   put(in, 0, a);
   put(in, 3, b);
   put(in, 6, c);
   put(in, 9, bc);
   put(in, 12, bh);
-  return in;
 }
-Inputs tri_box_uniform(Next& next) {
+void tri_box_uniform(Inputs& in, Next& next) {
   const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
   const V c = uvec(next, -3, 3), b = uvec(next, -3, 3);
-  return tri_box(uvec(next, -3, 3), b, c, bc, bh);
+  return tri_box(in, uvec(next, -3, 3), b, c, bc, bh);
 }
 // A triangle touching the box to within `rel` (of the box's size): a vertex near a face, the
 // triangle's plane near a corner, or an edge near an edge (the grazing case).
-Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
+void tri_box_touching(Inputs& in, Next& next, double rel, V offset, int kind) {
   const V bc = offset + uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
   const double size = std::sqrt(dot(bh, bh));
   V s{sign(next), sign(next), sign(next)};  // the corner or the edge's side
@@ -113,7 +111,7 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
       const V v0 = p + (rel * size) * n;
       const V t = perp(next, n);
       const double d1 = uni(next, 0.2, 2), d2 = uni(next, 0.2, 2);
-      return tri_box(v0, v0 + d1 * (n + t), v0 + d2 * (n - t), bc, bh);
+      return tri_box(in, v0, v0 + d1 * (n + t), v0 + d2 * (n - t), bc, bh);
     }
     case 1: {  // the plane through a corner, its normal pointing out of the box
       V n = {s.x * uni(next, 0.2, 1), s.y * uni(next, 0.2, 1), s.z * uni(next, 0.2, 1)};
@@ -123,7 +121,7 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
       const double c2 = uni(next, 0.5, 3), c1 = uni(next, 0.5, 3);  // the third vertex's
       const double b2 = uni(next, 0.5, 3), b1 = uni(next, 0.5, 3);  // the second's
       const double a1 = uni(next, 0.5, 3);
-      return tri_box(p + a1 * t1, p - b1 * t1 + b2 * t2, p - c1 * t1 - c2 * t2, bc, bh);
+      return tri_box(in, p + a1 * t1, p - b1 * t1 + b2 * t2, p - c1 * t1 - c2 * t2, bc, bh);
     }
     default: {  // an edge passing a box edge (along axis i) at rel * size
       const int i = pick(next, 3);
@@ -135,7 +133,7 @@ Inputs tri_box_touching(Next& next, double rel, V offset, int kind) {
       const V q = p + (rel * size) * out;
       const double l0 = uni(next, 0.5, 3), l1 = uni(next, 0.5, 3);
       const double along = uni(next, -1, 1), away = uni(next, 0.5, 3);
-      return tri_box(q - l0 * e_dir, q + l1 * e_dir, q + away * out + along * e_dir, bc, bh);
+      return tri_box(in, q - l0 * e_dir, q + l1 * e_dir, q + away * out + along * e_dir, bc, bh);
     }
   }
 }
@@ -148,7 +146,7 @@ V turned(V v, V k, double t) {
 
 // A triangle in a face's plane turned by 2^-k radians about an axis in that plane, its nearest
 // point within 1e-9 box sizes of the face (out or in).
-Inputs tri_box_near_parallel(Next& next, int k) {
+void tri_box_near_parallel(Inputs& in, Next& next, int k) {
   const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
   const double size = std::sqrt(dot(bh, bh));
   const int i = pick(next, 3);
@@ -167,12 +165,12 @@ Inputs tri_box_near_parallel(Next& next, int k) {
   double low = dot(v[0] - p, n);
   for (const V& x : v) low = std::min(low, dot(x - p, n));
   for (V& x : v) x = x - low * n;
-  return tri_box(v[0], v[1], v[2], bc, bh);
+  return tri_box(in, v[0], v[1], v[2], bc, bh);
 }
 
 // A segment (or ray) along a box edge's direction turned by 2^-k radians, passing the edge
 // within 1e-9 box sizes outside or inside (layout of the box-shot families).
-Inputs shot_near_parallel(Next& next, int k, bool ray) {
+void shot_near_parallel(Inputs& in, Next& next, int k, bool ray) {
   const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
   const double size = std::sqrt(dot(bh, bh));
   const int i = pick(next, 3);
@@ -184,12 +182,10 @@ Inputs shot_near_parallel(Next& next, int k, bool ray) {
   const V along = axis(i, uni(next, -at(bh, i), at(bh, i)));
   const V mid = corner + uni(next, -1e-9, 1e-9) * size * out + along;
   const double l = uni(next, 1, 4) * size;
-  Inputs in{};
   put(in, 0, mid - l * d);
   put(in, 3, ray ? d : mid + l * d);
   put(in, 6, bc);
   put(in, 9, bh);
-  return in;
 }
 
 }  // namespace
@@ -197,35 +193,35 @@ Inputs shot_near_parallel(Next& next, int k, bool ray) {
 std::vector<Family> segment_box_family_list(bool ray) {
   std::vector<Family> f = box_shot_family_list(ray);
   f.push_back({"near-parallel", "along a box edge turned by 2^-k radians, passing it within 1e-9 box sizes",
-               range(4, 52, 4), [ray](Next& next, int k) { return shot_near_parallel(next, k, ray); }});
+               range(4, 52, 4), [ray](Next& next, int k, Inputs& in) { return shot_near_parallel(in, next, k, ray); }});
   return f;
 }
 
 std::vector<Family> triangle_box_family_list() {
   std::vector<Family> f;
   f.push_back({"uniform", "box centre in [-1,1]^3, extent in [0.1,2]^3; vertices in [-3,3]^3", {0},
-               [](Next& next, int) { return tri_box_uniform(next); }});
+               [](Next& next, int, Inputs& in) { return tri_box_uniform(in, next); }});
   f.push_back({"near-touching", "a vertex near a face or the plane near a corner, 2^-k box sizes apart or in",
-               tangency_scales(), [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 2);
-                 return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
+                 return tri_box_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"grazing", "an edge passing a box edge 2^-k box sizes outside or inside", tangency_scales(),
-               [](Next& next, int k) { return tri_box_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 2); }});
+               [](Next& next, int k, Inputs& in) { return tri_box_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 2); }});
   f.push_back({"near-parallel", "in a face's plane turned by 2^-k radians, within 1e-9 box sizes of the face",
-               range(4, 52, 4), [](Next& next, int k) { return tri_box_near_parallel(next, k); }});
-  f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades(), [](Next& next, int k) {
+               range(4, 52, 4), [](Next& next, int k, Inputs& in) { return tri_box_near_parallel(in, next, k); }});
+  f.push_back({"long-range", "touching to within 1e-9 box sizes, 10^k from the origin", decades(), [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 3);
                  const V offset = std::pow(10.0, k) * unit(next);
-                 return tri_box_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
+                 return tri_box_touching(in, next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), flat boxes, coplanar with a face", {0},
-               [](Next& next, int) {
+               [](Next& next, int, Inputs& in) {
                  const V bc = uvec(next, -1, 1), bh = uvec(next, 0.1, 2);
                  const V a = uvec(next, -3, 3), b = uvec(next, -3, 3);
                  switch (pick(next, 4)) {
-                   case 0: return tri_box(a, b, a + uni(next, -1, 2) * (b - a), bc, bh);  // collinear
-                   case 1: return tri_box(a, a, a, bc, bh);                             // a point
+                   case 0: return tri_box(in, a, b, a + uni(next, -1, 2) * (b - a), bc, bh);  // collinear
+                   case 1: return tri_box(in, a, a, a, bc, bh);                             // a point
                    case 2: {  // a flat box, a triangle in its plane
                      V h = bh;
                      const int i = pick(next, 3);
@@ -233,36 +229,34 @@ std::vector<Family> triangle_box_family_list() {
                      V p = a - comp(a, i) + comp(bc, i), q = b - comp(b, i) + comp(bc, i);
                      V r = uvec(next, -3, 3);
                      r = r - comp(r, i) + comp(bc, i);
-                     return tri_box(p, q, r, bc, h);
+                     return tri_box(in, p, q, r, bc, h);
                    }
                    default: {  // in a face's plane
                      const int i = pick(next, 3);
                      const V face = comp(bc, i) + axis(i, sign(next) * at(bh, i));
                      V p = a - comp(a, i) + face, q = b - comp(b, i) + face, r = uvec(next, -3, 3);
                      r = r - comp(r, i) + face;
-                     return tri_box(p, q, r, bc, bh);
+                     return tri_box(in, p, q, r, bc, bh);
                    }
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
-               [](Next& next, int k) { return scaled(tri_box_uniform(next), 15, k); }});
+               [](Next& next, int k, Inputs& in) { tri_box_uniform(in, next); scaled(in, 15, k); }});
   return f;
 }
 
 // ---- one oriented box against another: two of centre, extent, axis0, axis1, axis2 ----
 namespace {
 
-Inputs two_obbs(const Obb& a, const Obb& b) {
-  Inputs in{};
+void two_obbs(Inputs& in, const Obb& a, const Obb& b) {
   put_obb(in, 0, a);
   put_obb(in, 15, b);
-  return in;
 }
 Obb random_obb(Next& next, V c) { return {c, uvec(next, 0.1, 2), rotation(next)}; }
 
 // B placed against A along a candidate axis (a face of A or B, or an edge cross) at the
 // sum of their radii times 1 + rel, shifted at random across the axis by less than both.
-Inputs obbs_touching(Next& next, double rel, V offset, int kind, const Rot* rb = nullptr) {
+void obbs_touching(Inputs& in, Next& next, double rel, V offset, int kind, const Rot* rb = nullptr) {
   const Obb A = random_obb(next, offset + uvec(next, -1, 1));
   const Obb B0{V{0, 0, 0}, uvec(next, 0.1, 2), rb ? compose(*rb, A.r) : rotation(next)};
   Obb B = B0;
@@ -277,20 +271,19 @@ Inputs obbs_touching(Next& next, double rel, V offset, int kind, const Rot* rb =
   L = sign(next) * normalized(L);
   const double d = (A.radius(L) + B.radius(L)) * (1 + rel);
   B.c = A.c + d * L;
-  return two_obbs(A, B);
+  return two_obbs(in, A, B);
 }
 
-Inputs obbs_uniform(Next& next) {
+void obbs_uniform(Inputs& in, Next& next) {
   const Obb A = random_obb(next, uvec(next, -2, 2));
   const Obb B = random_obb(next, uvec(next, -2, 2));
-  return two_obbs(A, B);
+  return two_obbs(in, A, B);
 }
 
-Inputs scaled_obbs(Inputs in, int k) {
+void scaled_obbs(Inputs& in, int k) {
   const double f = std::pow(10.0, k);
   for (int base : {0, 15})
     for (int i = 0; i < 6; ++i) in[base + i] *= f;  // centres and extents; the axes stay
-  return in;
 }
 
 }  // namespace
@@ -298,50 +291,50 @@ Inputs scaled_obbs(Inputs in, int k) {
 std::vector<Family> obb_obb_family_list() {
   std::vector<Family> f;
   f.push_back({"uniform", "centres in [-2,2]^3, extents in [0.1,2]^3, random rotations", {0},
-               [](Next& next, int) { return obbs_uniform(next); }});
+               [](Next& next, int, Inputs& in) { return obbs_uniform(in, next); }});
   f.push_back({"near-touching", "placed along a face normal at the sum of the radii times 1 +- 2^-k",
-               tangency_scales(), [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 0); }});
+               tangency_scales(), [](Next& next, int k, Inputs& in) { return obbs_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 0); }});
   f.push_back({"grazing", "placed along an edge cross a_i x b_j at the sum of the radii times 1 +- 2^-k (edge-edge)",
-               tangency_scales(), [](Next& next, int k) { return obbs_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 1); }});
+               tangency_scales(), [](Next& next, int k, Inputs& in) { return obbs_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, 1); }});
   f.push_back({"near-parallel", "B's frame A's turned by 2^-k radians, placed face or edge to face 1e-9 apart or in",
-               range(4, 52, 4), [](Next& next, int k) {
+               range(4, 52, 4), [](Next& next, int k, Inputs& in) {
                  const Rot t = small_rotation(next, std::ldexp(1.0, -k));
                  const int kind = pick(next, 2);
-                 return obbs_touching(next, uni(next, -1e-9, 1e-9), V{0, 0, 0}, kind, &t);
+                 return obbs_touching(in, next, uni(next, -1e-9, 1e-9), V{0, 0, 0}, kind, &t);
                }});
   f.push_back({"long-range", "placed face or edge to face within 1e-9 of touching, 10^k from the origin", decades(),
-               [](Next& next, int k) {
+               [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 2);
                  const V offset = std::pow(10.0, k) * unit(next);
-                 return obbs_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
+                 return obbs_touching(in, next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero extents, identical boxes, signed-permutation frames touching exactly", {0},
-               [](Next& next, int) {
+               [](Next& next, int, Inputs& in) {
                  Obb A = random_obb(next, uvec(next, -1, 1));
                  switch (pick(next, 4)) {
                    case 0: {  // zero extents along some axes
                      Obb B = random_obb(next, uvec(next, -2, 2));
                      if (pick(next, 2)) A.h = comp(A.h, pick(next, 3));
                      if (pick(next, 2)) B.h = V{0, 0, 0};
-                     return two_obbs(A, B);
+                     return two_obbs(in, A, B);
                    }
-                   case 1: return two_obbs(A, A);
+                   case 1: return two_obbs(in, A, A);
                    case 2: {  // exactly orthonormal frames, faces touching exactly (dyadic values)
                      Obb a{V{double(pick(next, 5)), double(pick(next, 5)), 0}, V{1, 2, 0.5}, signed_permutation(next)};
                      Obb b{a.c, V{0.5, 1, 2}, signed_permutation(next)};
                      const int i = pick(next, 3);
                      const V L = axis(i, sign(next));
                      b.c = a.c + (a.radius(L) + b.radius(L)) * L;
-                     return two_obbs(a, b);
+                     return two_obbs(in, a, b);
                    }
                    default: {  // B inside A
                      Obb B{A.c, 0.25 * A.h, rotation(next)};
-                     return two_obbs(A, B);
+                     return two_obbs(in, A, B);
                    }
                  }
                }});
   f.push_back({"magnitude", "the uniform family's centres and extents scaled by 10^k", magnitudes(),
-               [](Next& next, int k) { return scaled_obbs(obbs_uniform(next), k); }});
+               [](Next& next, int k, Inputs& in) { obbs_uniform(in, next); scaled_obbs(in, k); }});
   return f;
 }
 
@@ -357,16 +350,15 @@ std::vector<Family> rotated_family_list(std::vector<Family> base, std::vector<in
   for (Family& f : base) {
     auto make = f.make;
     out.push_back({f.name, f.describe + "; the box turned by a random rotation", f.scales,
-                   [make, points, vectors, scalars, center, extent, box_at](Next& next, int k) {
-                     const Inputs in = make(next, k);
+                   [make, points, vectors, scalars, center, extent, box_at](Next& next, int k, Inputs& o) {
+                     Inputs in{};
+                     make(next, k, in);
                      const Rot r = pick(next, 8) == 0 ? signed_permutation(next) : rotation(next);
                      const V c{in[center], in[center + 1], in[center + 2]};
-                     Inputs o{};
                      for (int p : points) put(o, p, c + r.apply(V{in[p], in[p + 1], in[p + 2]} - c));
                      for (int v : vectors) put(o, v, r.apply(V{in[v], in[v + 1], in[v + 2]}));
                      for (int x : scalars) o[x] = in[x];
                      put_obb(o, box_at, Obb{c, V{in[extent], in[extent + 1], in[extent + 2]}, r});
-                     return o;
                    }});
   }
   return out;

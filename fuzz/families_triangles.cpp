@@ -21,26 +21,24 @@ namespace {
 using namespace family;
 
 // ---- a sphere and a triangle: centre, radius, v0, v1, v2 ----
-Inputs sphere_tri(V c, double rho, V a, V b, V d) {
-  Inputs in{};
+void sphere_tri(Inputs& in, V c, double rho, V a, V b, V d) {
   put(in, 0, c);
   in[3] = rho;
   put(in, 4, a);
   put(in, 7, b);
   put(in, 10, d);
-  return in;
 }
-Inputs sphere_tri_uniform(Next& next) {
+void sphere_tri_uniform(Inputs& in, Next& next) {
   const V c = uvec(next, -3, 3);
   const double rho = uni(next, 0.1, 2);
   const V d = uvec(next, -2, 2), b = uvec(next, -2, 2);
-  return sphere_tri(c, rho, uvec(next, -2, 2), b, d);
+  return sphere_tri(in, c, rho, uvec(next, -2, 2), b, d);
 }
 
 // A triangle and a sphere whose closest point x is an interior point of the triangle, of an
 // edge, or a vertex (kind 0, 1, 2), the centre at rho (1 + rel) from x along a direction of
 // x's normal cone.
-Inputs sphere_tri_touching(Next& next, double rel, V offset, int kind) {
+void sphere_tri_touching(Inputs& in, Next& next, double rel, V offset, int kind) {
   V a, b, d, n;
   do {
     a = offset + uvec(next, -2, 2), b = offset + uvec(next, -2, 2), d = offset + uvec(next, -2, 2);
@@ -74,24 +72,22 @@ Inputs sphere_tri_touching(Next& next, double rel, V offset, int kind) {
       break;
     }
   }
-  return sphere_tri(x + (rho * (1 + rel)) * dir, rho, a, b, d);
+  return sphere_tri(in, x + (rho * (1 + rel)) * dir, rho, a, b, d);
 }
 
 // ---- a shot and a triangle: source, target (or direction), v0, v1, v2 ----
-Inputs shot_tri(V s, V t, V a, V b, V d) {
-  Inputs in{};
+void shot_tri(Inputs& in, V s, V t, V a, V b, V d) {
   put(in, 0, s);
   put(in, 3, t);
   put(in, 6, a);
   put(in, 9, b);
   put(in, 12, d);
-  return in;
 }
 // The shot from s aimed at x, passing it by `over` (a segment's target lies beyond x by a factor
 // in [1.1, 3] of |x - s|, or before it when `short_of`); a ray's direction is x - s.
-Inputs aimed(Next& next, bool ray, V s, V x, V a, V b, V d) {
+void aimed(Inputs& in, Next& next, bool ray, V s, V x, V a, V b, V d) {
   const V dir = x - s;
-  return shot_tri(s, ray ? dir : s + uni(next, 1.1, 3) * dir, a, b, d);
+  return shot_tri(in, s, ray ? dir : s + uni(next, 1.1, 3) * dir, a, b, d);
 }
 V random_triangle(Next& next, V offset, V& a, V& b, V& d) {
   V n;
@@ -101,15 +97,15 @@ V random_triangle(Next& next, V offset, V& a, V& b, V& d) {
   } while (dot(n, n) < 1e-2);
   return normalized(n);
 }
-Inputs shot_tri_uniform(Next& next, bool ray) {
+void shot_tri_uniform(Inputs& in, Next& next, bool ray) {
   const V s = uvec(next, -3, 3);
   const V d = uvec(next, -2, 2), b = uvec(next, -2, 2), a = uvec(next, -2, 2);
-  return shot_tri(s, ray ? unit(next) : uvec(next, -3, 3), a, b, d);
+  return shot_tri(in, s, ray ? unit(next) : uvec(next, -3, 3), a, b, d);
 }
 // Aimed at a point of an edge (kind 0) or at a vertex (kind 1), moved by rel (relative to the
 // triangle's size) across the edge in the plane (outward for rel > 0), from a source on either
 // side at distance 1 to 4.
-Inputs shot_tri_edge(Next& next, bool ray, double rel, V offset, int kind) {
+void shot_tri_edge(Inputs& in, Next& next, bool ray, double rel, V offset, int kind) {
   V a, b, d;
   const V n = random_triangle(next, offset, a, b, d);
   V x, out;
@@ -126,10 +122,10 @@ Inputs shot_tri_edge(Next& next, bool ray, double rel, V offset, int kind) {
   const double amount = uni(next, -0.8, 0.8);
   const double side = sign(next);
   const V s = x + uni(next, 1, 4) * normalized(side * n + amount * tilt);
-  return aimed(next, ray, s, x, a, b, d);
+  return aimed(in, next, ray, s, x, a, b, d);
 }
 // Aimed at an interior point, the direction 2^-k radians from the triangle's plane.
-Inputs shot_tri_grazing(Next& next, bool ray, int k) {
+void shot_tri_grazing(Inputs& in, Next& next, bool ray, int k) {
   V a, b, d;
   const V n = random_triangle(next, V{0, 0, 0}, a, b, d);
   double s1 = uni(next, 0.05, 0.9), s2 = uni(next, 0.05, 0.9);
@@ -137,7 +133,7 @@ Inputs shot_tri_grazing(Next& next, bool ray, int k) {
   const V x = a + s1 * (b - a) + s2 * (d - a);
   const V along = normalized(cross(n, unit(next)));
   const V dir = along + (sign(next) * std::ldexp(1.0, -k)) * n;
-  return aimed(next, ray, x - uni(next, 1, 4) * dir, x, a, b, d);
+  return aimed(in, next, ray, x - uni(next, 1, 4) * dir, x, a, b, d);
 }
 // A triangle with small integer coordinates (in [-8, 8], of nonzero area), and points exactly in
 // its plane: v0 + alpha e1 + beta e2 with alpha, beta = (j - low) / 4, j < count (exact in double).
@@ -157,14 +153,14 @@ struct LatticePlane {
   }
 };
 // A shot exactly in the plane of a lattice triangle.
-Inputs shot_tri_coplanar(Next& next, bool ray) {
+void shot_tri_coplanar(Inputs& in, Next& next, bool ray) {
   const LatticePlane pl(next);
   const V a = pl.a, b = pl.b, d = pl.d;
   auto in_plane = [&] { return pl.point(next, 17, 6); };
   const V s = in_plane();
   V t = in_plane();
   if (ray && dot(t - s, t - s) == 0) t = s + (b - a);
-  return shot_tri(s, ray ? t - s : t, a, b, d);
+  return shot_tri(in, s, ray ? t - s : t, a, b, d);
 }
 
 // ---- a shot and a fan of triangles around a shared vertex: source, target (or direction),
@@ -174,15 +170,13 @@ struct FanShape {
   std::vector<V> ring;
   bool closed = false;
 };
-Inputs shot_fan(V s, V t, const FanShape& f) {
-  Inputs in{};
+void shot_fan(Inputs& in, V s, V t, const FanShape& f) {
   put(in, 0, s);
   put(in, 3, t);
   in[6] = double(f.ring.size());
   in[7] = f.closed ? 1 : 0;
   put(in, 8, f.center);
   for (std::size_t i = 0; i < f.ring.size(); ++i) put(in, 11 + 3 * int(i), f.ring[i]);
-  return in;
 }
 
 // The unit sphere as an icosahedron subdivided twice (162 vertices, 320 faces, counter-
@@ -261,7 +255,7 @@ Rotation random_rotation(Next& next) {
 // computed once in double (so the triangles share it exactly); the shot aimed at the shared
 // vertex or at a point of an edge shared by two triangles (that point rounded), from a source
 // near the surface (1 to 4 edge lengths) or far (10^3 to 10^4 sizes).
-Inputs shot_fan_watertight(Next& next, bool ray, int k) {
+void shot_fan_watertight(Inputs& in, Next& next, bool ray, int k) {
   const double size = std::pow(10.0, uni(next, -3, 3));
   const V offset = std::pow(10.0, k) * unit(next);
   const Rotation rot = random_rotation(next);
@@ -298,9 +292,9 @@ Inputs shot_fan_watertight(Next& next, bool ray, int k) {
   const V dir = normalized(sign(next) * normal + amount * tilt);
   const V s = x + dist * dir;
   const V d = x - s;
-  return shot_fan(s, ray ? d : x + uni(next, 0.1, 2) * d, f);
+  return shot_fan(in, s, ray ? d : x + uni(next, 0.1, 2) * d, f);
 }
-Inputs shot_fan_uniform(Next& next, bool ray) {
+void shot_fan_uniform(Inputs& in, Next& next, bool ray) {
   FanShape f;
   f.center = uvec(next, -1, 1);
   const int n = 3 + pick(next, 6);
@@ -311,28 +305,26 @@ Inputs shot_fan_uniform(Next& next, bool ray) {
   }
   f.closed = pick(next, 2) == 0;
   const V s = uvec(next, -3, 3);
-  return shot_fan(s, ray ? unit(next) : uvec(next, -3, 3), f);
+  return shot_fan(in, s, ray ? unit(next) : uvec(next, -3, 3), f);
 }
 
 // ---- two triangles: a_v0, a_v1, a_v2, b_v0, b_v1, b_v2 ----
-Inputs tri_tri(V a0, V a1, V a2, V b0, V b1, V b2) {
-  Inputs in{};
+void tri_tri(Inputs& in, V a0, V a1, V a2, V b0, V b1, V b2) {
   put(in, 0, a0);
   put(in, 3, a1);
   put(in, 6, a2);
   put(in, 9, b0);
   put(in, 12, b1);
   put(in, 15, b2);
-  return in;
 }
-Inputs tri_tri_uniform(Next& next) {
+void tri_tri_uniform(Inputs& in, Next& next) {
   const V b2 = uvec(next, -2, 2), b1 = uvec(next, -2, 2), b0 = uvec(next, -2, 2);
   const V a2 = uvec(next, -2, 2), a1 = uvec(next, -2, 2);
-  return tri_tri(uvec(next, -2, 2), a1, a2, b0, b1, b2);
+  return tri_tri(in, uvec(next, -2, 2), a1, a2, b0, b1, b2);
 }
 // B's tip at a point x of A (interior, an edge or a vertex: kind 0, 1, 2) moved rel * size
 // along A's normal (rel > 0: off A, on the side where B lies), B's other vertices on that side.
-Inputs tri_tri_touching(Next& next, double rel, V offset, int kind) {
+void tri_tri_touching(Inputs& in, Next& next, double rel, V offset, int kind) {
   V a, b, d;
   const V n = random_triangle(next, offset, a, b, d);
   V x;
@@ -355,10 +347,10 @@ Inputs tri_tri_touching(Next& next, double rel, V offset, int kind) {
   // keep B's other vertices strictly on its side of A's plane
   if (side * dot(y1 - x, n) < 0.1) y1 = y1 + (side * (0.1 - side * dot(y1 - x, n))) * n;
   if (side * dot(y2 - x, n) < 0.1) y2 = y2 + (side * (0.1 - side * dot(y2 - x, n))) * n;
-  return tri_tri(a, b, d, x + (side * rel * size) * n, y1, y2);
+  return tri_tri(in, a, b, d, x + (side * rel * size) * n, y1, y2);
 }
 // B nearly parallel to A (tilted 2^-k) and overlapping it in projection, at a height near 0.
-Inputs tri_tri_parallel(Next& next, int k) {
+void tri_tri_parallel(Inputs& in, Next& next, int k) {
   V a, b, d;
   const V n = random_triangle(next, V{0, 0, 0}, a, b, d);
   const V c = (1.0 / 3) * (a + b + d);
@@ -368,56 +360,56 @@ Inputs tri_tri_parallel(Next& next, int k) {
   const V off = uni(next, -1, 1) * (b - a) + off2 * (d - a);
   const V b2 = lift(d + off + uvec(next, -0.5, 0.5));
   const V b1 = lift(b + off + uvec(next, -0.5, 0.5));
-  return tri_tri(a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), b1, b2);
+  return tri_tri(in, a, b, d, lift(a + off + uvec(next, -0.5, 0.5)), b1, b2);
 }
 // Two triangles exactly in one plane: a lattice triangle and one of points in its plane.
-Inputs tri_tri_coplanar(Next& next) {
+void tri_tri_coplanar(Inputs& in, Next& next) {
   const LatticePlane pl(next);
   auto in_plane = [&] { return pl.point(next, 13, 4); };
   const V b2 = in_plane(), b1 = in_plane();
-  return tri_tri(pl.a, pl.b, pl.d, in_plane(), b1, b2);
+  return tri_tri(in, pl.a, pl.b, pl.d, in_plane(), b1, b2);
 }
 
 }  // namespace
 
 std::vector<Family> triangle_triangle_family_list() {
   std::vector<Family> f;
-  f.push_back({"uniform", "all six vertices in [-2,2]^3", {0}, [](Next& next, int) { return tri_tri_uniform(next); }});
+  f.push_back({"uniform", "all six vertices in [-2,2]^3", {0}, [](Next& next, int, Inputs& in) { return tri_tri_uniform(in, next); }});
   f.push_back({"near-touching",
                "B's tip 2^-k of A's size from A's face, an edge or a vertex (off it or through it), B's other "
                "vertices on one side",
-               tangency_scales(), [](Next& next, int k) {
+               tangency_scales(), [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 3);
-                 return tri_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
+                 return tri_tri_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "touching to within 1e-9 of A's size, 10^k from the origin", decades(),
-               [](Next& next, int k) {
+               [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 3);
                  const V offset = std::pow(10.0, k) * unit(next);
-                 return tri_tri_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
+                 return tri_tri_touching(in, next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"near-parallel", "B tilted 2^-k from A's plane, within 2^-k of it, overlapping it in projection",
-               tangency_scales(), [](Next& next, int k) { return tri_tri_parallel(next, k); }});
+               tangency_scales(), [](Next& next, int k, Inputs& in) { return tri_tri_parallel(in, next, k); }});
   f.push_back({"coplanar", "two triangles exactly in one plane (integer vertices)", {0},
-               [](Next& next, int) { return tri_tri_coplanar(next); }});
+               [](Next& next, int, Inputs& in) { return tri_tri_coplanar(in, next); }});
   f.push_back({"degenerate",
                "zero-area triangles (collinear vertices, a point), triangles sharing a vertex or an edge, on the "
                "integer lattice",
-               {0}, [](Next& next, int) {
+               {0}, [](Next& next, int, Inputs& in) {
                  auto ivec = [&] {
                    return V{double(pick(next, 7)) - 3, double(pick(next, 7)) - 3, double(pick(next, 7)) - 3};
                  };
                  const V a = ivec(), b = ivec(), c = ivec(), d = ivec(), e = ivec(), g = ivec();
                  switch (pick(next, 5)) {
-                   case 0: return tri_tri(a, b, a + 0.5 * (b - a), d, e, g);      // A collinear
-                   case 1: return tri_tri(a, b, c, d, d, d);                      // B a point
-                   case 2: return tri_tri(a, b, c, a, e, g);                      // a shared vertex
-                   case 3: return tri_tri(a, b, c, b, a, g);                      // a shared edge
-                   default: return tri_tri(a, b, a + 2.0 * (b - a), d, e, d + 0.5 * (e - d));  // two segments
+                   case 0: return tri_tri(in, a, b, a + 0.5 * (b - a), d, e, g);      // A collinear
+                   case 1: return tri_tri(in, a, b, c, d, d, d);                      // B a point
+                   case 2: return tri_tri(in, a, b, c, a, e, g);                      // a shared vertex
+                   case 3: return tri_tri(in, a, b, c, b, a, g);                      // a shared edge
+                   default: return tri_tri(in, a, b, a + 2.0 * (b - a), d, e, d + 0.5 * (e - d));  // two segments
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
-               [](Next& next, int k) { return scaled(tri_tri_uniform(next), 18, k); }});
+               [](Next& next, int k, Inputs& in) { tri_tri_uniform(in, next); scaled(in, 18, k); }});
   return f;
 }
 
@@ -426,11 +418,11 @@ std::vector<Family> fan_shot_family_list(bool ray) {
   f.push_back({"uniform",
                "a fan of 3 to 8 triangles around a centre in [-1,1]^3 (closed or open), the source (and target) in "
                "[-3,3]^3",
-               {0}, [ray](Next& next, int) { return shot_fan_uniform(next, ray); }});
+               {0}, [ray](Next& next, int, Inputs& in) { return shot_fan_uniform(in, next, ray); }});
   f.push_back({"degenerate",
                "fans on the integer lattice with zero-area triangles (a repeated or collinear ring vertex, the centre "
                "on the ring), shots through lattice points (a vertex, an edge), sources on the fan",
-               {0}, [ray](Next& next, int) {
+               {0}, [ray](Next& next, int, Inputs& in) {
                  auto ivec = [&] {
                    return V{double(pick(next, 7)) - 3, double(pick(next, 7)) - 3, double(pick(next, 7)) - 3};
                  };
@@ -447,13 +439,13 @@ std::vector<Family> fan_shot_family_list(bool ray) {
                  const V x = pick(next, 2) == 0 ? f.ring[pick(next, n)] : 0.5 * (f.center + f.ring[pick(next, n)]);
                  V s = pick(next, 4) == 0 ? f.center : ivec();
                  if (dot(x - s, x - s) == 0) s = s + V{1, 2, 3};
-                 return shot_fan(s, ray ? x - s : s + 2.0 * (x - s), f);
+                 return shot_fan(in, s, ray ? x - s : s + 2.0 * (x - s), f);
                }});
   f.push_back({"watertight",
                "a closed mesh's fan (a vertex's one-ring of the subdivided icosahedron or a height grid, or the two "
                "triangles of an edge), sized 10^[-3,3], 10^k from the origin; the shot aimed exactly at the shared "
                "vertex or at a point of the shared edge, from near or far",
-               range(0, 6), [ray](Next& next, int k) { return shot_fan_watertight(next, ray, k); }});
+               range(0, 6), [ray](Next& next, int k, Inputs& in) { return shot_fan_watertight(in, next, ray, k); }});
   return f;
 }
 
@@ -461,27 +453,27 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
   std::vector<Family> f;
   f.push_back({"uniform", ray ? "source in [-3,3]^3, a unit direction, vertices in [-2,2]^3"
                               : "source and target in [-3,3]^3, vertices in [-2,2]^3",
-               {0}, [ray](Next& next, int) { return shot_tri_uniform(next, ray); }});
+               {0}, [ray](Next& next, int, Inputs& in) { return shot_tri_uniform(in, next, ray); }});
   f.push_back({"near-edge", "aimed at a point of an edge or at a vertex, moved 2^-k of the edge's length across it",
-               tangency_scales(), [ray](Next& next, int k) {
+               tangency_scales(), [ray](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 2);
-                 return shot_tri_edge(next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
+                 return shot_tri_edge(in, next, ray, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
   f.push_back({"long-range", "aimed at an edge or a vertex to within 1e-9, the triangle 10^k from the origin", decades(),
-               [ray](Next& next, int k) {
+               [ray](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 2);
                  const V offset = std::pow(10.0, k) * unit(next);
-                 return shot_tri_edge(next, ray, uni(next, -1e-9, 1e-9), offset, kind);
+                 return shot_tri_edge(in, next, ray, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"grazing", "aimed at an interior point, 2^-k radians from the triangle's plane", tangency_scales(),
-               [ray](Next& next, int k) { return shot_tri_grazing(next, ray, k); }});
+               [ray](Next& next, int k, Inputs& in) { return shot_tri_grazing(in, next, ray, k); }});
   f.push_back({"coplanar", "a shot exactly in the plane of a triangle with integer vertices", {0},
-               [ray](Next& next, int) { return shot_tri_coplanar(next, ray); }});
+               [ray](Next& next, int, Inputs& in) { return shot_tri_coplanar(in, next, ray); }});
   f.push_back({"degenerate",
                ray ? "zero-area triangles (collinear vertices, a point), the source on the triangle, slivers"
                    : "zero-area triangles (collinear vertices, a point), the source on the triangle, zero-length "
                      "segments, slivers",
-               {0}, [ray](Next& next, int) {
+               {0}, [ray](Next& next, int, Inputs& in) {
                  auto ivec = [&] {
                    return V{double(pick(next, 9)) - 4, double(pick(next, 9)) - 4, double(pick(next, 9)) - 4};
                  };
@@ -489,7 +481,7 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
                  // shots through points of the integer lattice, so that they meet edges exactly
                  const V s = ivec(), x = ivec();
                  const V dir = dot(x - s, x - s) == 0 ? V{1, 0, 0} : x - s;
-                 auto shot = [&](V src, V dr, V p, V q, V r) { return shot_tri(src, ray ? dr : src + dr, p, q, r); };
+                 auto shot = [&](V src, V dr, V p, V q, V r) { return shot_tri(in, src, ray ? dr : src + dr, p, q, r); };
                  switch (pick(next, ray ? 5 : 6)) {
                    case 0: return shot(s, dir, a, b, a + 0.5 * (b - a));                  // collinear
                    case 1: return shot(s, dir, x, x, x);                                  // a point on the shot
@@ -500,41 +492,41 @@ std::vector<Family> triangle_shot_family_list(bool ray) {
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
-               [ray](Next& next, int k) { return scaled(shot_tri_uniform(next, ray), 15, k); }});
+               [ray](Next& next, int k, Inputs& in) { shot_tri_uniform(in, next, ray); scaled(in, 15, k); }});
   return f;
 }
 
 std::vector<Family> sphere_triangle_family_list() {
   std::vector<Family> f;
   f.push_back({"uniform", "centre in [-3,3]^3, radius in [0.1,2], vertices in [-2,2]^3", {0},
-               [](Next& next, int) { return sphere_tri_uniform(next); }});
+               [](Next& next, int, Inputs& in) { return sphere_tri_uniform(in, next); }});
   f.push_back({"near-touching", "touching the face, an edge or a vertex, at rho (1 +- 2^-k) from it", tangency_scales(),
-               [](Next& next, int k) {
+               [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 3);
-                 return sphere_tri_touching(next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
+                 return sphere_tri_touching(in, next, sign(next) * std::ldexp(1.0, -k), V{0, 0, 0}, kind);
                }});
-  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k) {
+  f.push_back({"long-range", "touching to within 1e-9 radii, 10^k from the origin", decades(), [](Next& next, int k, Inputs& in) {
                  const int kind = pick(next, 3);
                  const V offset = std::pow(10.0, k) * unit(next);
-                 return sphere_tri_touching(next, uni(next, -1e-9, 1e-9), offset, kind);
+                 return sphere_tri_touching(in, next, uni(next, -1e-9, 1e-9), offset, kind);
                }});
   f.push_back({"degenerate", "zero-area triangles (a segment, a point), the centre on the triangle, radius 0, slivers",
-               {0}, [](Next& next, int) {
+               {0}, [](Next& next, int, Inputs& in) {
                  const V a = uvec(next, -2, 2), b = uvec(next, -2, 2), d = uvec(next, -2, 2);
                  const double rho = uni(next, 0.25, 2);
                  switch (pick(next, 5)) {
                    case 0: {  // collinear
                      const V e = a + uni(next, -1, 2) * (b - a);
-                     return sphere_tri(uvec(next, -3, 3), rho, a, b, e);
+                     return sphere_tri(in, uvec(next, -3, 3), rho, a, b, e);
                    }
-                   case 1: return sphere_tri(uvec(next, -3, 3), rho, a, a, a);                              // a point
-                   case 2: return sphere_tri(a + 0.3 * (b - a) + 0.3 * (d - a), rho, a, b, d);             // centre on it
-                   case 3: return sphere_tri(uvec(next, -3, 3), 0.0, a, b, d);                              // radius 0
-                   default: return sphere_tri(uvec(next, -3, 3), rho, a, b, b + std::ldexp(1.0, -40) * (d - b));  // a sliver
+                   case 1: return sphere_tri(in, uvec(next, -3, 3), rho, a, a, a);                              // a point
+                   case 2: return sphere_tri(in, a + 0.3 * (b - a) + 0.3 * (d - a), rho, a, b, d);             // centre on it
+                   case 3: return sphere_tri(in, uvec(next, -3, 3), 0.0, a, b, d);                              // radius 0
+                   default: return sphere_tri(in, uvec(next, -3, 3), rho, a, b, b + std::ldexp(1.0, -40) * (d - b));  // a sliver
                  }
                }});
   f.push_back({"magnitude", "the uniform family scaled by 10^k", magnitudes(),
-               [](Next& next, int k) { return scaled(sphere_tri_uniform(next), 13, k); }});
+               [](Next& next, int k, Inputs& in) { sphere_tri_uniform(in, next); scaled(in, 13, k); }});
   return f;
 }
 

@@ -64,11 +64,10 @@ inline std::vector<int> magnitudes() {
   return v;
 }
 
-// Scales every coordinate and length of a case by 10^k.
-inline Inputs scaled(Inputs in, int n, int k) {
+// Scales the first n inputs of a case (its coordinates and lengths) by 10^k.
+inline void scaled(Inputs& in, int n, int k) {
   const double f = std::pow(10.0, k);
   for (int i = 0; i < n; ++i) in[i] *= f;
-  return in;
 }
 
 }  // namespace cdref::fuzz::family

@@ -92,8 +92,12 @@ struct Family {
   std::string name;
   std::string describe;
   std::vector<int> scales;  // the scale parameter k; its meaning is in `describe`
-  // Makes case inputs from a stream of 64-bit random words.
-  std::function<Inputs(CaseStream& next, int scale)> make;
+  // Makes a case's inputs from a stream of 64-bit random words, writing them into `in`, which
+  // is all zero on entry. It writes no slot past its query's inputs (QueryInfo::inputs) and
+  // may leave some of those zero (a polygon's unused vertices): a block of cases reuses its
+  // storage by zeroing only the query's inputs between cases. Written into place, not
+  // returned: returning a case cleared all 64 slots each time, half of making a ray-sphere case.
+  std::function<void(CaseStream& next, int scale, Inputs& in)> make;
 };
 
 // An output group of a query: 1 or 3 components (`name`, or `name_x`, `name_y`, `name_z`).
@@ -238,6 +242,9 @@ Inputs make_case(std::uint64_t seed, Query q, const Family& f, int scale, std::u
 // make_case_of(cell_key(seed, q, f, scale), f, scale, i).
 std::uint64_t cell_key(std::uint64_t seed, Query q, const Family& f, int scale);
 Inputs make_case_of(std::uint64_t key, const Family& f, int scale, std::uint64_t i);
+// The same written into `out`, which must hold zero in every slot the family may write (the
+// query's inputs) and keeps its other slots.
+void make_case_into(std::uint64_t key, const Family& f, int scale, std::uint64_t i, Inputs& out);
 
 // ---- statistics ----
 // Errors are distances in ulps between a value and the correctly rounded truth: the
