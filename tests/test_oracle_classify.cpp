@@ -1366,6 +1366,73 @@ TEST_CASE("the sphere filter's sigma decides only with the exact sign, its crude
   CHECK(left > 100);
 }
 
+TEST_CASE("sphere-box on double words decides only with the exact sign, down to exact touching",
+          "[oracle-classify][sphere-box]") {
+  // Sphere-box's second stage (staged::sphere_box_words, classify.hpp). A box of extents 2^-20
+  // to 2^20 around a centre up to 2^40 of its size from the origin (so that centre - box centre
+  // cancels), a sphere touching a face, an edge or a corner to within +-2^-j of its radius for j
+  // up to 60, and one case in eight placed to touch exactly (small dyadic inputs along one axis,
+  // Q = 0): wherever it decides, its answer is the exact one (CGAL::Gmpq), with fused and split
+  // products alike; it decides most, and leaves every exact touching.
+  using Qx = CGAL::Gmpq;
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int decided = 0, left = 0, wrong = 0, touching = 0, touching_left = 0;
+  for (int n = 0; n < 40000; ++n) {
+    const double size = std::ldexp(1.0, int(rng() % 41) - 20);
+    Vec3<double> bc = V(unit(rng), unit(rng), unit(rng)) * std::ldexp(size, int(rng() % 41)), h, c;
+    for (int i = 0; i < 3; ++i) h[i] = size * (0.55 + unit(rng) / 2);
+    double rho = size * (0.75 + unit(rng) / 4);
+    const bool exact_touch = n % 8 == 0;
+    if (exact_touch) {  // along axis i: c_i = b_i + h_i + rho exactly, the others inside
+      bc = V(double(rng() % 64), double(rng() % 64), double(rng() % 64));
+      h = V(double(1 + rng() % 8), double(1 + rng() % 8), double(1 + rng() % 8));
+      rho = double(1 + rng() % 8);
+      const int i = int(rng() % 3);
+      c = bc;
+      c[i] += (rng() % 2 ? 1 : -1) * (h[i] + rho);
+    } else {
+      const int dims = 1 + int(rng() % 3);
+      Vec3<double> p = bc, dir = V(0, 0, 0);
+      for (int i = 0; i < 3; ++i) {
+        if (i < dims) {
+          const double sg = rng() % 2 ? 1 : -1;
+          p[i] += sg * h[i];
+          dir[i] = sg * (0.2 + (1 + unit(rng)) / 2);
+        } else {
+          p[i] += h[i] * unit(rng);
+        }
+      }
+      const double d = rho * (1 + std::ldexp(unit(rng), -int(rng() % 61)));
+      c = p + (d / dir.norm()) * dir;
+    }
+    const Sphere<double> sp{c, rho};
+    const Box<double> box{bc, h};
+    const int got = staged::sphere_box_words(sp, box);
+    // ... the same decisions from split products (both exact, the same sums)
+    if (staged::sphere_box_words_range(sp, box))
+      REQUIRE(staged::sphere_box_words_with<robust::SplitProduct>(sp, box) == got);
+    touching += exact_touch;
+    if (got == staged::unknown) {
+      ++left;
+      touching_left += exact_touch;
+      continue;
+    }
+    ++decided;
+    Qx q = -Qx(rho) * Qx(rho);
+    for (int i = 0; i < 3; ++i) {
+      const Qx ci = Qx(c[i]) - Qx(bc[i]), hi = Qx(h[i]);
+      const Qx v = ci < -hi ? -hi - ci : (ci > hi ? hi - ci : Qx(0));
+      q += v * v;
+    }
+    if (got != int(CGAL::sign(q) <= 0)) ++wrong;
+  }
+  INFO("decided " << decided << ", left " << left << ", exact touching " << touching << " (left " << touching_left << ")");
+  CHECK(wrong == 0);
+  CHECK(decided > 30000);
+  CHECK(touching_left == touching);
+}
+
 TEST_CASE("sigma on double words decides only with the exact sign, within about u^2 of tangency",
           "[oracle-classify][sphere-cast]") {
   // The sphere casts' and Algorithm 3.2's second stage (staged::sigma_words, classify.hpp).

@@ -463,6 +463,58 @@ struct SphereStaged {
   int sigma() const { const int s = f.sigma(); return s != unknown ? s : x.sigma(); }
 };
 
+// ---- the sign of a signed sum of squares on double words ----
+// sum_k sg_k v_k^2 (sg_k = +1 or -1), each v_k known within eps_k of a double word X_k + L_k
+// (|L_k| <= u |X_k|, from two_sum): the second stage of the sphere casts and Algorithm 3.2
+// (sigma, below) and of sphere-box (Q, below). A square: |v^2 - (X + L)^2| <= eps (2 (|X| +
+// |L|) + eps); (X + L)^2 = Z.hi + Z.lo + 2 X L + L^2 with Z = two_prod(X, X) (exact, or within
+// eta where X^2 < 2^-968), fl(2 X L) within 2u^2 X^2 + eta, L^2 <= u^2 X^2 left out: its error
+// is at most eps (2 (|X| + |L|) + eps) + 3u^2 X^2 + 3 eta. The N values sg_k Z.hi are summed
+// exactly (a chain of two_sum, its N - 1 errors kept), the 3N - 1 small terms (each Z.lo, each
+// 2 X L, the chain's errors) in double, within gamma_{3N-2} <= 16u (1 + 16u) (N <= 6) of the
+// sum of their magnitudes; then V = fl(H + that sum) is within u |V| of H + it. The sign of V
+// is the sum's when |V| (1 - u) exceeds the sum of every bound above, computed with a factor
+// 1 + 64u for the rounding of the bounds themselves (a few dozen nonnegative terms, each
+// rounded a few times). Returns +1, -1 or `unknown` (every |X_k| at most 2^500, so that no
+// square overflows and two_prod's split is exact; otherwise, and on a non-finite bound,
+// unknown). Mul: the exact products' policy (robust/eft.hpp).
+template <class Mul, int N>
+int signed_squares(const double (&X)[N], const double (&L)[N], const double (&eps)[N], const double (&sg)[N]) {
+  using std::fabs;
+  using P2 = robust::Pair<double>;
+  constexpr double u = 0x1p-53, eta = 0x1p-1074;
+  static_assert(N <= 6, "the small terms' bound is written for at most 6 squares");
+  double H = 0, small[3 * N], err = 0;
+  int ns = 0;
+  bool ok = true;
+  for (int k = 0; k < N; ++k) {
+    ok = ok & (fabs(X[k]) <= 0x1p500);
+    const P2 Z = Mul::prod(X[k], X[k]);
+    small[ns++] = sg[k] * Z.lo;
+    small[ns++] = sg[k] * ((2 * X[k]) * L[k]);
+    err += eps[k] * (2 * (fabs(X[k]) + fabs(L[k])) + eps[k]) + 3 * u * u * (X[k] * X[k]) + 3 * eta;
+    if (k == 0) {
+      H = sg[k] * Z.hi;
+    } else {
+      const P2 t = robust::two_sum(H, sg[k] * Z.hi);
+      H = t.hi;
+      small[ns++] = t.lo;
+    }
+  }
+  if (!ok) return unknown;
+  // (summed in two interleaved halves: one chain of additions was this stage's latency)
+  double lows[2] = {0, 0}, mags[2] = {0, 0};
+  for (int k = 0; k < ns; ++k) {
+    lows[k & 1] += small[k];
+    mags[k & 1] += fabs(small[k]);
+  }
+  const double V = H + (lows[0] + lows[1]);
+  const double E = (err + 16 * u * (1 + 16 * u) * (mags[0] + mags[1])) * (1 + 64 * u);
+  if (!std::isfinite(V) || !std::isfinite(E)) return unknown;
+  if (fabs(V) * (1 - u) > E) return V > 0 ? 1 : -1;
+  return unknown;
+}
+
 // sigma = |r|^2 rho^2 - |s x r|^2 on double words: the sphere casts' and Algorithm 3.2's second
 // stage, where the filter leaves sigma's sign open (within about u |s|^2 |r|^2 of 0, the line
 // near tangency). Inputs: s = source - centre and r (target - source, or the direction) as exact
@@ -479,20 +531,12 @@ struct SphereStaged {
 //   D_k: (a, b) = two_prod(r_k.hi, rho) exactly; lo = fl(b + fl(r_k.lo rho)); (X, L) =
 //     two_sum(a, lo): eps_D <= u |r.lo rho| + eta + u |lo| <= 2.1 u^2 |a| + 2 eta, taken as
 //     4 u^2 |a| + 4 eta.
-//   A square: v^2 - (X + L)^2 <= eps (2 (|X| + |L|) + eps); (X + L)^2 = Z.hi + Z.lo + 2 X L + L^2
-//     with Z = two_prod(X, X) (exact, or within eta where X^2 < 2^-968), fl(2 X L) within
-//     2u^2 X^2 + eta, L^2 <= u^2 X^2 left out: its error is at most eps (2 (|X| + |L|) + eps) +
-//     3u^2 X^2 + 3 eta.
-// The six Z.hi are summed exactly (a chain of two_sum, its five errors kept), the 17 small terms
-// (six Z.lo, six 2 X L, five errors) in double, within 16u (1 + 16u) of the sum of their
-// magnitudes; then V = fl(H + that sum) is within u |V| of H + it. The sign of V is sigma's when
-// |V| (1 - u) exceeds the sum of every bound above, computed with a factor 1 + 64u for the
-// rounding of the bounds themselves (a few dozen nonnegative terms, each rounded a few times).
+// Then the sign of sum_k (D_k^2 - C_k^2) by signed_squares.
 // Range: every nonzero s.hi, r.hi and rho in [2^-300, 2^200] (the inputs scaled() leaves are
 // in [2^-180, 2^100], their differences above 2^-233), so each two_prod of two of them is exact
-// and no square overflows; otherwise, and on a non-finite bound, unknown.
-// Mul: the exact products' policy (robust/eft.hpp); sigma_words below takes the fused one where
-// the CPU has the instruction (the split products were half of this stage's time).
+// and no square overflows; otherwise unknown.
+// sigma_words below takes the fused products where the CPU has the instruction (the split
+// products were half of this stage's time).
 template <class Mul>
 int sigma_words_with(const robust::Pair<double> (&s)[3], const robust::Pair<double> (&r)[3], double rho) {
   using std::fabs;
@@ -502,44 +546,19 @@ int sigma_words_with(const robust::Pair<double> (&s)[3], const robust::Pair<doub
   bool ok = in_range(rho);
   for (int i = 0; i < 3; ++i) ok = ok & in_range(s[i].hi) & in_range(r[i].hi);
   if (!ok) return unknown;
-  const auto prod = [](double a, double b) { return Mul::prod(a, b); };
-  double high[6], small[17], err = 0;
-  int ns = 0;
-  // v^2 (sign +1) or -v^2 (sign -1) for v within eps of X + L
-  const auto square = [&](int k, double X, double L, double eps, double sign) {
-    const P2 Z = prod(X, X);
-    high[k] = sign * Z.hi;
-    small[ns++] = sign * Z.lo;
-    small[ns++] = sign * ((2 * X) * L);
-    err += eps * (2 * (fabs(X) + fabs(L)) + eps) + 3 * u * u * (X * X) + 3 * eta;
-  };
+  double X[6], L[6], eps[6], sg[6];
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const P2 Pk = prod(s[i].hi, r[j].hi), Qk = prod(s[j].hi, r[i].hi);
+    const P2 Pk = Mul::prod(s[i].hi, r[j].hi), Qk = Mul::prod(s[j].hi, r[i].hi);
     const P2 xy = robust::two_sum(Pk.hi, -Qk.hi);
     const double m = (s[i].hi * r[j].lo + s[i].lo * r[j].hi) - (s[j].hi * r[i].lo + s[j].lo * r[i].hi);
     const P2 C = robust::two_sum(xy.hi, ((xy.lo + Pk.lo) - Qk.lo) + m);
-    square(k, C.hi, C.lo, 32 * u * u * (fabs(Pk.hi) + fabs(Qk.hi)) + 8 * eta, -1);
-    const P2 ab = prod(r[k].hi, rho);
+    X[k] = C.hi, L[k] = C.lo, eps[k] = 32 * u * u * (fabs(Pk.hi) + fabs(Qk.hi)) + 8 * eta, sg[k] = -1;
+    const P2 ab = Mul::prod(r[k].hi, rho);
     const P2 D = robust::two_sum(ab.hi, ab.lo + r[k].lo * rho);
-    square(3 + k, D.hi, D.lo, 4 * u * u * fabs(ab.hi) + 4 * eta, +1);
+    X[3 + k] = D.hi, L[3 + k] = D.lo, eps[3 + k] = 4 * u * u * fabs(ab.hi) + 4 * eta, sg[3 + k] = 1;
   }
-  double H = high[0];
-  for (int k = 1; k < 6; ++k) {
-    const P2 t = robust::two_sum(H, high[k]);
-    H = t.hi;
-    small[ns++] = t.lo;
-  }
-  double lows = 0, mags = 0;
-  for (int k = 0; k < ns; ++k) {
-    lows += small[k];
-    mags += fabs(small[k]);
-  }
-  const double V = H + lows;
-  const double E = (err + 16 * u * (1 + 16 * u) * mags) * (1 + 64 * u);
-  if (!std::isfinite(V) || !std::isfinite(E)) return unknown;
-  if (fabs(V) * (1 - u) > E) return V > 0 ? 1 : -1;
-  return unknown;
+  return signed_squares<Mul>(X, L, eps, sg);
 }
 inline int sigma_words(const robust::Pair<double> (&s)[3], const robust::Pair<double> (&r)[3], double rho) {
   return robust::with_products([&](auto mul) { return sigma_words_with<decltype(mul)>(s, r, rho); });
@@ -808,7 +827,70 @@ inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
   if (const int r = sphere_words(s, b); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
-inline int double_word(const Sphere<double>& a, const Box<double>& b) { return certain_or_unknown(robust::decide(a, b)); }
+// Sphere-box: Q = |v|^2 - rho^2 on double words (v the centre's offset from the box, as in
+// sphere_filter.hpp), where the filter leaves its sign open (within about u (|c| + h)^2 of 0,
+// near touching). On the scaled inputs c_i - b_i = ch + cl exactly (two_sum); the clamp is
+// exact (c_i < b_i - h_i iff ch < -h_i, or ch = -h_i and cl < 0: rounding is monotone;
+// likewise above); a clamped v_i = +-h_i - ch - cl = a + b + e exactly ((p, e) = two_sum(+-h_i,
+// -ch), (a, b) = two_sum(p, -cl)), taken as X + L = two_sum(a, fl(b + e)), within eps = u |fl(b
+// + e)| + eta of v_i (one rounding to nearest, at most u times the rounded value, plus eta where
+// it is subnormal). rho: X = rho, L = 0, eps = 0. Q's sign by signed_squares; Q <= 0 is an
+// intersection (the closed ball and the closed box), and no axis clamped puts the centre in
+// the box: 1. Range: every nonzero input in [2^-300, 2^200] (scaled() leaves them in [2^-180,
+// 2^100]), so that |v_i| < 2^202 and each square is a normal number or within eta (as sigma's).
+// Inputs already in that range are taken as they are (scaled() was most of this stage's time).
+inline bool sphere_box_words_range(const Sphere<double>& sp, const Box<double>& box) {
+  const auto in_range = [](double x) {  // (without a branch: a branch per input was most of this stage's time)
+    const double a = std::fabs(x);
+    return (a <= 0x1p200) & ((a >= 0x1p-300) | (a == 0));
+  };
+  bool ok = in_range(sp.radius);
+  for (int i = 0; i < 3; ++i) ok = ok & in_range(sp.center[i]) & in_range(box.center[i]) & in_range(box.extent[i]);
+  return ok;
+}
+template <class Mul>
+int sphere_box_words_with(const Sphere<double>& sp, const Box<double>& box) {
+  using std::fabs;
+  using P2 = robust::Pair<double>;
+  constexpr double u = 0x1p-53, eta = 0x1p-1074;
+  double X[4] = {0, 0, 0, sp.radius}, L[4] = {0, 0, 0, 0}, eps[4] = {0, 0, 0, 0}, sg[4] = {1, 1, 1, -1};
+  bool outside = false;
+  for (int i = 0; i < 3; ++i) {
+    const P2 c = robust::two_sum(sp.center[i], -box.center[i]);
+    const double h = box.extent[i];
+    double side;
+    if (c.hi < -h || (c.hi == -h && c.lo < 0))
+      side = -h;
+    else if (c.hi > h || (c.hi == h && c.lo > 0))
+      side = h;
+    else
+      continue;  // v_i = 0
+    outside = true;
+    const P2 p = robust::two_sum(side, -c.hi);
+    const P2 q = robust::two_sum(p.hi, -c.lo);
+    const double lo = q.lo + p.lo;
+    const P2 v = robust::two_sum(q.hi, lo);
+    X[i] = v.hi, L[i] = v.lo, eps[i] = u * fabs(lo) + eta;
+  }
+  if (!outside) return 1;
+  const int q = signed_squares<Mul>(X, L, eps, sg);
+  return q == unknown ? unknown : int(q < 0);
+}
+inline int sphere_box_words(const Sphere<double>& sp0, const Box<double>& box0) {
+  Sphere<double> sp = sp0;
+  Box<double> box = box0;
+  if (!sphere_box_words_range(sp, box) && !(scaled(sp0, box0, sp, box) && sphere_box_words_range(sp, box)))
+    return unknown;
+  return robust::with_products([&](auto mul) { return sphere_box_words_with<decltype(mul)>(sp, box); });
+}
+// After the robust tier's own filter (robust/sphere_box.hpp: it decides to within about u^2 of
+// the scale from touching, for less), before its decision (2^-52 from touching it took about
+// 200 ns a case, its expansions over 19 exact products).
+inline int double_word(const Sphere<double>& a, const Box<double>& b) {
+  if (const int f = robust::detail::sphere_box_filter_own(a, b)) return int(f < 0);
+  if (const int r = sphere_box_words(a, b); r != unknown) return r;
+  return certain_or_unknown(robust::decide(a, b));
+}
 // Algorithm 3.2's answer is the segment cast's (a segment meets the closed ball exactly when
 // Algorithm 3.1's cast hits), whose double words leave a band u^2 wide (decide_closest's, on
 // the closest point, is u wide: it decided few cases 2^-52 from tangency)
