@@ -89,6 +89,7 @@
 #include <cdref/oracle/sphere_filter.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
+#include <cdref/oracle/word_bounds.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
 #include <cdref/robust/sphere_box.hpp>
@@ -486,9 +487,9 @@ int signed_squares(const double (&X)[N], const double (&L)[N], const double (&ep
   static_assert(N <= 6, "the small terms' bound is written for at most 6 squares");
   double H = 0, small[3 * N], err = 0;
   int ns = 0;
-  bool ok = true;
+  int ok = 1;  // (int, not bool: & without a branch, and no warning for & on booleans)
   for (int k = 0; k < N; ++k) {
-    ok = ok & (fabs(X[k]) <= 0x1p500);
+    ok &= int(fabs(X[k]) <= 0x1p500);
     const P2 Z = Mul::prod(X[k], X[k]);
     small[ns++] = sg[k] * Z.lo;
     small[ns++] = sg[k] * ((2 * X[k]) * L[k]);
@@ -542,9 +543,9 @@ int sigma_words_with(const robust::Pair<double> (&s)[3], const robust::Pair<doub
   using std::fabs;
   using P2 = robust::Pair<double>;
   constexpr double u = 0x1p-53, eta = 0x1p-1074;
-  const auto in_range = [](double x) { return x == 0 || (fabs(x) >= 0x1p-300 && fabs(x) <= 0x1p200); };
-  bool ok = in_range(rho);
-  for (int i = 0; i < 3; ++i) ok = ok & in_range(s[i].hi) & in_range(r[i].hi);
+  const auto in_range = [](double x) { return int(x == 0 || (fabs(x) >= 0x1p-300 && fabs(x) <= 0x1p200)); };
+  int ok = in_range(rho);
+  for (int i = 0; i < 3; ++i) ok &= in_range(s[i].hi) & in_range(r[i].hi);
   if (!ok) return unknown;
   double X[6], L[6], eps[6], sg[6];
   for (int k = 0; k < 3; ++k) {
@@ -704,32 +705,43 @@ struct BoxExact {
     return sign(c);
   }
 };
+// The filter's signs, the plane pairs on double words (oracle/word_bounds.hpp, AabbWords), then
+// the expansions. (The pairs on words: 2^-52 from grazing, a cast the filter left took about 500
+// ns a case, nine exact pairs at most, each a product of expansions.)
+template <class Mul>
 struct BoxStaged {
   BoxFilter f;
+  word_bounds::AabbWords<Mul> w;
   BoxExact x;
   bool bounded;
   BoxStaged(const Vec3<double>& s, const Vec3<double>& t, const Box<double>& b, bool segment)
-      : f(s, t, b, segment), x(s, t, b, segment), bounded(segment) {}
+      : f(s, t, b, segment), w(s, t, b, segment), x(s, t, b, segment), bounded(segment) {}
   // (the filter's outcodes only within its range test, BoxFilter::ok)
   int src_lo(int i) const { const int s = f.ok ? f.src_lo(i) : unknown; return s != unknown ? s : x.src_lo(i); }
   int src_hi(int i) const { const int s = f.ok ? f.src_hi(i) : unknown; return s != unknown ? s : x.src_hi(i); }
   int tgt_lo(int i) const { const int s = f.ok ? f.tgt_lo(i) : unknown; return s != unknown ? s : x.tgt_lo(i); }
   int tgt_hi(int i) const { const int s = f.ok ? f.tgt_hi(i) : unknown; return s != unknown ? s : x.tgt_hi(i); }
   int dir_sign(int i) const { return x.dir_sign(i); }
-  int compare(int p, int q) const { const int s = f.compare(p, q); return s != unknown ? s : x.compare(p, q); }
+  int compare(int p, int q) const {
+    int s = f.compare(p, q);
+    if (s == unknown) s = w.compare(p, q);
+    return s != unknown ? s : x.compare(p, q);
+  }
 };
 
 inline int expansion(const Segment<double>& seg0, const Box<double>& box0) {
   Segment<double> seg;
   Box<double> box;
   if (!scaled(seg0, box0, seg, box)) return unknown;
-  return hit_box_logic(BoxStaged(seg.source, seg.target, box, true));
+  return robust::with_products(
+      [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(seg.source, seg.target, box, true)); });
 }
 inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
   Ray<double> ray;
   Box<double> box;
   if (!scaled(ray0, box0, ray, box)) return unknown;
-  return hit_box_logic(BoxStaged(ray.source, ray.direction, box, false));
+  return robust::with_products(
+      [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(ray.source, ray.direction, box, false)); });
 }
 
 // ======================= sphere-box =======================
@@ -842,11 +854,11 @@ inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
 inline bool sphere_box_words_range(const Sphere<double>& sp, const Box<double>& box) {
   const auto in_range = [](double x) {  // (without a branch: a branch per input was most of this stage's time)
     const double a = std::fabs(x);
-    return (a <= 0x1p200) & ((a >= 0x1p-300) | (a == 0));
+    return int(a <= 0x1p200) & (int(a >= 0x1p-300) | int(a == 0));
   };
-  bool ok = in_range(sp.radius);
-  for (int i = 0; i < 3; ++i) ok = ok & in_range(sp.center[i]) & in_range(box.center[i]) & in_range(box.extent[i]);
-  return ok;
+  int ok = in_range(sp.radius);
+  for (int i = 0; i < 3; ++i) ok &= in_range(sp.center[i]) & in_range(box.center[i]) & in_range(box.extent[i]);
+  return ok != 0;
 }
 template <class Mul>
 int sphere_box_words_with(const Sphere<double>& sp, const Box<double>& box) {

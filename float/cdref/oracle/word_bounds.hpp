@@ -175,6 +175,41 @@ inline Word abs_word(const Word& w) { return pair_less(w.v, {0.0, 0.0}) ? negate
 inline Word min_word(const Word& a, const Word& b) { return {pair_less(b.v, a.v) ? b.v : a.v, std::max(a.e, b.e)}; }
 inline Word max_word(const Word& a, const Word& b) { return {pair_less(a.v, b.v) ? b.v : a.v, std::max(a.e, b.e)}; }
 
+// sign(lambda_a - lambda_b) for an entering plane a and an exiting plane b (planes 2i lower, 2i +
+// 1 upper; hit_box_logic asks for no other pair), from the outcode words sL_i = Y_i + H_i, sU_i =
+// Y_i - H_i at the source and the direction's d_i: lambda_a = N_a / d_i with N_a = -sL_i (lower)
+// or -sU_i (upper), so lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j), and the signs of
+// d_i and d_j are known from the planes: an entering lower plane has d_i > 0, an entering upper
+// one d_i < 0, an exiting lower one d_j < 0, an exiting upper one d_j > 0 (sigma below).
+template <class Mul>
+int entering_order(const Word (&sL)[3], const Word (&sU)[3], const Word (&d)[3], int a, int b) {
+  const int i = a / 2, j = b / 2;
+  const Word Na = negated(a % 2 == 0 ? sL[i] : sU[i]), Nb = negated(b % 2 == 0 ? sL[j] : sU[j]);
+  const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? -1 : 1);
+  const int r = sign_of(add_words(mul_words<Mul>(Na, d[j]), mul_words<Mul>(Nb, d[i]), -1));
+  return r == staged::unknown ? staged::unknown : sigma * r;
+}
+
+// The plane pairs of Algorithm 3.3 on an axis-aligned box on double words: the oracle's second
+// stage of the box casts tries them between the filter's signs and the expansions
+// (exact/cdref/oracle/classify.hpp, BoxStaged). Y_i = s_i - c_i is an exact pair (Two-Sum), +-h_i
+// added by add_words; d_i = t_i - s_i an exact pair (a segment) or the direction. Their bounds
+// are of order u^2 of the magnitudes: only pairs within about that of a tie are left to the
+// expansions. Range: every input at most 2^100 (BoxStaged runs on scaled inputs).
+template <class Mul>
+struct AabbWords {
+  Word sL[3], sU[3], d[3];
+  AabbWords(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool segment) {
+    for (int i = 0; i < 3; ++i) {
+      const Word y{robust::two_sum(src[i], -b.center[i]), 0.0}, h{{b.extent[i], 0.0}, 0.0};
+      sL[i] = add_words(y, h, 1);
+      sU[i] = add_words(y, h, -1);
+      d[i] = segment ? Word{robust::two_sum(rt[i], -src[i]), 0.0} : Word{{rt[i], 0.0}, 0.0};
+    }
+  }
+  int compare(int a, int b) const { return entering_order<Mul>(sL, sU, d, a, b); }
+};
+
 // Stage 2 of a cast on an oriented box (header): the signs of ObbFilter on double words.
 template <class Mul>
 struct ObbWords {
@@ -226,14 +261,7 @@ struct ObbWords {
   int tgt_lo(int i) const { return sign_of(tL[i]); }
   int tgt_hi(int i) const { return sign_of(tU[i]); }
   int dir_sign(int i) const { return sign_of(d[i]); }  // never a certain 0
-  // sign(lambda_a - lambda_b) for an entering plane a and an exiting plane b, as ObbFilter's
-  int compare(int a, int b) const {
-    const int i = a / 2, j = b / 2;
-    const Word Na = negated(a % 2 == 0 ? sL[i] : sU[i]), Nb = negated(b % 2 == 0 ? sL[j] : sU[j]);
-    const int sigma = (a % 2 == 0 ? 1 : -1) * (b % 2 == 0 ? -1 : 1);
-    const int r = sign_of(add_words(mul_words<Mul>(Na, d[j]), mul_words<Mul>(Nb, d[i]), -1));
-    return r == staged::unknown ? staged::unknown : sigma * r;
-  }
+  int compare(int a, int b) const { return entering_order<Mul>(sL, sU, d, a, b); }
 };
 
 template <class Mul>
