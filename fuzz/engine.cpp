@@ -348,8 +348,7 @@ void run_block_classification(const Cell& cell, const std::uint64_t* index, std:
   for (std::size_t j = 0; j < impls.size(); ++j)
     if (stats[j]) (impls[j]->precision == 24 ? need_float : need_wide) = true;
   // each case made in its place, over the slots its query's inputs can take, zeroed first; the
-  // slots past `width` are zero from the first resize on (clearing all 64 slots of every case
-  // took as long as the family drawing it)
+  // slots past `width` are zero from the first resize on (Family::make says why)
   s.in.resize(m);
   s.width = std::max(s.width, qi.inputs.size());
   for (std::size_t k = 0; k < m; ++k) {

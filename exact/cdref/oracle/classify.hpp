@@ -503,7 +503,7 @@ int signed_squares(const double (&X)[N], const double (&L)[N], const double (&ep
     }
   }
   if (!ok) return unknown;
-  // (summed in two interleaved halves: one chain of additions was this stage's latency)
+  // (summed in two interleaved halves: two shorter chains of dependent additions)
   double lows[2] = {0, 0}, mags[2] = {0, 0};
   for (int k = 0; k < ns; ++k) {
     lows[k & 1] += small[k];
@@ -850,9 +850,9 @@ inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
 // intersection (the closed ball and the closed box), and no axis clamped puts the centre in
 // the box: 1. Range: every nonzero input in [2^-300, 2^200] (scaled() leaves them in [2^-180,
 // 2^100]), so that |v_i| < 2^202 and each square is a normal number or within eta (as sigma's).
-// Inputs already in that range are taken as they are (scaled() was most of this stage's time).
+// Inputs already in that range are taken as they are, unscaled.
 inline bool sphere_box_words_range(const Sphere<double>& sp, const Box<double>& box) {
-  const auto in_range = [](double x) {  // (without a branch: a branch per input was most of this stage's time)
+  const auto in_range = [](double x) {  // (int flags: no branch per input)
     const double a = std::fabs(x);
     return int(a <= 0x1p200) & (int(a >= 0x1p-300) | int(a == 0));
   };

@@ -96,7 +96,8 @@ struct Family {
   // is all zero on entry. It writes no slot past its query's inputs (QueryInfo::inputs) and
   // may leave some of those zero (a polygon's unused vertices): a block of cases reuses its
   // storage by zeroing only the query's inputs between cases. Written into place, not
-  // returned: returning a case cleared all 64 slots each time, half of making a ray-sphere case.
+  // returned: returning a case cleared all 64 slots each time (without it, a ray-sphere
+  // campaign graded on the classification alone ran 8-15% faster, README).
   std::function<void(CaseStream& next, int scale, Inputs& in)> make;
 };
 
