@@ -1169,6 +1169,71 @@ TEST_CASE("a sphere and an oriented box: the first stage's certificates on doubl
   CHECK(decided * 10 >= left * 9);
 }
 
+TEST_CASE("a sphere touching an oriented box with the coordinate axes exactly is decided on expansions, as the solid at Gmpq",
+          "[oracle-classify][sat]") {
+  // Boxes whose axes are the coordinate axes in any order and with any signs (all 48), spheres
+  // touching a face, an edge or a corner exactly (integer offsets from a Pythagorean triple
+  // times a power of two, so every coordinate is exact), or one ulp of the radius in or out.
+  std::mt19937_64 rng(20261128);
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  const int triples[4][4] = {{0, 0, 1, 1}, {0, 3, 4, 5}, {2, 3, 6, 7}, {1, 4, 8, 9}};  // (a, b, c, r): a^2 + b^2 + c^2 = r^2
+  for (int n = 0; n < 48 * 4 * 3; ++n) {
+    const int* p = perms[n % 6];
+    const int signs = (n / 6) % 8, kind = (n / 48) % 4, off = n / 192;
+    OrientedBox<double> b;
+    const double scale = std::ldexp(1.0, int(pick(rng) % 9) - 4);
+    for (int i = 0; i < 3; ++i) {
+      b.axis[i] = Vec3<double>(0, 0, 0);
+      b.axis[i][p[i]] = ((signs >> i) & 1) ? -1.0 : 1.0;
+      b.extent[i] = double(1 + pick(rng)) * 0x1p-20 * scale;
+      b.center[i] = double(pick(rng) - (1 << 19)) * 0x1p-18 * scale;
+    }
+    // the box's extent along world axis j, and the touching sphere's centre: outside the face
+    // (or edge, corner) at (a, b, c) r from it, the offsets on the world axes in a random order
+    Vec3<double> ext;
+    for (int i = 0; i < 3; ++i) ext[p[i]] = b.extent[i];
+    const int* t = triples[kind];
+    const int* q = perms[pick(rng) % 6];
+    const double unit = scale * 0x1p-6;
+    Sphere<double> s;
+    for (int j = 0; j < 3; ++j) {
+      const double side = (pick(rng) & 1) ? -1.0 : 1.0;
+      const double o = t[q[j]] * unit;  // 0: the centre's coordinate inside the box's slab
+      s.center[j] = o == 0 ? b.center[j] + side * ext[j] * 0.5 : b.center[j] + side * (ext[j] + o);
+    }
+    s.radius = t[3] * unit;
+    if (off == 1) s.radius = std::nextafter(s.radius, 0.0);
+    if (off == 2) s.radius = std::nextafter(s.radius, 1e300);
+    INFO("case " << n);
+    Box<double> aabb;
+    REQUIRE(oracle::sphere_obb::as_axis_aligned(b, aabb));
+    const bool truth = oracle::sphere_obb::rational(s, b);
+    REQUIRE(truth == (off != 1));  // the solid at Gmpq: touching meets, one ulp short does not
+    REQUIRE(truth == staged::rational(s, aabb));  // the same box as an axis-aligned one
+    Stage st;
+    REQUIRE(oracle::classify(s, b, &st) == truth);
+    REQUIRE(st != Stage::rational);
+    const int w = oracle::sphere_obb::at_stage(Stage::expansion, s, b);
+    REQUIRE(w == int(truth));
+  }
+  // a rotated box (not the coordinate axes) is not taken for an axis-aligned one
+  OrientedBox<double> r{Vec3<double>(0, 0, 0), Vec3<double>(1, 1, 1),
+                        {Vec3<double>(0.6, 0.8, 0), Vec3<double>(-0.8, 0.6, 0), Vec3<double>(0, 0, 1)}};
+  Box<double> aabb;
+  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  r.axis = {Vec3<double>(1, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 0, 1)};  // repeated axis
+  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  r.axis = {Vec3<double>(2, 0, 0), Vec3<double>(0, 1, 0), Vec3<double>(0, 0, 1)};  // not unit
+  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  r.axis = {Vec3<double>(1, 0, 0), Vec3<double>(0, -1, 0), Vec3<double>(0, 0, std::nan(""))};
+  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  r.axis = {Vec3<double>(0, 0, -1), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)};
+  r.extent = Vec3<double>(1, 2, 3);
+  REQUIRE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  CHECK(aabb.extent == Vec3<double>(2, 3, 1));
+}
+
 namespace {
 template <class Q>
 void orientation_words_on_families(std::uint64_t& left, std::uint64_t& decided, std::uint64_t& near_left,

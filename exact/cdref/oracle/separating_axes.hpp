@@ -15,8 +15,10 @@
 //   2. double word  (a segment or a ray and an oriented box) Algorithm 3.3 in the box's face
 //                coordinates on double words, then the solid's cast decision on them; the axes
 //                stage 1 left open on double words with rigorous bounds (sat_words.hpp: near
-//                touching one axis of the 13 or 15); (sphere) stage 1's point and direction
-//                on double words (sat_words.hpp); then the robust versions' evaluation of
+//                touching one axis of the 13 or 15); (sphere) a box with the coordinate
+//                axes as sphere-box does it (classify.hpp: double words, then the exact sign
+//                on expansions), any other stage 1's point and direction on double words
+//                (sat_words.hpp); then the robust versions' evaluation of
 //                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
@@ -26,6 +28,7 @@
 #include <cdref/cdref.hpp>
 #include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/bounded.hpp>
+#include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/sat_filter.hpp>
 #include <cdref/oracle/sat_words.hpp>
@@ -122,7 +125,40 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 
 // ---- a sphere and an oriented box ----
 namespace sphere_obb {
+// An oriented box whose axes are the coordinate axes up to order and sign (the identity
+// rotation and the 47 others of the cube's symmetry group) is an axis-aligned box: with a_i =
+// s_i e_p(i) (s_i = +-1, p a permutation), {c + sum_i u_i a_i : |u_i| <= h_i} is {x : |x_j -
+// c_j| <= h_i for j = p(i)}, the box with the same centre and the extents permuted. No
+// rounding: the centre and the extents are copied. A unit vector with double components has
+// a single nonzero one (a sum of three squares of dyadic rationals equal to 1 has one nonzero
+// term, by descent mod 4), so these are the only boxes with exactly unit axes, and where a
+// sphere can touch a box exactly. The certificates leave an exact touch undecided, and before
+// this step it took the rational stage (about 275 us a case).
+inline bool as_axis_aligned(const OrientedBox<double>& b, Box<double>& out) {
+  unsigned seen = 0;
+  for (int i = 0; i < 3; ++i) {
+    int j = -1;
+    for (int c = 0; c < 3; ++c) {
+      const double x = b.axis[i][c];
+      if (x == 0) continue;
+      if (std::fabs(x) != 1 || j >= 0) return false;  // (a NaN fails here)
+      j = c;
+    }
+    if (j < 0 || ((seen >> j) & 1u)) return false;
+    seen |= 1u << j;
+    out.extent[j] = b.extent[i];
+  }
+  out.center = b.center;
+  return true;
+}
+// Stage 2: an axis-aligned box takes sphere-box's second stage and then its exact sign on
+// expansions (classify.hpp: unknown only out of its scaled range); any other box the two
+// certificates on double words, then the robust tier's evaluation of the whole formulation.
 inline int double_word(const Sphere<double>& s, const OrientedBox<double>& b) {
+  if (Box<double> box; as_axis_aligned(b, box)) {
+    if (const int r = staged::double_word(s, box); r != unknown) return r;
+    if (const int r = staged::expansion(s, box); r != unknown) return r;
+  }
   if (const int r = sat_words::decide(s, b); r != unknown) return r;  // the two certificates
   const robust::Decision d = robust::decide(s, b);
   return d.certain ? int(d.value) : unknown;

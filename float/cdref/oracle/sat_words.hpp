@@ -247,8 +247,8 @@ int decide(const A& a, const B& b, unsigned open) {
 //     x off the closest point by about u^2 along the face instead of u. |q - x| moves by the
 //     square of that; but the disjoint test loses h_i |v . a_i| on each free axis, first order in
 //     the tilt of v: with x off by u it failed on 13% of the near-touching cases at 2^-52;
-//   - w_c = d_c - sum_i g_i a_ic    d = q - c an exact pair (Two-Sum), g_i a_ic two exact
-//     products each, summed by add_words;
+//   - w_c = d_c - sum_i g_i a_ic    d = q - c an exact pair (Two-Sum), sum_i g_i a_ic by
+//     dot_words (g_i exact pairs, the axes exact), then add_words;
 //   - they meet: rho^2 - |w|^2 certainly > 0 (rho^2 an exact product; an exact touch is left to
 //     the next stage);
 //   - disjoint along v = w's values hi + lo (any vector is a direction: v is exact as a pair):
@@ -259,12 +259,10 @@ int decide(const A& a, const B& b, unsigned open) {
 template <class Mul>
 void sphere_obb_offset(const Pair<double> (&d)[3], const Pair<double> (&g)[3], const OrientedBox<double>& b, Word (&w)[3]) {
   using namespace word_bounds;
+  static constexpr double exact[3] = {0, 0, 0};
   for (int c = 0; c < 3; ++c) {
-    w[c] = {d[c], 0};
-    for (int i = 0; i < 3; ++i) {
-      w[c] = add_words(w[c], {Mul::prod(g[i].hi, b.axis[i][c]), 0}, -1);
-      if (g[i].lo != 0) w[c] = add_words(w[c], {Mul::prod(g[i].lo, b.axis[i][c]), 0}, -1);
-    }
+    const Word column[3] = {{input(b.axis[0][c]), 0}, {input(b.axis[1][c]), 0}, {input(b.axis[2][c]), 0}};
+    w[c] = add_words({d[c], 0}, dot_words<Mul>(g, exact, column), -1);
   }
 }
 
