@@ -77,6 +77,7 @@ struct Shape {
   double medge = 0;         // bound on |e_c| over A's edges (the leaves' expansion)
 };
 struct BoxB {
+  bool aligned = false;  // g = the identity
   double g[3][3] = {};
   double h[3] = {};
   double face[3][3] = {};
@@ -109,6 +110,7 @@ inline bool cross_exactly_zero(const double* a, const double* b) {
 
 inline BoxB box_b(const Box<double>& b) {
   BoxB r;
+  r.aligned = true;
   for (int k = 0; k < 3; ++k) {
     r.g[k][k] = r.face[k][k] = 1;
     r.h[k] = b.extent[k];
@@ -209,18 +211,35 @@ inline Shape shape_a(const OrientedBox<double>& b, const Vec3<double>& c) {
   return a;
 }
 
+// What the exact axis L makes zero or equal, left out of its test (the same identities as the
+// double words', sat_words.hpp): the generators orthogonal to L (bit k of skip_a, skip_b: a
+// face normal g_j x g_k is orthogonal to g_j and g_k, an edge cross e x g_j to g_j), and of A's
+// points those whose exact projection another one repeats (a triangle's vertices on its own
+// normal, an edge's two ends on its crosses): `count` points from `first` (cyclically). The
+// static bound covers each value left, and the exact extremes are unchanged.
+struct Exact {
+  unsigned skip_a = 0, skip_b = 0;
+  int first = 0, count = 0;  // count 0: every point
+};
+
 // 1: separated on L, 0: not, unknown. dir_bound: the bound on the ray's d . L (negative on
 // the ray's own edge crosses, where d . L = 0 exactly).
-inline int axis_test(const Shape& a, const BoxB& b, const double* L, double bound, double dir_bound) {
+inline int axis_test(const Shape& a, const BoxB& b, const double* L, double bound, double dir_bound, Exact ex = {}) {
   double rb = 0;
-  for (int k = 0; k < 3; ++k) rb += b.h[k] * std::fabs(dot(b.g[k], L));
+  if (b.aligned) {  // g_k = e_k: g_k . L = L_k (as the dot product gives it for finite L)
+    rb = b.h[0] * std::fabs(L[0]) + b.h[1] * std::fabs(L[1]) + b.h[2] * std::fabs(L[2]);
+  } else {
+    for (int k = 0; k < 3; ++k)
+      if (!((ex.skip_b >> k) & 1u)) rb += b.h[k] * std::fabs(dot(b.g[k], L));
+  }
   double lo, hi;
   bool lo_inf = false, hi_inf = false;
   switch (a.kind) {
     case Shape::points: {
-      lo = hi = dot(a.X[0], L);
-      for (int k = 1; k < a.n; ++k) {
-        const double x = dot(a.X[k], L);
+      const int count = ex.count ? ex.count : a.n;
+      lo = hi = dot(a.X[ex.first % a.n], L);
+      for (int k = 1; k < count; ++k) {
+        const double x = dot(a.X[(ex.first + k) % a.n], L);
         if (!std::isfinite(x)) return unknown;  // std::min and std::max would drop a NaN
         lo = std::min(lo, x);
         hi = std::max(hi, x);
@@ -229,7 +248,8 @@ inline int axis_test(const Shape& a, const BoxB& b, const double* L, double boun
     }
     case Shape::zonotope: {
       double ra = 0;
-      for (int k = 0; k < 3; ++k) ra += a.h[k] * std::fabs(dot(a.g[k], L));
+      for (int k = 0; k < 3; ++k)
+        if (!((ex.skip_a >> k) & 1u)) ra += a.h[k] * std::fabs(dot(a.g[k], L));
       const double c = dot(a.X[0], L);
       lo = c - ra;
       hi = c + ra;
@@ -312,10 +332,13 @@ int filter(const A& a0, const B& b0, int* axis = nullptr, unsigned* open = nullp
     }
     return false;
   };
-  for (int k = 0; k < a.faces; ++k)
-    if (visit(axis_test(a, b, a.face[k], bound, dir_bound))) return 0;
+  const bool zono = a.kind == Shape::zonotope;
+  for (int k = 0; k < a.faces; ++k) {
+    const Exact ex = zono ? Exact{7u & ~(1u << k), 0, 0, 0} : Exact{0, 0, 0, 1};  // a triangle: v_0 alone
+    if (visit(axis_test(a, b, a.face[k], bound, dir_bound, ex))) return 0;
+  }
   for (int k = 0; k < 3; ++k)
-    if (visit(axis_test(a, b, b.face[k], bound, dir_bound))) return 0;
+    if (visit(axis_test(a, b, b.face[k], bound, dir_bound, Exact{0, 7u & ~(1u << k), 0, 0}))) return 0;
   for (int i = 0; i < a.edges; ++i)
     for (int j = 0; j < 3; ++j) {
       double L[3];
@@ -324,7 +347,10 @@ int filter(const A& a0, const B& b0, int* axis = nullptr, unsigned* open = nullp
         visit(0);  // exactly zero: never separates
         continue;
       }
-      if (visit(axis_test(a, b, L, bound, a.kind == Shape::ray ? -1 : dir_bound))) return 0;
+      // edge i of a triangle is (v_i, v_i+1): v_i+1 and v_i+2; of a segment, one end
+      const Exact ex = zono ? Exact{1u << i, 1u << j, 0, 0}
+                            : Exact{0, 1u << j, a.n == 3 ? i + 1 : 0, a.n == 3 ? 2 : 1};
+      if (visit(axis_test(a, b, L, bound, a.kind == Shape::ray ? -1 : dir_bound, ex))) return 0;
     }
   if (any_unknown) {
     if (open) *open = open_bits;

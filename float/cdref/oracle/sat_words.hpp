@@ -109,23 +109,31 @@ inline void set_b(Shapes& s, const OrientedBox<double>& b) {
     }
   }
 }
-inline void set_a(Shapes& s, const Segment<double>& seg, const Vec3<double>& c) {
+// (`edges` false: A's edges are left out, for a caller that looks at no edge axis)
+inline void set_a(Shapes& s, const Segment<double>& seg, const Vec3<double>& c, bool edges) {
   s.n = 2;
   relative(s, s.X[0], seg.source, c);
   relative(s, s.X[1], seg.target, c);
   s.edges = 1;
-  difference(s.edge[0], seg.target, seg.source);
+  if (edges) difference(s.edge[0], seg.target, seg.source);
 }
-inline void set_a(Shapes& s, const Triangle<double>& t, const Vec3<double>& c) {
+inline void set_a(Shapes& s, const Triangle<double>& t, const Vec3<double>& c, bool edges) {
   s.n = 3;
   for (int k = 0; k < 3; ++k) relative(s, s.X[k], t.vertex[k], c);
   s.faces = 1;
   s.edges = 3;
-  for (int k = 0; k < 3; ++k) difference(s.edge[k], t.vertex[(k + 1) % 3], t.vertex[k]);
-  difference(s.face_b[0], t.vertex[1], t.vertex[0]);
-  difference(s.face_b[1], t.vertex[2], t.vertex[0]);
+  if (edges) {
+    for (int k = 0; k < 3; ++k) difference(s.edge[k], t.vertex[(k + 1) % 3], t.vertex[k]);
+    for (int i = 0; i < 3; ++i) {  // v_1 - v_0 and v_2 - v_0 = -(v_0 - v_2): the same exact pairs
+      s.face_b[0][i] = s.edge[0][i];
+      s.face_b[1][i] = {-s.edge[2][i].hi, -s.edge[2][i].lo};
+    }
+  } else {
+    difference(s.face_b[0], t.vertex[1], t.vertex[0]);
+    difference(s.face_b[1], t.vertex[2], t.vertex[0]);
+  }
 }
-inline void set_a(Shapes& s, const OrientedBox<double>& a, const Vec3<double>& c) {
+inline void set_a(Shapes& s, const OrientedBox<double>& a, const Vec3<double>& c, bool) {
   s.zonotope = true;
   relative(s, s.X[0], a.center, c);
   s.faces = s.edges = 3;
@@ -140,53 +148,102 @@ inline void set_a(Shapes& s, const OrientedBox<double>& a, const Vec3<double>& c
 }
 
 template <class A, class B>
-Shapes shapes(const A& a, const B& b) {
+Shapes shapes(const A& a, const B& b, bool edges = true) {
   Shapes s;
   set_b(s, b);
-  set_a(s, a, b.center);
+  set_a(s, a, b.center, edges);
   return s;
 }
 
-// sum_k h_k |g_k . L|
+// sum_k h_k |g_k . L| over the generators k not in `skip` (bit k): a generator orthogonal to L
+// by an identity of exact values (L = g_j x g_k is orthogonal to g_j and g_k, an edge cross e x
+// g_j to g_j) adds exactly zero, so it is left out. The words bound the exact sum either way.
 template <class Mul>
-Word radius(const Pair<double> (&g)[3][3], const double (&h)[3], const Word (&L)[3]) {
+Word radius(const Pair<double> (&g)[3][3], const double (&h)[3], const Word (&L)[3], unsigned skip = 0) {
   static constexpr double zero[3] = {0, 0, 0};
-  Word r = word_bounds::scale_word<Mul>(abs_word(word_bounds::dot_words<Mul>(g[0], zero, L)), h[0]);
-  for (int k = 1; k < 3; ++k)
-    r = word_bounds::add_words(r, word_bounds::scale_word<Mul>(abs_word(word_bounds::dot_words<Mul>(g[k], zero, L)), h[k]), 1);
+  Word r{{0, 0}, 0};
+  for (int k = 0; k < 3; ++k)
+    if (!((skip >> k) & 1u))
+      r = word_bounds::add_words(r, word_bounds::scale_word<Mul>(abs_word(word_bounds::dot_words<Mul>(g[k], zero, L)), h[k]), 1);
+  return r;
+}
+// The same for the coordinate axes as generators (an axis-aligned box): g_k . L = L_k.
+template <class Mul>
+Word aligned_radius(const double (&h)[3], const Word (&L)[3]) {
+  Word r = word_bounds::scale_word<Mul>(abs_word(L[0]), h[0]);
+  for (int k = 1; k < 3; ++k) r = word_bounds::add_words(r, word_bounds::scale_word<Mul>(abs_word(L[k]), h[k]), 1);
   return r;
 }
 
 // On axis `index` in the book's order (A's faces, B's faces, A's edges x B's generators): s1 = lo -
-// r_B and s2 = -r_B - hi as words, each within its bound of the exact value.
+// r_B and s2 = -r_B - hi as words, each within its bound of the exact value. Only what the exact
+// axis makes nonzero is evaluated (each omission an identity of the exact values, so the bounds
+// still hold for the exact s1, s2):
+//   B's face k of an axis-aligned box   L = e_k: r_B = h_k, x . L = x_k (exact pairs);
+//   B's face k of an oriented box       r_B = h_k |b_k . L| (b_k+1, b_k+2 orthogonal to L);
+//   A's face (a triangle)               its three vertices project alike: v_0 alone;
+//   A's face k (a box)                  r_A = h_k |a_k . L|;
+//   an edge e x g_j                     g_j . L = 0 in r_B; a triangle's edge (v_e, v_e+1)
+//                                       projects as one point, a segment as one, a box's edge
+//                                       generator a_e leaves r_A.
 template <class Mul>
 void axis_words(const Shapes& s, int index, Word& s1, Word& s2) {
   static constexpr double zero[3] = {0, 0, 0};
   Word L[3];
+  unsigned skip_b = 0, skip_a = 0;  // generators orthogonal to L
+  int first = 0, count = s.n;       // the points of A that can differ along L
   if (index < s.faces) {
-    if (s.zonotope) word_bounds::cross_words<Mul>(s.ga[(index + 1) % 3], s.ga[(index + 2) % 3], L);
-    else word_bounds::cross_words<Mul>(s.face_b[0], s.face_b[1], L);
+    if (s.zonotope) {
+      word_bounds::cross_words<Mul>(s.ga[(index + 1) % 3], s.ga[(index + 2) % 3], L);
+      skip_a = 7u & ~(1u << index);
+    } else {
+      word_bounds::cross_words<Mul>(s.face_b[0], s.face_b[1], L);
+      count = 1;
+    }
   } else if (index < s.faces + 3) {
     const int k = index - s.faces;
     if (s.b_aligned) {
-      for (int i = 0; i < 3; ++i) L[i] = {input(i == k ? 1.0 : 0.0), 0.0};
-    } else {
-      word_bounds::cross_words<Mul>(s.gb[(k + 1) % 3], s.gb[(k + 2) % 3], L);
+      const Word rb{{s.hb[k], 0}, 0};
+      Word lo, hi;
+      if (s.zonotope) {
+        Word ra{{0, 0}, 0};
+        for (int i = 0; i < 3; ++i)
+          ra = word_bounds::add_words(ra, word_bounds::scale_word<Mul>(abs_word({s.ga[i][k], 0}), s.ha[i]), 1);
+        const Word c{s.X[0][k], 0};
+        lo = word_bounds::add_words(c, ra, -1);
+        hi = word_bounds::add_words(c, ra, 1);
+      } else {
+        lo = hi = {s.X[0][k], 0};
+        for (int p = 1; p < s.n; ++p) {
+          const Word x{s.X[p][k], 0};
+          lo = min_word(lo, x);
+          hi = max_word(hi, x);
+        }
+      }
+      s1 = word_bounds::add_words(lo, rb, -1);
+      s2 = word_bounds::add_words(word_bounds::negated(rb), hi, -1);
+      return;
     }
+    word_bounds::cross_words<Mul>(s.gb[(k + 1) % 3], s.gb[(k + 2) % 3], L);
+    skip_b = 7u & ~(1u << k);
   } else {
     const int e = (index - s.faces - 3) / 3, j = (index - s.faces - 3) % 3;
     word_bounds::cross_words<Mul>(s.edge[e], s.gb[j], L);
+    skip_b = 1u << j;
+    if (s.zonotope) skip_a = 1u << e;
+    else if (s.n == 3) first = e + 1, count = 2;  // v_e+1 stands for v_e, then v_e+2
+    else count = 1;                               // a segment: its one edge
   }
-  const Word rb = radius<Mul>(s.gb, s.hb, L);
+  const Word rb = s.b_aligned ? aligned_radius<Mul>(s.hb, L) : radius<Mul>(s.gb, s.hb, L, skip_b);
   Word lo, hi;
   if (s.zonotope) {
-    const Word c = word_bounds::dot_words<Mul>(s.X[0], zero, L), ra = radius<Mul>(s.ga, s.ha, L);
+    const Word c = word_bounds::dot_words<Mul>(s.X[0], zero, L), ra = radius<Mul>(s.ga, s.ha, L, skip_a);
     lo = word_bounds::add_words(c, ra, -1);
     hi = word_bounds::add_words(c, ra, 1);
   } else {
-    lo = hi = word_bounds::dot_words<Mul>(s.X[0], zero, L);
-    for (int k = 1; k < s.n; ++k) {
-      const Word x = word_bounds::dot_words<Mul>(s.X[k], zero, L);
+    lo = hi = word_bounds::dot_words<Mul>(s.X[first % s.n], zero, L);
+    for (int p = 1; p < count; ++p) {
+      const Word x = word_bounds::dot_words<Mul>(s.X[(first + p) % s.n], zero, L);
       lo = min_word(lo, x);
       hi = max_word(hi, x);
     }
@@ -228,7 +285,9 @@ int decide(const A& a, const B& b, unsigned open) {
     A as;  // far from 1 in magnitude, both shapes scaled by one power of two (header)
     B bs;
     if (!word_bounds::in_word_range(a, b, as, bs)) return unknown;
-    const Shapes s = shapes(as, bs);
+    // A's edges only where an edge axis is open (they follow A's faces and B's three)
+    constexpr int a_faces = std::is_same_v<A, Triangle<double>> ? 1 : std::is_same_v<A, OrientedBox<double>> ? 3 : 0;
+    const Shapes s = shapes(as, bs, (open >> (a_faces + 3)) != 0);
     if (!s.ok) return unknown;
     return robust::with_products([&](auto mul) { return decide_open<decltype(mul)>(s, open); });
   }

@@ -292,12 +292,18 @@ bool in_word_range(const A& a, const B& b, A& as, B& bs) {
   double m = 0;
   robust::detail::largest(a, m);
   robust::detail::largest(b, m);
-  const robust::detail::Scale sc = m >= 0x1p-100 && m <= 0x1p100 ? robust::detail::Scale{} : robust::detail::scale_of(a, b);
-  as = robust::detail::scaled(a, sc);
-  bs = robust::detail::scaled(b, sc);
   double big = 0;
-  robust::detail::largest(as, big);
-  robust::detail::largest(bs, big);
+  if (m >= 0x1p-100 && m <= 0x1p100) {  // no scaling: the lengths are in range as they are
+    as = a;
+    bs = b;
+    big = m;
+  } else {
+    const robust::detail::Scale sc = robust::detail::scale_of(a, b);
+    as = robust::detail::scaled(a, sc);
+    bs = robust::detail::scaled(b, sc);
+    robust::detail::largest(as, big);
+    robust::detail::largest(bs, big);
+  }
   if constexpr (std::is_same_v<B, OrientedBox<double>>)
     for (int k = 0; k < 3; ++k) robust::detail::largest(bs.axis[k], big);
   if constexpr (std::is_same_v<A, OrientedBox<double>>)
