@@ -44,9 +44,10 @@ namespace sat {
 // solid's cast decision first, as in the robust tier.) `open`: the axes stage 1 left open
 // (sat::filter); run on its own (at_stage), stage 2 asks stage 1 for them.
 template <class A, class B>
-int double_word(const A& a, const B& b, unsigned open) {
+int double_word(const A& a, const B& b, unsigned open, bool cast_tried = false) {
   if constexpr (robust::detail::has_cast_decision<A, B, double>)
-    if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
+    if (!cast_tried)
+      if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
   if (const int r = sat_words::decide(a, b, open); r != unknown) return r;
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
@@ -77,13 +78,32 @@ int at_stage(Stage st, const A& a, const B& b) {
   }
 }
 
+// A segment or a ray and an oriented box: stage 1 is the cast in the box's face coordinates
+// (box_cast_filter.hpp), then the axes in world coordinates; but where the first leaves a case
+// open the cast's decision on double words comes before the world axes: in segment-obb's
+// grazing family at 2^-52 (4,000 cases, seed 1) the world axes decided none of the 2,509 cases
+// the face coordinates left, and the double words decided all of them.
 template <class A, class B>
 bool run(Stage* used, const A& a, const B& b) {
   unsigned open = 0;
-  int r = filter(a, b, nullptr, &open);
+  int r;
+  bool cast_tried = false;
+  if constexpr (robust::detail::has_cast_decision<A, B, double>) {
+    r = staged::filter(a, b);
+    if (r == unknown) {
+      if (const auto h = robust::detail::cast_decision_on_words(a, b)) {
+        if (used) *used = Stage::expansion;
+        return *h;
+      }
+      cast_tried = true;
+      r = filter<A, B>(a, b, nullptr, &open);  // the world axes
+    }
+  } else {
+    r = filter(a, b, nullptr, &open);
+  }
   Stage st = Stage::filter;
   if (r == unknown) {
-    r = double_word(a, b, open);
+    r = double_word(a, b, open, cast_tried);
     st = Stage::expansion;
   }
   if (r != unknown) {
