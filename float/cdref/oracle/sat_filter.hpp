@@ -404,7 +404,12 @@ inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axi
 // through factors below 2^310, so 2^-600 added to every bound covers them all.
 // An axis that is exactly zero (parallel edges) has s = 0 and leaves the filter undecided;
 // sat::filter then runs the axes in world coordinates, which recognise exact zeros.
-inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedBox<double>& B) {
+// *open (when given): where the answer is unknown, bit i set for each axis left undecided, in
+// the book's order (A's faces e_i, B's faces L_j, then e_i x G_k for a_i x b_k): the same planes
+// as the world axes (a linear map takes a plane spanned by two edge directions to the one
+// spanned by their images, and scales each projection gap by one positive factor), so every
+// other axis certainly does not separate in world coordinates either.
+inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedBox<double>& B, unsigned* open = nullptr) {
   const auto& a = A.axis;
   const auto& b = B.axis;
   double n[3][3];
@@ -435,9 +440,12 @@ inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedB
     for (int k = 0; k < 3; ++k) G[i][k] = (n[i][0] * b[k][0] + n[i][1] * b[k][1] + n[i][2] * b[k][2]) * B.extent[k];
   }
   bool undecided = false;
+  unsigned bits = 0;
+  int index = 0;
   auto separates = [&](double s, double e) {  // certainly separated; else notes an undecided axis
+    const int at = index++;
     if (s > e) return true;
-    if (!(s < -e)) undecided = true;
+    if (!(s < -e)) undecided = true, bits |= 1u << at;
     return false;
   };
   for (int i = 0; i < 3; ++i)
@@ -464,6 +472,7 @@ inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedB
       if (separates(std::fabs(tt) - (ra + rb), e3)) return 0;
     }
   }
+  if (open && undecided) *open = bits;
   return undecided ? unknown : 1;
 }
 inline int filter(const OrientedBox<double>& A, const OrientedBox<double>& B, int* axis = nullptr,
