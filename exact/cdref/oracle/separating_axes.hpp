@@ -167,9 +167,11 @@ namespace sphere_obb {
 // c_j| <= h_i for j = p(i)}, the box with the same centre and the extents permuted. No
 // rounding: the centre and the extents are copied. A unit vector with double components has
 // a single nonzero one (a sum of three squares of dyadic rationals equal to 1 has one nonzero
-// term, by descent mod 4), so these are the only boxes with exactly unit axes, and where a
-// sphere can touch a box exactly. The certificates leave an exact touch undecided, and before
-// this step it took the rational stage (about 275 us a case).
+// term, by descent mod 4), so these are the only boxes whose axes are exactly unit. On them a
+// sphere touching a face, an edge or a corner exactly is easy to build in doubles, and the
+// campaigns' families build it (their rotations include signed permutations). The
+// certificates leave an exact touch undecided; before this step it took the rational stage
+// (about 275 us a case), as an exact touch of any other box still does.
 inline bool as_axis_aligned(const OrientedBox<double>& b, Box<double>& out) {
   unsigned seen = 0;
   for (int i = 0; i < 3; ++i) {
