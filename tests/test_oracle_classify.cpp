@@ -1088,49 +1088,88 @@ TEST_CASE("the open axes' double words enclose the exact s on every axis of ever
   WARN("largest error of a double word on an axis: " << worst << " of its bound, over " << axes << " axes");
 }
 
-TEST_CASE("two oriented boxes: every axis the face coordinates do not leave open certainly does not separate in world coordinates",
-          "[oracle-classify][sat]") {
-  // The oracle takes the face-coordinates filter's open axes straight to the double words
-  // (separating_axes.hpp, sat::run): sound only if every other axis has exact s1, s2 < 0 in
-  // the world coordinates the words use. At Gmpq on every family, and the words' answer on
-  // those axes equal to the solid's.
-  using Q = queries::ObbObb;
+namespace {
+struct FaceCounts {
+  std::uint64_t decided = 0, open_cases = 0, axes_checked = 0, words_decided = 0, near_open = 0, near_decided = 0;
+};
+// Theorem 3.1 in B's face coordinates (oracle/sat_filter.hpp, filter_face_coordinates): wherever it
+// decides, the solid's answer at CGAL::Gmpq; where it leaves axes open, every other axis has exact
+// s1, s2 < 0 in the world coordinates the double words use (the oracle and the robust tier take
+// the open axes straight to the words: robust/separating_axes.hpp, stages_before_whole), and the
+// words' answer on the open axes, where they give one, is the solid's too.
+template <class Q>
+void face_coordinates_on_every_family(FaceCounts& c, int per_scale) {
   const Query q = query_by_name(Q::name);
-  std::uint64_t open_cases = 0, axes_checked = 0, decided = 0, near_open = 0, near_decided = 0;
   for (const Family& f : families(q)) {
-    if (f.name == "magnitude") continue;  // shapes() without the scaling (as the enclosures above)
+    const bool scaled = f.name == "magnitude";  // shapes() without the scaling (as the enclosures above)
     for (int k : f.scales)
-      for (std::uint64_t i = 0; i < 30; ++i) {
+      for (std::uint64_t i = 0; i < std::uint64_t(per_scale); ++i) {
         const auto [a, b] = Q::template make<double>(make_case(11, q, f, k, i));
+        INFO(Q::name << " " << f.name << "/" << k << " case " << i);
         unsigned open = 0;
-        if (oracle::sat::filter_face_coordinates(a, b, &open) != oracle::sat::unknown || open == 0) continue;
+        const int face = oracle::sat::filter_face_coordinates(a, b, &open);
+        if (face != oracle::sat::unknown) {
+          ++c.decided;
+          REQUIRE(open == 0);
+          REQUIRE(face == oracle::sat::at_stage(Stage::rational, a, b));
+          continue;
+        }
+        if (open == 0 || scaled) continue;
         const oracle::sat_words::Shapes s = oracle::sat_words::shapes(a, b);
         if (!s.ok) continue;
-        INFO(f.name << "/" << k << " case " << i << " open " << open);
-        ++open_cases;
-        const bool near = f.name == "near-touching" && k >= 20;
-        near_open += near;
-        for (int index = 0; index < 15; ++index) {
+        INFO("open " << open);
+        ++c.open_cases;
+        const bool near = (f.name == "near-touching" || f.name == "grazing") && k >= 20;
+        c.near_open += near;
+        for (int index = 0; index < s.faces + 3 + 3 * s.edges; ++index) {
           if ((open >> index) & 1u) continue;
           Qn e1, e2;
           exact_axis(s, index, e1, e2);
           REQUIRE(e1 < 0);
           REQUIRE(e2 < 0);
-          ++axes_checked;
+          ++c.axes_checked;
         }
         const int w = oracle::sat_words::decide(a, b, open);
         if (w == oracle::sat_words::unknown) continue;
-        ++decided;
-        near_decided += near;
+        ++c.words_decided;
+        c.near_decided += near;
         REQUIRE(w == oracle::sat::at_stage(Stage::rational, a, b));
       }
   }
+}
+}  // namespace
+
+TEST_CASE("two oriented boxes: every axis the face coordinates do not leave open certainly does not separate in world coordinates",
+          "[oracle-classify][sat]") {
+  FaceCounts c;
+  face_coordinates_on_every_family<queries::ObbObb>(c, 30);
+  INFO("decided " << c.decided << ", open " << c.open_cases << " (near " << c.near_open << ", words decide "
+                  << c.near_decided << ")");
   // near touching (2^-20 to 2^-52) the words decide every case the face coordinates leave open;
   // elsewhere they leave exact zeros (parallel edges) to the world axes
-  CHECK(near_open > 40);  // (49 with these cases)
-  CHECK(near_decided == near_open);
-  CHECK(axes_checked > open_cases * 10);
-  CHECK(decided * 10 > open_cases * 8);
+  CHECK(c.near_open > 40);  // (49 with these cases)
+  CHECK(c.near_decided == c.near_open);
+  CHECK(c.axes_checked > c.open_cases * 10);
+  CHECK(c.words_decided * 10 > c.open_cases * 8);
+  CHECK(c.decided > c.open_cases);
+}
+
+TEST_CASE("a triangle and a box: Theorem 3.1 in the box's face coordinates decides as the solid at Gmpq, and every axis it "
+          "does not leave open certainly does not separate in world coordinates",
+          "[oracle-classify][sat]") {
+  FaceCounts aligned, oriented;
+  face_coordinates_on_every_family<queries::TriangleBox>(aligned, 30);
+  face_coordinates_on_every_family<queries::ShapeObb<true>>(oriented, 30);
+  for (const FaceCounts* c : {&aligned, &oriented}) {
+    INFO((c == &aligned ? "triangle-box" : "triangle-obb") << ": decided " << c->decided << ", open " << c->open_cases
+                                                           << " (near " << c->near_open << ", words decide "
+                                                           << c->near_decided << ")");
+    CHECK(c->near_open > 100);
+    CHECK(c->near_decided == c->near_open);  // near touching the open axes alone decide
+    CHECK(c->axes_checked > c->open_cases * 10);
+    CHECK(c->words_decided * 10 > c->open_cases * 8);
+    CHECK(c->decided > c->open_cases);
+  }
 }
 
 TEST_CASE("the axes the first stage leaves open decide on double words as the solid at Gmpq, near touching too",

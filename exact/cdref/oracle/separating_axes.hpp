@@ -9,6 +9,8 @@
 //   1. filter    (separating axes) every candidate axis in double with one static error bound
 //                for the whole query; (a segment or a ray and an oriented box) Algorithm 3.3
 //                in the box's face coordinates with static bounds (box_cast_filter.hpp);
+//                (two oriented boxes, a triangle and a box) Theorem 3.1 in B's face
+//                coordinates first (sat_filter.hpp, filter_face_coordinates);
 //                (sphere) a point of the box and a direction, each a certificate with a
 //                static bound (oracle/sat_filter.hpp, with their derivations: the robust
 //                tier's certified decisions run them first too);
@@ -22,6 +24,9 @@
 //                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
+// classify() interleaves stages 1 and 2 where that decides sooner: the double words of what the
+// cheapest filter leaves open come before the other filters (run below, and the robust tier's
+// stages_before_whole, which it calls). Each stage alone (at_stage) is what the tests compare.
 //
 #pragma once
 
@@ -44,10 +49,9 @@ namespace sat {
 // solid's cast decision first, as in the robust tier.) `open`: the axes stage 1 left open
 // (sat::filter); run on its own (at_stage), stage 2 asks stage 1 for them.
 template <class A, class B>
-int double_word(const A& a, const B& b, unsigned open, bool cast_tried = false) {
+int double_word(const A& a, const B& b, unsigned open) {
   if constexpr (robust::detail::has_cast_decision<A, B, double>)
-    if (!cast_tried)
-      if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
+    if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
   if (const int r = sat_words::decide(a, b, open); r != unknown) return r;
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
@@ -78,48 +82,17 @@ int at_stage(Stage st, const A& a, const B& b) {
   }
 }
 
-// A segment or a ray and an oriented box: stage 1 is the cast in the box's face coordinates
-// (box_cast_filter.hpp), then the axes in world coordinates; but where the first leaves a case
-// open the cast's decision on double words comes before the world axes: in segment-obb's
-// grazing family at 2^-52 (4,000 cases, seed 1) the world axes decided none of the 2,509 cases
-// the face coordinates left, and the double words decided all of them.
+// Stages 1 and 2 as the robust tier's certified decisions take them (robust/separating_axes.hpp,
+// stages_before_whole: the double words of what the cheapest filter leaves open come before the
+// other filters), then the whole formulation on double words, then CGAL::Gmpq.
 template <class A, class B>
 bool run(Stage* used, const A& a, const B& b) {
-  unsigned open = 0;
-  int r;
-  bool cast_tried = false;
-  if constexpr (robust::detail::has_cast_decision<A, B, double>) {
-    r = staged::filter(a, b);
-    if (r == unknown) {
-      if (const auto h = robust::detail::cast_decision_on_words(a, b)) {
-        if (used) *used = Stage::expansion;
-        return *h;
-      }
-      cast_tried = true;
-      r = filter<A, B>(a, b, nullptr, &open);  // the world axes
-    }
-  } else if constexpr (std::is_same_v<A, OrientedBox<double>> && std::is_same_v<B, OrientedBox<double>>) {
-    // Two oriented boxes: the axes the face coordinates leave open straight on double words (the
-    // world axes' filter decided none of the 1,906 cases the face coordinates left 2^-52 from
-    // touching, seed 1); the world axes where those words do not decide (they recognise exact
-    // zeros: parallel edges).
-    r = filter_face_coordinates(a, b, &open);
-    if (r == unknown && open != 0) {
-      if (const int w = sat_words::decide(a, b, open); w != unknown) {
-        if (used) *used = Stage::expansion;
-        return w != 0;
-      }
-    }
-    if (r == unknown) {
-      open = 0;
-      r = filter<A, B>(a, b, nullptr, &open);
-    }
-  } else {
-    r = filter(a, b, nullptr, &open);
-  }
-  Stage st = Stage::filter;
+  bool words = false;
+  int r = robust::detail::stages_before_whole<double>(a, b, &words);
+  Stage st = words ? Stage::expansion : Stage::filter;
   if (r == unknown) {
-    r = double_word(a, b, open, cast_tried);
+    const auto [s, certain] = robust::detail::separation<double>(a, b);
+    if (certain) r = int(s.intersect);
     st = Stage::expansion;
   }
   if (r != unknown) {
