@@ -281,6 +281,42 @@ inline int obb_cast_words(const Ray<double>& r, const OrientedBox<double>& b) {
   return obb_cast_any(r.source, r.direction, b, false);
 }
 
+
+// The casts on an axis-aligned box on double words alone: the outcodes Y_i -+ h_i (Y = p - c an
+// exact pair, at the source and at a segment's target) by add_words, the direction's signs
+// exactly (t - s an exact pair, or the ray's direction, an input) and AabbWords' plane pairs.
+// Every sign is certain except an exact zero (a point on a face's plane, two planes crossed at the
+// same parameter), which leaves the case to the next stage; hit_box_logic then decides from the
+// signs exactly as the book does (box_cast_filter.hpp). The robust tier's certified decision
+// (robust/ray_box.hpp) runs it between the oracle's first stage and its own certificate; the
+// oracle's stage 2 (exact/cdref/oracle/classify.hpp, BoxStaged) takes the same plane pairs with
+// the exact expansions behind them. Range: in_word_range below (the scaling by a power of two
+// changes no sign).
+template <class Mul>
+struct AabbCastWords {
+  AabbWords<Mul> w;
+  Word tL[3], tU[3];
+  bool bounded;
+  AabbCastWords(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool segment)
+      : w(src, rt, b, segment), bounded(segment) {
+    for (int i = 0; i < 3; ++i) {
+      const Word y{segment ? robust::two_sum(rt[i], -b.center[i]) : Pair<double>{0.0, 0.0}, 0.0};
+      const Word h{{b.extent[i], 0.0}, 0.0};
+      tL[i] = add_words(y, h, 1);
+      tU[i] = add_words(y, h, -1);
+    }
+  }
+  int src_lo(int i) const { return sign_of(w.sL[i]); }
+  int src_hi(int i) const { return sign_of(w.sU[i]); }
+  int tgt_lo(int i) const { return sign_of(tL[i]); }
+  int tgt_hi(int i) const { return sign_of(tU[i]); }
+  int dir_sign(int i) const {  // the exact pair's high part has the exact value's sign (0 only for 0)
+    const double d = w.d[i].v.hi;
+    return d > 0 ? 1 : (d < 0 ? -1 : 0);
+  }
+  int compare(int a, int b) const { return w.compare(a, b); }
+};
+
 // The pair of primitives as the double-word stages take it (sat_words.hpp, triangle_words.hpp):
 // where the largest input (a length: points, centres, extents, radii; an oriented box's axes are
 // not scaled) lies beyond [2^-100, 2^100], both scaled by the power of two that brings it to
@@ -309,6 +345,20 @@ bool in_word_range(const A& a, const B& b, A& as, B& bs) {
   if constexpr (std::is_same_v<A, OrientedBox<double>>)
     for (int k = 0; k < 3; ++k) robust::detail::largest(as.axis[k], big);
   return big <= 0x1p100;  // NaN and infinities fail
+}
+
+// 1 a hit, 0 a miss, staged::unknown: the next stage.
+template <class Shot>
+int aabb_cast_words(const Shot& shot, const Box<double>& box) {
+  Shot s;
+  Box<double> b;
+  if (!in_word_range(shot, box, s, b)) return staged::unknown;
+  constexpr bool segment = std::is_same_v<Shot, Segment<double>>;
+  const Vec3<double>* rt;
+  if constexpr (segment) rt = &s.target;
+  else rt = &s.direction;
+  return robust::with_products(
+      [&](auto mul) { return staged::hit_box_logic(AabbCastWords<decltype(mul)>(s.source, *rt, b, segment)); });
 }
 
 }  // namespace cdref::oracle::word_bounds
