@@ -379,6 +379,18 @@ inline int filter(const Ray<double>& ray, const OrientedBox<double>& b, int* axi
   return filter_shot_obb(ray, b, axis, open);
 }
 
+// An oriented box's face normals n_i = a_{i+1} x a_{i+2} in double (2 roundings a component),
+// and |a_0 . n_0| (|delta|: 5), for the face coordinates Y_i = n_i . (p - c) below.
+template <class Axes>
+double face_normals(const Axes& a, double (&n)[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      n[i][c] = a[(i + 1) % 3][c1] * a[(i + 2) % 3][c2] - a[(i + 1) % 3][c2] * a[(i + 2) % 3][c1];
+    }
+  return std::fabs(a[0][0] * n[0][0] + a[0][1] * n[0][1] + a[0][2] * n[0][2]);
+}
+
 // ---- Stage 1 for two oriented boxes: Theorem 3.1 in A's face coordinates ----
 // The map p -> Y = N_A (p - c_A) (rows n_i = a_{i+1} x a_{i+2}, as in box_cast_filter.hpp) is
 // linear and invertible, so two boxes meet exactly when their images do, and Theorem 3.1 on
@@ -411,12 +423,7 @@ inline int filter_face_coordinates(const OrientedBox<double>& A, const OrientedB
   const auto& a = A.axis;
   const auto& b = B.axis;
   double n[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      n[i][c] = a[(i + 1) % 3][c1] * a[(i + 2) % 3][c2] - a[(i + 1) % 3][c2] * a[(i + 2) % 3][c1];
-    }
-  const double D = std::fabs(a[0][0] * n[0][0] + a[0][1] * n[0][1] + a[0][2] * n[0][2]);
+  const double D = face_normals(a, n);
   double ma = 0, mb = 0, ha = 0, hb = 0, X[3];
   for (int k = 0; k < 3; ++k) {
     ma = std::max(ma, maxabs(&a[k][0]));
@@ -576,12 +583,7 @@ inline int filter_face_coordinates(const Triangle<double>& t, const OrientedBox<
   if (open) *open = 0;
   const auto& a = b.axis;
   double n[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      n[i][c] = a[(i + 1) % 3][c1] * a[(i + 2) % 3][c2] - a[(i + 1) % 3][c2] * a[(i + 2) % 3][c1];
-    }
-  const double D = std::fabs(a[0][0] * n[0][0] + a[0][1] * n[0][1] + a[0][2] * n[0][2]);
+  const double D = face_normals(a, n);
   double X[3][3], Y[3][3], H[3], ma = 0, mx = 0, hb = 0;
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 3; ++c) X[k][c] = t.vertex[k][c] - b.center[c];
