@@ -91,9 +91,11 @@ inline bool classify(const Polygon<double>& p, const Box<double>& b, Stage* used
 inline bool classify(const Polygon<double>& a, const Polygon<double>& b, Stage* used = nullptr) {
   check(a, "polygon A");
   check(b, "polygon B");
-  // the pairs' first stage at once (triangle_filter.hpp, polygon_filter), then pair by pair
-  if (const int f = triangle_triangle::polygon_filter(a, b); f != triangle_triangle::unknown) {
-    if (used) *used = Stage::filter;
+  // the pairs' first stage at once, the plane signs its static bound cannot tell on double words
+  // (triangle_words.hpp, polygon_on_words), then pair by pair
+  bool words = false;
+  if (const int f = triangle_triangle::polygon_on_words(a, b, &words); f != triangle_triangle::unknown) {
+    if (used) *used = words ? Stage::expansion : Stage::filter;
     return f != 0;
   }
   const int nb = b.triangles();

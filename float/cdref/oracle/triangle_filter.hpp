@@ -509,7 +509,11 @@ inline int filter(const Triangle<double>& a, const Triangle<double>& b) {
 // diagonal (v0, v_k) belongs to two fan triangles, and its filter is exact wherever it is
 // certain, in either direction. 1 where a pair certainly meets, 0 where every pair is
 // certainly apart, unknown otherwise (the pairs then go through the stages one by one).
-inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
+// `resolve(w, i, k)` is asked for each plane sign the static bound cannot tell (polygon w's fan
+// triangle i against the other's vertex k) and returns it certain (1, -1) or 0: none here
+// (polygon_filter), the sign on double words in polygon_on_words (triangle_words.hpp).
+template <class Resolve>
+int polygon_pairs(const Polygon<double>& a, const Polygon<double>& b, const Resolve& resolve) {
   bool apart = false;
   for (int i = 0; i < 3; ++i) {
     double alo = a.vertex[0][i], ahi = alo, blo = b.vertex[0][i], bhi = blo;
@@ -537,7 +541,9 @@ inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
         e2[c] = p.vertex[i + 2][c] - p.vertex[0][c];
         x[c] = q.vertex[k][c] - p.vertex[0][c];
       }
-      r = static_cast<signed char>(ray_triangle::triple_sign(x, e1, e2, finite));
+      int sg = ray_triangle::triple_sign(x, e1, e2, finite);
+      if (sg == 0 && finite) sg = resolve(w, i, k);
+      r = static_cast<signed char>(sg);
     }
     return r;
   };
@@ -585,6 +591,9 @@ inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
       unsure = unsure || misses != 6;
     }
   return unsure ? unknown : 0;
+}
+inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
+  return polygon_pairs(a, b, [](int, int, int) { return 0; });
 }
 }  // namespace triangle_triangle
 

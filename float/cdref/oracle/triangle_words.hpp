@@ -313,4 +313,34 @@ inline int tests_on_words(const Triangle<double>& a0, const Triangle<double>& b0
   return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
 }
 
+// Two polygons: the pairs' first stage at once (triangle_filter.hpp, polygon_pairs) with each
+// plane sign its static bound cannot tell taken on double words (words::triple_sign on exact
+// pairs of the same differences). A polygon whose vertex lies 2^-52 of its size from the other's
+// plane leaves that vertex's sign open against every fan triangle of the other, so no plane
+// separates any pair and every pair's six edge casts run (about 70 at up to 8 vertices); with
+// the sign on words, the planes separate every pair at once where the polygons are apart. The
+// edge casts the static bound cannot tell are left, as in polygon_filter, to the pairs one by one.
+// 1 they meet, 0 disjoint, unknown; *words (when given) set where a sign came from double words.
+inline int polygon_on_words(const Polygon<double>& a, const Polygon<double>& b, bool* words = nullptr) {
+  if (words) *words = false;
+  Polygon<double> as, bs;  // far from 1 in magnitude, scaled by one power of two: no sign changes
+  if (!word_bounds::in_word_range(a, b, as, bs)) return polygon_filter(a, b);
+  return robust::with_products([&](auto mul) {
+    using Mul = decltype(mul);
+    return polygon_pairs(a, b, [&](int w, int i, int k) {
+      const Polygon<double>& p = w == 0 ? as : bs;
+      const Polygon<double>& q = w == 0 ? bs : as;
+      robust::Pair<double> e1[3], e2[3], x[3];
+      for (int c = 0; c < 3; ++c) {
+        e1[c] = robust::two_sum(p.vertex[i + 1][c], -p.vertex[0][c]);
+        e2[c] = robust::two_sum(p.vertex[i + 2][c], -p.vertex[0][c]);
+        x[c] = robust::two_sum(q.vertex[k][c], -p.vertex[0][c]);
+      }
+      const int sg = ray_triangle::words::triple_sign<Mul>(x, e1, e2);
+      if (words && sg != 0) *words = true;
+      return sg;
+    });
+  });
+}
+
 }  // namespace cdref::oracle::triangle_triangle

@@ -160,10 +160,11 @@ template <class F>
 Decision decide(const Polygon<F>& a, const Polygon<F>& b) {
   check(a, "polygon A");
   check(b, "polygon B");
-  // at double the pairs' first stage at once (oracle/triangle_filter.hpp, polygon_filter): where
-  // it decides, its answer is the union's exact one
+  // at double the pairs' first stage at once, the plane signs its static bound cannot tell on
+  // double words (oracle/triangle_words.hpp, polygon_on_words): where it decides, its answer is
+  // the union's exact one
   if constexpr (std::is_same_v<F, double>)
-    if (const int f = oracle::triangle_triangle::polygon_filter(a, b); f != oracle::triangle_triangle::unknown)
+    if (const int f = oracle::triangle_triangle::polygon_on_words(a, b); f != oracle::triangle_triangle::unknown)
       return {f != 0, true};
   const int nb = b.triangles();
   return detail::union_of(a.triangles() * nb, [&](int k) { return decide(a.triangle(k / nb), b.triangle(k % nb)); });

@@ -185,6 +185,7 @@ bool same(const Polygon<F>& x, const Polygon<F>& y) {
 }
 template <class F> F scalar_of(const Triangle<F>&);
 template <class F> F scalar_of(const OrientedBox<F>&);
+template <class F> F scalar_of(const Polygon<F>&);
 
 template <class A, class B>
 Scale scale_of(const A& a, const B& b) {
