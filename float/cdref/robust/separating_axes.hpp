@@ -128,8 +128,8 @@ std::optional<bool> cast_decision_on_words(const A& a, const B& b) {
 // coordinates first (oracle/sat_filter.hpp, filter_face_coordinates).
 template <class A, class B>
 inline constexpr bool has_face_coordinates =
-    std::is_same_v<B, OrientedBox<double>> && (std::is_same_v<A, OrientedBox<double>> || std::is_same_v<A, Triangle<double>>) ||
-    std::is_same_v<A, Triangle<double>> && std::is_same_v<B, Box<double>>;
+    (std::is_same_v<B, OrientedBox<double>> && (std::is_same_v<A, OrientedBox<double>> || std::is_same_v<A, Triangle<double>>)) ||
+    (std::is_same_v<A, Triangle<double>> && std::is_same_v<B, Box<double>>);
 
 // Every stage before the whole formulation on double words, in the order that decides soonest
 // near the boundary: 1 (they meet), 0 (disjoint) or 2 (undecided). Where it decides, the answer
