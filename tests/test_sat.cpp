@@ -584,4 +584,26 @@ TEST_CASE("the axes' independence is decided exactly", "[sat][errors]") {
   }
 }
 
+TEST_CASE("robust segment-obb cast: cast() and decide_cast() classify alike where only the open axes' words are certain",
+          "[sat][robust]") {
+  // Found by the fuzz target segment-obb-cast (fuzz/corpus/segment-obb-cast/robust-cast-decide-alike):
+  // subnormal and tiny inputs where the whole formulation and the cast's words are not certain
+  // but the open axes on double words are. The oracle (at CGAL::Gmpq where it must) says a miss.
+  const double v[21] = {0x0.0000000000534p-1022, -0x1.0ffbfe12000e6p-420, 0x1.4p+4, -0x1.057a8ff3fcb26p-479,
+                        -0x1.cp-1, 0x1.8a4ff003eff3fp-1022, 0x0p+0, 0x0p+0, -0x1p+0, 0x1.2p+0, 0x0p+0, 0x0p+0,
+                        0x0p+0, -0x1.000000000006dp-159, 0x0.0000000000476p-1022, -0x0.0000000000185p-1022,
+                        0x0.0000000000801p-1022, 0x0.0000000000652p-1022, 0x0.0000000000f3cp-1022,
+                        -0x1.3b33b5e9ad9p-7, 0x1.11a9a3f6da926p-1};
+  const Segment<double> s{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  OrientedBox<double> b;
+  b.center = {v[6], v[7], v[8]};
+  b.extent = {v[9], v[10], v[11]};
+  for (int k = 0; k < 3; ++k) b.axis[k] = {v[12 + 3 * k], v[13 + 3 * k], v[14 + 3 * k]};
+  const robust::Decision d = robust::decide_cast(s, b);
+  REQUIRE(d.certain);
+  REQUIRE_FALSE(d.value);
+  REQUIRE(robust::cast(s, b).hit == d.value);
+  REQUIRE(robust::hit(s, b) == d.value);
+}
+
 }  // namespace cdref_test_sat

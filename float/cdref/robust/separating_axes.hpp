@@ -445,8 +445,8 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
     auto [c, d] = detail::cast_eval(a, b, w);                                 \
     /* the cast hits exactly when the segment or ray meets the solid; where */ \
     /* the double words are certain they are exact already */                 \
-    if (!d.certain)                                                           \
-      if (const int f = detail::first_stage<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
+    if (!d.certain) /* the stages decide_cast() takes, so that both classify alike */ \
+      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
     return c;                                                                 \
   }                                                                           \
   template <class F>                                                          \
