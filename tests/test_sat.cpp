@@ -606,4 +606,61 @@ TEST_CASE("robust segment-obb cast: cast() and decide_cast() classify alike wher
   REQUIRE(robust::hit(s, b) == d.value);
 }
 
+// A sphere touching a box exactly (Q = |v|^2 - rho^2 = 0): a face, an edge (3-4-5) and a corner
+// (2-3-6-7), and the radius one ulp either way. The robust sphere-box tier takes Q's exact sign
+// where dot2's bound cannot tell it (robust/sphere_box.hpp, sph_box_q_sign): every one is
+// certain and equals the book at Gmpq, and an exact touch meets with distance and depth 0. The
+// same spheres against the box as an oriented box whose axes are signed coordinate axes (a
+// rotation of the cube's group) take that decision in the robust sphere-obb tier at double.
+TEMPLATE_TEST_CASE("robust sphere-box: an exact touch is certain and so is one ulp off", "[robust-spheres][sat]", float,
+                   double, long double) {
+  using F = TestType;
+  const Box<F> box{Vec3<F>(F(1), F(-2), F(4)), Vec3<F>(F(1), F(2), F(3))};
+  struct Touch {
+    const char* name;
+    Vec3<F> centre;
+    F radius;
+  };
+  // box faces at x in [0, 2], y in [-4, 0], z in [1, 7]
+  const std::vector<Touch> touches{{"face x+", Vec3<F>(F(5), F(-1), F(3)), F(3)},
+                                   {"edge x+ y-", Vec3<F>(F(5), F(-8), F(3)), F(5)},
+                                   {"corner x- y+ z+", Vec3<F>(F(-2), F(3), F(13)), F(7)}};
+  int certain = 0, met = 0;
+  for (const Touch& t : touches)
+    for (int off : {-1, 0, 1}) {
+      const F rho = off == 0 ? t.radius
+                             : std::nextafter(t.radius, off < 0 ? F(0) : std::numeric_limits<F>::infinity());
+      const Sphere<F> sp{t.centre, rho};
+      INFO(t.name << ", radius " << off << " ulp");
+      const bool truth = book::intersect(convert_prim_exact(sp), convert_prim_exact(box));
+      REQUIRE(truth == (off >= 0));
+      const robust::Decision d = robust::decide(sp, box);
+      REQUIRE(d.certain);
+      REQUIRE(d.value == truth);
+      REQUIRE(robust::intersect(sp, box) == truth);
+      const Proximity<F> p = robust::proximity(sp, box);
+      REQUIRE(p.intersect == truth);
+      if (off == 0) {
+        REQUIRE(p.distance == F(0));
+        REQUIRE(p.depth == F(0));
+      }
+      certain += d.certain;
+      met += truth;
+      if constexpr (std::is_same_v<F, double>) {
+        // the box turned by a signed permutation: axes (0, 1, 0), (0, 0, -1), (-1, 0, 0)
+        const OrientedBox<double> obb{box.center, Vec3<double>(box.extent[1], box.extent[2], box.extent[0]),
+                                      {Vec3<double>(0, 1, 0), Vec3<double>(0, 0, -1), Vec3<double>(-1, 0, 0)}};
+        Box<double> back;
+        REQUIRE(oracle::sphere_obb::as_axis_aligned(obb, back));
+        REQUIRE(back.extent == box.extent);
+        const robust::Decision o = robust::decide(sp, obb);
+        REQUIRE(o.certain);
+        REQUIRE(o.value == truth);
+        REQUIRE(robust::proximity(sp, obb).intersect == truth);
+      }
+    }
+  CHECK(certain == 9);
+  CHECK(met == 6);
+}
+
 }  // namespace cdref_test_sat

@@ -676,6 +676,36 @@ inline int filter(const Sphere<double>& s, const OrientedBox<double>& b) {
   if (Glo > 0 && Glo * Glo * (1 - 8 * u) > (rr * ww) * (1 + 8 * u) + eta) return 0;
   return unknown;
 }
+// An oriented box whose axes are the coordinate axes up to order and sign (the identity
+// rotation and the 47 others of the cube's symmetry group) is an axis-aligned box: with a_i =
+// s_i e_p(i) (s_i = +-1, p a permutation), {c + sum_i u_i a_i : |u_i| <= h_i} is {x : |x_j -
+// c_j| <= h_i for j = p(i)}, the box with the same centre and the extents permuted. No
+// rounding: the centre and the extents are copied. A unit vector with double components has
+// a single nonzero one (a sum of three squares of dyadic rationals equal to 1 has one nonzero
+// term, by descent mod 4), so these are the only boxes whose axes are exactly unit. On them a
+// sphere touching a face, an edge or a corner exactly is easy to build in doubles, and the
+// campaigns' families build it (their rotations include signed permutations). The
+// certificates leave an exact touch undecided; before this step it took the rational stage
+// (about 275 us a case), as an exact touch of any other box still does. The oracle's
+// second stage and the robust tier's certified decision (robust/separating_axes.hpp) both take
+// sphere-box's own stages on such a box.
+inline bool as_axis_aligned(const OrientedBox<double>& b, Box<double>& out) {
+  unsigned seen = 0;
+  for (int i = 0; i < 3; ++i) {
+    int j = -1;
+    for (int c = 0; c < 3; ++c) {
+      const double x = b.axis[i][c];
+      if (x == 0) continue;
+      if (std::fabs(x) != 1 || j >= 0) return false;  // (a NaN fails here)
+      j = c;
+    }
+    if (j < 0 || ((seen >> j) & 1u)) return false;
+    seen |= 1u << j;
+    out.extent[j] = b.extent[i];
+  }
+  out.center = b.center;
+  return true;
+}
 }  // namespace sphere_obb
 
 }  // namespace cdref::oracle

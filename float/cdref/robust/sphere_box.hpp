@@ -59,8 +59,10 @@
 // the rest takes the checks (the same messages) and the filter again, out of line.
 // decide() otherwise: outside, the sign of Q by dot2_cert (ray_sphere.hpp), extra absolute 128 eta for
 // low terms scaled below the normal range; inside, intersect = true exactly. Never certain
-// when the first scaling lost bits (inputs 2^(emax+emin) apart). Exact touching (Q = 0 with
-// v != 0) is always uncertain.
+// when the first scaling lost bits (inputs 2^(emax+emin) apart). Where dot2's bound cannot
+// tell Q's sign (an exact touch, Q = 0 with v != 0, among those cases), the exact sign of the
+// 38 parts of its products (sph_box_q_sign): certain wherever every product's two_prod is exact
+// (no factor pair underflows), and an exact touch then meets with distance and depth 0.
 #pragma once
 
 #include <algorithm>
@@ -161,6 +163,40 @@ F sph_box_q3(const SphBoxLocal<F>& L) {
   return sum_k(p, 3);
 }
 
+// Q's sign where dot2's bound cannot tell it (an exact touch, Q = 0, among such cases): the 38
+// parts of the 19 exact products summed as an expansion (exact_sign_of_sum, sphere_sphere.hpp),
+// exactly, wherever the first scaling lost nothing (L.exact) and every product's two_prod is
+// exact. A product's low part is exact wherever the product is 0 by a zero factor or at least
+// 2^(emin + p) in magnitude (then the lowest bits of its factors sum to at least emin - p + 1,
+// the subnormals' spacing); 2 min / u stands for that with a factor 2 to spare. `certain` says
+// whether the sign returned is Q's; where it is not, it is the sign of dot2's value.
+template <class F>
+int sph_box_q_sign(const SphBoxLocal<F>& L, const Bounded<F>& qb, bool& certain) {
+  certain = true;
+  if (const int s = qb.sign()) return s;
+  const int rounded = int(qb.value > F(0)) - int(qb.value < F(0));
+  certain = false;
+  if (!L.exact) return rounded;
+  const F *a = L.a, *b = L.b, *e = L.e;
+  F p[38];
+  int n = 0;
+  bool exact = true;
+  const auto put = [&](F x, F y) {
+    const Pair<F> t = two_prod(x, y);
+    exact = exact && (x == F(0) || y == F(0) || std::fabs(t.hi) >= F(2) * std::numeric_limits<F>::min() / unit_roundoff<F>());
+    p[n++] = t.hi;
+    p[n++] = t.lo;
+  };
+  for (int i = 0; i < 3; ++i) {
+    put(a[i], a[i]), put(b[i], b[i]), put(e[i], e[i]);
+    put(F(2 * a[i]), b[i]), put(F(2 * a[i]), e[i]), put(F(2 * b[i]), e[i]);
+  }
+  put(L.rho, F(-L.rho));
+  if (!exact) return rounded;
+  certain = true;
+  return exact_sign_of_sum(p);
+}
+
 // The filter of the header: +1 (Q > 0: apart) or -1 (Q < 0: meeting) where the sign of Q is
 // certain from the stable tier's arithmetic, 0 where it is not.
 template <class F>
@@ -224,7 +260,8 @@ template <class F>
   if constexpr (std::is_same_v<F, float>) return intersect_checked(detail::widened(sp), detail::widened(box));  // (decision.hpp, widened)
   if (const int f = detail::sphere_box_filter(sp, box)) return f < 0;
   const auto L = detail::sph_box_local(sp, box);
-  return !L.outside || detail::sph_box_q(L).value <= F(0);
+  bool certain;
+  return !L.outside || detail::sph_box_q_sign(L, detail::sph_box_q(L), certain) <= 0;
 }
 // (intersect() and decide(): the filter before the input checks at double, header)
 template <class F>
@@ -242,8 +279,9 @@ template <class F>
   if (const int f = detail::sphere_box_filter(sp, box)) return Decision{f < 0, true};
   const auto L = detail::sph_box_local(sp, box);
   if (!L.outside) return within_range(Decision{true, L.exact}, sp, box);
-  const detail::Bounded<F> q = detail::sph_box_q(L);
-  return within_range(Decision{q.value <= F(0), L.exact && q.sign() != 0}, sp, box);
+  bool certain;
+  const int q = detail::sph_box_q_sign(L, detail::sph_box_q(L), certain);
+  return within_range(Decision{q <= 0, L.exact && certain}, sp, box);
 }
 template <class F>
 Decision decide(const Sphere<F>& sp, const Box<F>& box) {
@@ -262,7 +300,9 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
   const auto L = detail::sph_box_local(sp, box);
   const detail::Bounded<F> qb = L.outside ? detail::sph_box_q(L) : detail::Bounded<F>{F(0), F(0)};
   const F q = qb.value;
-  res.intersect = !L.outside || q <= F(0);
+  bool q_certain = false;  // Q's sign as decide() takes it (exact where dot2 cannot tell it)
+  const int q_sign = L.outside ? detail::sph_box_q_sign(L, qb, q_certain) : 0;
+  res.intersect = !L.outside || q_sign <= 0;
   if (const int f = detail::sphere_box_filter(sp, box)) res.intersect = f < 0;  // as decide() and intersect()
   Vec3<F> x = sp.center;  // the closest point of the box, world coordinates
   for (int i = 0; i < 3; ++i)
@@ -277,7 +317,8 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
       vh[i] = p.hi;
       vl[i] = p.lo;
     }
-    if ((w & (want_distance | want_depth)) && q != F(0)) {
+    // (an exact touch, Q = 0 proven: distance and depth stay 0)
+    if ((w & (want_distance | want_depth)) && q != F(0) && !(q_certain && q_sign == 0)) {
       // Q within (1 + 1/16)u of itself: dot2's where its bound says so (E <= 2.125u|Q^|), else
       // summed as if in triple precision; |v| + rho as a double word (norm_dw: 18u^2), the
       // quotient by div_pair, one rounding (as sphere_sphere.hpp)

@@ -221,12 +221,13 @@ F plus_dw(F c, const Pair<F>& x, int e) {
 
 // The exact sign of x_0 + ... + x_{N-1} (Shewchuk's Grow-Expansion with zero elimination:
 // two_sum is exact, the expansion is nonoverlapping and its largest component, the last,
-// carries the sign).
+// carries the sign; a zero term is skipped, as it leaves the expansion as it is).
 template <class F, std::size_t N>
 int exact_sign_of_sum(const F (&x)[N]) {
   F e[N + 1];
   int m = 0;
   for (std::size_t k = 0; k < N; ++k) {
+    if (x[k] == F(0)) continue;
     F q = x[k];
     F h[N + 1];
     int j = 0;
