@@ -28,7 +28,11 @@
 // frame itself is off by |A^T A - I| |s - c|, a few u |s - c| for axes rounded from a
 // rotation, of the same order as the rounding above. Every formulation that moves the shot
 // into the frame carries these bands; they grow with the source's distance from the box
-// relative to the box's size, as for the axis-aligned box (stable/ray_box.hpp).
+// relative to the box's size, as for the axis-aligned box (stable/ray_box.hpp). A segment is
+// first rejected where both ends' frame coordinates lie beyond one face plane (ray_box.hpp,
+// step 0; the target's taken as A^T (t - c), rounded as f is): each is off by about
+// 4u |p - c| plus the frame's |A^T A - I| |p - c|, so the reject is right outside bands of
+// that width about the face planes, which the slab's bands above contain.
 // Outputs: the entry point's face coordinate in the frame is exact, so its distance from the
 // face plane is only the mapping's rounding (u (|c| + 3 h) per component), where the book's
 // s + lambda r carries lambda's error times |r| (of the order of u |s - c| at range); the
@@ -66,9 +70,9 @@ Cast<F> cast_in_frame(const Vec3<F>& s_world, const Vec3<F>& r_world, const Orie
 namespace unchecked {
 template <class F>
 bool hit(const Segment<F>& seg, const OrientedBox<F>& b) {
-  return detail::slab(book::detail::frame_point(b, seg.source),
-                      book::detail::frame_vector(b, Vec3<F>(seg.target - seg.source)), b.extent, true)
-      .hit;
+  const Vec3<F> f = book::detail::frame_point(b, seg.source);
+  if (detail::ends_beyond_one_plane(f, book::detail::frame_point(b, seg.target), b.extent)) return false;
+  return detail::slab(f, book::detail::frame_vector(b, Vec3<F>(seg.target - seg.source)), b.extent, true).hit;
 }
 template <class F>
 bool hit(const Ray<F>& ray, const OrientedBox<F>& b) {
@@ -98,6 +102,9 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const OrientedBox<F>& b, unsigned w = want_cast) {
   check(seg, "segment");
   check(b, "oriented box");
+  if (detail::ends_beyond_one_plane(book::detail::frame_point(b, seg.source), book::detail::frame_point(b, seg.target),
+                                    b.extent))
+    return Cast<F>{};  // (as unchecked::hit)
   return detail::cast_in_frame(seg.source, Vec3<F>(seg.target - seg.source), b, true, w);
 }
 template <class F>

@@ -117,6 +117,19 @@ Slab<F> slab(const Vec3<F>& f, const Vec3<F>& r, const Vec3<F>& h, bool bounded)
   return k;
 }
 
+// Step 0 for a segment: its two ends strictly beyond one face plane, with f = s - c and g =
+// t - c each rounded once (in an oriented box's frame, the frame coordinates of the ends:
+// obb.hpp). Then the segment misses, and for an axis-aligned box exactly so: rounding is
+// monotone and h_i is a float, so fl(s_i - c_i) > h_i implies s_i - c_i > h_i. These are
+// Algorithm 3.3's outcodes (and Bullet's btRayAabb reject): the three axes are tested without
+// a branch, and the one branch on the answer skips the slab's divisions on most misses.
+template <class F>
+bool ends_beyond_one_plane(const Vec3<F>& f, const Vec3<F>& g, const Vec3<F>& h) {
+  bool out = false;
+  for (int i = 0; i < 3; ++i) out |= ((f[i] > h[i]) & (g[i] > h[i])) | ((f[i] < -h[i]) & (g[i] < -h[i]));
+  return out;
+}
+
 template <class F>
 Cast<F> cast_slab(const Vec3<F>& s, const Vec3<F>& r, const Box<F>& box, bool bounded, unsigned w) {
   Cast<F> res;
@@ -146,7 +159,9 @@ Cast<F> cast_slab(const Vec3<F>& s, const Vec3<F>& r, const Box<F>& box, bool bo
 namespace unchecked {
 template <class F>
 bool hit(const Segment<F>& seg, const Box<F>& box) {
-  return detail::slab(Vec3<F>(seg.source - box.center), Vec3<F>(seg.target - seg.source), box.extent, true).hit;
+  const Vec3<F> f(seg.source - box.center);
+  if (detail::ends_beyond_one_plane(f, Vec3<F>(seg.target - box.center), box.extent)) return false;
+  return detail::slab(f, Vec3<F>(seg.target - seg.source), box.extent, true).hit;
 }
 template <class F>
 bool hit(const Ray<F>& ray, const Box<F>& box) {
@@ -170,6 +185,8 @@ template <class F>
 Cast<F> cast(const Segment<F>& seg, const Box<F>& box, unsigned w = want_cast) {
   check(seg, "segment");
   check(box, "box");
+  if (detail::ends_beyond_one_plane(Vec3<F>(seg.source - box.center), Vec3<F>(seg.target - box.center), box.extent))
+    return Cast<F>{};  // (step 0, as unchecked::hit)
   return detail::cast_slab(seg.source, Vec3<F>(seg.target - seg.source), box, true, w);
 }
 template <class F>
