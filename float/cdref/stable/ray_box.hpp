@@ -126,7 +126,10 @@ Slab<F> slab(const Vec3<F>& f, const Vec3<F>& r, const Vec3<F>& h, bool bounded)
 template <class F>
 bool ends_beyond_one_plane(const Vec3<F>& f, const Vec3<F>& g, const Vec3<F>& h) {
   bool out = false;
-  for (int i = 0; i < 3; ++i) out |= ((f[i] > h[i]) & (g[i] > h[i])) | ((f[i] < -h[i]) & (g[i] < -h[i]));
+  for (int i = 0; i < 3; ++i) {
+    const F a = f[i], b = g[i], e = h[i];  // (plain values: no call inside the bitwise operators)
+    out |= ((a > e) & (b > e)) | ((a < -e) & (b < -e));
+  }
   return out;
 }
 
