@@ -142,43 +142,14 @@ Bounded<F> sph_box_q(const SphBoxLocal<F>& L) {
                    128);
 }
 
-// Q as sph_box_q, summed as if in triple precision (sum_k, K = 3, over the 38 parts of the 19
-// exact products): |Q^ - Q| <= (u + 3 gamma_37^2)|Q| + gamma_74^3 S (+ 38 eta for products
-// below the normal range). Taken where dot2's bound is not within u|Q|/16 (item 5).
+// The 38 parts of Q's 19 exact products (two_prod's high and low parts, sph_box_q's terms);
+// false where some product's low part may have underflowed. A product's low part is exact
+// wherever the product is 0 by a zero factor or at least 2^(emin + p) in magnitude (then the
+// lowest bits of its factors sum to at least emin - p + 1, the subnormals' spacing); 2 min / u
+// stands for that with a factor 2 to spare.
 template <class F>
-F sph_box_q3(const SphBoxLocal<F>& L) {
+bool sph_box_q_parts(const SphBoxLocal<F>& L, F (&p)[38]) {
   const F *a = L.a, *b = L.b, *e = L.e;
-  F p[38];
-  int n = 0;
-  const auto put = [&](F x, F y) {
-    const Pair<F> t = two_prod(x, y);
-    p[n++] = t.hi;
-    p[n++] = t.lo;
-  };
-  for (int i = 0; i < 3; ++i) {
-    put(a[i], a[i]), put(b[i], b[i]), put(e[i], e[i]);
-    put(F(2 * a[i]), b[i]), put(F(2 * a[i]), e[i]), put(F(2 * b[i]), e[i]);
-  }
-  put(L.rho, F(-L.rho));
-  return sum_k(p, 3);
-}
-
-// Q's sign where dot2's bound cannot tell it (an exact touch, Q = 0, among such cases): the 38
-// parts of the 19 exact products summed as an expansion (exact_sign_of_sum, sphere_sphere.hpp),
-// exactly, wherever the first scaling lost nothing (L.exact) and every product's two_prod is
-// exact. A product's low part is exact wherever the product is 0 by a zero factor or at least
-// 2^(emin + p) in magnitude (then the lowest bits of its factors sum to at least emin - p + 1,
-// the subnormals' spacing); 2 min / u stands for that with a factor 2 to spare. `certain` says
-// whether the sign returned is Q's; where it is not, it is the sign of dot2's value.
-template <class F>
-int sph_box_q_sign(const SphBoxLocal<F>& L, const Bounded<F>& qb, bool& certain) {
-  certain = true;
-  if (const int s = qb.sign()) return s;
-  const int rounded = int(qb.value > F(0)) - int(qb.value < F(0));
-  certain = false;
-  if (!L.exact) return rounded;
-  const F *a = L.a, *b = L.b, *e = L.e;
-  F p[38];
   int n = 0;
   bool exact = true;
   const auto put = [&](F x, F y) {
@@ -192,7 +163,31 @@ int sph_box_q_sign(const SphBoxLocal<F>& L, const Bounded<F>& qb, bool& certain)
     put(F(2 * a[i]), b[i]), put(F(2 * a[i]), e[i]), put(F(2 * b[i]), e[i]);
   }
   put(L.rho, F(-L.rho));
-  if (!exact) return rounded;
+  return exact;
+}
+
+// Q as sph_box_q, summed as if in triple precision (sum_k, K = 3, over the 38 parts of the 19
+// exact products): |Q^ - Q| <= (u + 3 gamma_37^2)|Q| + gamma_74^3 S (+ 38 eta for products
+// below the normal range). Taken where dot2's bound is not within u|Q|/16 (item 5).
+template <class F>
+F sph_box_q3(const SphBoxLocal<F>& L) {
+  F p[38];
+  sph_box_q_parts(L, p);
+  return sum_k(p, 3);
+}
+
+// Q's sign where dot2's bound cannot tell it (an exact touch, Q = 0, among such cases): the 38
+// parts summed as an expansion (exact_sign_of_sum, sphere_sphere.hpp), exactly, wherever the
+// first scaling lost nothing (L.exact) and every product's two_prod is exact. `certain` says
+// whether the sign returned is Q's; where it is not, it is the sign of dot2's value.
+template <class F>
+int sph_box_q_sign(const SphBoxLocal<F>& L, const Bounded<F>& qb, bool& certain) {
+  certain = true;
+  if (const int s = qb.sign()) return s;
+  const int rounded = int(qb.value > F(0)) - int(qb.value < F(0));
+  certain = false;
+  F p[38];
+  if (!L.exact || !sph_box_q_parts(L, p)) return rounded;
   certain = true;
   return exact_sign_of_sum(p);
 }
