@@ -312,8 +312,10 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
       vh[i] = p.hi;
       vl[i] = p.lo;
     }
-    // (an exact touch, Q = 0 proven: distance and depth stay 0)
-    if ((w & (want_distance | want_depth)) && q != F(0) && !(q_certain && q_sign == 0)) {
+    // Q's sign: the exact one where it is certain (an exact touch, Q = 0 proven: distance and
+    // depth stay 0), else the computed one's
+    const int qs = q_certain ? q_sign : int(q > F(0)) - int(q < F(0));
+    if ((w & (want_distance | want_depth)) && qs != 0) {
       // Q within (1 + 1/16)u of itself: dot2's where its bound says so (E <= 2.125u|Q^|), else
       // summed as if in triple precision; |v| + rho as a double word (norm_dw: 18u^2), the
       // quotient by div_pair, one rounding (as sphere_sphere.hpp)
@@ -321,11 +323,11 @@ Proximity<F> proximity(const Sphere<F>& sp, const Box<F>& box, unsigned w = want
       const Pair<F> len = detail::norm_dw(vh, vl);
       const Pair<F> t = two_sum(len.hi, L.rho);
       const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
-      if (den.hi > F(0) && (Q > F(0)) == (q > F(0))) {
+      if (den.hi > F(0) && (Q > F(0)) == (qs > 0)) {
         const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
         const F dv = std::ldexp(F(d.hi + d.lo), L.scale);
-        if ((w & want_distance) && q > F(0)) res.distance = dv;
-        if ((w & want_depth) && q < F(0)) res.depth = dv;
+        if ((w & want_distance) && qs > 0) res.distance = dv;
+        if ((w & want_depth) && qs < 0) res.depth = dv;
       }
     }
     if (w & want_witnesses) {
