@@ -24,6 +24,7 @@
 #include "queries/triangle_casts.hpp"
 #include "queries/sphere_triangle.hpp"
 #include "queries/triangle_triangle.hpp"
+#include <cdref/oracle/sat_grid.hpp>
 #include <cdref/oracle/sat_words.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
@@ -1252,6 +1253,128 @@ TEST_CASE("the open axes alone decide: a triangle's plane 2^-48 from a box's cor
     REQUIRE(w == oracle::sat::at_stage(Stage::rational, tri, b));
     REQUIRE(oracle::classify(tri, b) == (t < 0));
   }
+}
+
+namespace {
+// The book's separation at CGAL::Gmpq on the same inputs, and the grid's (and the robust tier's)
+// against it: the classification, the first separating axis and the direction rounded once.
+template <class F>
+void require_book_at_gmpq(const Separation<F>& got, const Triangle<F>& t, const Box<F>& b) {
+  const auto q = [](const Vec3<F>& v) { return Vec3<CGAL::Gmpq>(CGAL::Gmpq(double(v[0])), CGAL::Gmpq(double(v[1])), CGAL::Gmpq(double(v[2]))); };
+  const Separation<CGAL::Gmpq> e =
+      book::separate(Triangle<CGAL::Gmpq>{{q(t.vertex[0]), q(t.vertex[1]), q(t.vertex[2])}}, Box<CGAL::Gmpq>{q(b.center), q(b.extent)});
+  REQUIRE(got.intersect == e.intersect);
+  REQUIRE(got.axis == e.axis);
+  for (int i = 0; i < 3; ++i) REQUIRE(got.direction[i] == round_to<F>(e.direction[i]));
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("a triangle and a box on a grid: the book's 13 axes exactly, its axis and direction too",
+                   "[oracle-classify][sat]", float, double) {
+  using F = TestType;
+  using TB = fuzz::queries::TriangleBox;
+  const Query q = query_by_name(TB::name);
+  int on_grid = 0, total = 0, degenerate = 0, degenerate_on_grid = 0, no_direction = 0;
+  for (const Family& f : families(q))
+    for (int k : f.scales)
+      for (std::uint64_t i = 0; i < 40; ++i) {
+        const auto [t, b] = TB::template make<F>(make_case(13, q, f, k, i));
+        INFO(f.name << "/" << k << " case " << i);
+        bool finite = true;  // (the magnitude family overflows float)
+        for (const Vec3<F>& v : {t.vertex[0], t.vertex[1], t.vertex[2], b.center, b.extent})
+          for (int c = 0; c < 3; ++c) finite = finite && std::isfinite(v[c]);
+        if (!finite) continue;
+        const auto dv = [](const Vec3<F>& v) { return Vec3<double>(v[0], v[1], v[2]); };
+        const oracle::sat_grid::TriangleBox g(Triangle<double>{{dv(t.vertex[0]), dv(t.vertex[1]), dv(t.vertex[2])}},
+                                              Box<double>{dv(b.center), dv(b.extent)});
+        ++total;
+        const bool degen = f.name == "degenerate";
+        degenerate += degen;
+        if (!g.ok) continue;
+        ++on_grid;
+        degenerate_on_grid += degen;
+        Separation<F> s;
+        s.intersect = g.axis < 0;
+        s.axis = g.axis;
+        if (g.axis >= 0 && !g.direction(s.direction)) {  // a component below F's normal range
+          ++no_direction;
+          continue;
+        }
+        require_book_at_gmpq(s, t, b);
+        // the robust tier takes it: the same answer, certain
+        require_book_at_gmpq(robust::separate(t, b), t, b);
+        const robust::Decision d = robust::decide(t, b);
+        REQUIRE(d.certain);
+        REQUIRE(d.value == s.intersect);
+        if constexpr (std::is_same_v<F, double>) REQUIRE(oracle::classify(t, b) == s.intersect);
+      }
+  INFO(on_grid << " of " << total << " cases on a grid, " << degenerate_on_grid << " of " << degenerate
+               << " degenerate, " << no_direction << " without a normal direction");
+  REQUIRE(no_direction < total / 20);  // (float at the tiny magnitudes)
+  REQUIRE(degenerate_on_grid == degenerate);  // coordinates in [-3, 3]: every axis spans < 62 bits
+  REQUIRE(on_grid > total * 3 / 4);           // all but the long-range family and far magnitudes
+}
+
+TEST_CASE("a triangle and a box on a grid: exact ties, subnormals, and inputs no grid holds", "[oracle-classify][sat]") {
+  using V = Vec3<double>;
+  const Box<double> unit{V(0, 0, 0), V(1, 1, 1)};
+  const double tiny = std::ldexp(1.0, -1070), eps = std::ldexp(1.0, -52), d = std::ldexp(1.0, -50);
+  struct Case {
+    const char* what;
+    Triangle<double> t;
+    Box<double> b;
+    bool intersect;
+  };
+  const std::vector<Case> cases = {
+      // zero area, exactly collinear: on the line x + y = 2 + d in the face plane z = 1, touching
+      // the box's corner (1, 1, 1) at d = 0 (the normal is 0, the edge crosses tie), past it at d > 0
+      {"collinear, touching the corner", {{V(3, -1, 1), V(-1, 3, 1), V(1, 1, 1)}}, unit, true},
+      {"collinear, past the corner", {{V(3, -1 + d, 1), V(-1 + d, 3, 1), V(1 + d / 2, 1 + d / 2, 1)}}, unit, false},
+      {"a point on the face x = 1", {{V(1, 0.25, -0.5), V(1, 0.25, -0.5), V(1, 0.25, -0.5)}}, unit, true},
+      {"a point just off the face x = 1", {{V(1 + eps * 2, 0.25, 0), V(1 + eps * 2, 0.25, 0), V(1 + eps * 2, 0.25, 0)}},
+       unit, false},
+      {"in the plane of a flat box", {{V(-3, 0, 0), V(3, 0.5, 0), V(0, -4, 0)}}, Box<double>{V(0, 0, 0), V(1, 1, 0)}, true},
+      {"a subnormal gap above a flat box", {{V(-3, 0, tiny), V(3, 0.5, tiny), V(0, -4, tiny)}},
+       Box<double>{V(0, 0, 0), V(1, 1, 0)}, false},
+      // a point box on the plane x + y + z = tiny, inside the triangle
+      {"subnormal coordinates, a point box inside", {{V(tiny, 0, 0), V(0, tiny, 0), V(0, 0, tiny)}},
+       Box<double>{V(tiny / 4, tiny / 4, tiny / 2), V(0, 0, 0)}, true},
+      {"subnormal coordinates, a point box beside", {{V(tiny, 0, 0), V(0, tiny, 0), V(0, 0, tiny)}},
+       Box<double>{V(tiny / 4, tiny / 4, tiny), V(0, 0, 0)}, false},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what);
+    const oracle::sat_grid::TriangleBox g(c.t, c.b);
+    REQUIRE(g.ok);
+    REQUIRE((g.axis < 0) == c.intersect);
+    require_book_at_gmpq(robust::separate(c.t, c.b), c.t, c.b);
+    REQUIRE(robust::decide(c.t, c.b).certain);
+    REQUIRE(oracle::classify(c.t, c.b) == c.intersect);
+  }
+  // A normal vector below double's normal range, rounded once: N = e_0 x f has N_x = (1 + 2^-14 +
+  // 2^-15 - 2^-70) 2^-1060, on the subnormal grid (steps of 2^-14 there) just below the half-way
+  // point, so it rounds down to (1 + 2^-14) 2^-1060; rounded to 53 bits first it would sit on
+  // the half-way point and round to even, up to (1 + 2^-13) 2^-1060.
+  {
+    const double s = std::ldexp(1.0, -530), w = std::ldexp(1.0, -565);
+    const Triangle<double> t{{V(0, 0, 0), V(0, (1 + std::ldexp(1.0, -14) + std::ldexp(1.0, -15)) * s, w), V(0, w, s)}};
+    const Box<double> b{V(-2 * s, 0, 0), V(s, s, s)};
+    const oracle::sat_grid::TriangleBox g(t, b);
+    REQUIRE(g.ok);
+    REQUIRE(g.axis == 0);
+    Vec3<double> n;
+    REQUIRE(g.direction(n));
+    REQUIRE(n[0] == std::ldexp(1 + std::ldexp(1.0, -14), -1060));
+    require_book_at_gmpq(robust::separate(t, b), t, b);
+  }
+  // 1e12 beside 0.1 on one axis spans more than 62 bits: no grid; the other stages answer
+  const Triangle<double> far{{V(1e12, 0, 0), V(1e12, 1, 0), V(1e12, 0, 1)}};
+  const Box<double> near{V(1e12 - 1, 0, 0), V(1 + 0.1, 1, 1)};
+  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(far, near).ok);
+  REQUIRE(oracle::classify(far, near) == book::separate(oracle::rational_inputs::toq(far), oracle::rational_inputs::toq(near)).intersect);
+  // a NaN is on no grid (the checks refuse it before any stage)
+  const Triangle<double> bad{{V(std::nan(""), 0, 0), V(0, 0, 0), V(0, 0, 0)}};
+  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(bad, unit).ok);
 }
 
 TEST_CASE("a sphere and an oriented box: the first stage's certificates on double words decide as the solid at Gmpq",

@@ -20,7 +20,10 @@
 //                touching one axis of the 13 or 15); (sphere) a box with the coordinate
 //                axes as sphere-box does it (classify.hpp: double words, then the exact sign
 //                on expansions), any other stage 1's point and direction on double words
-//                (sat_words.hpp); then the robust versions' evaluation of
+//                (sat_words.hpp); (a triangle and a box) the 13 axes exactly on the inputs
+//                read as integers on a grid per coordinate axis (sat_grid.hpp: every tie of a
+//                zero-area triangle, a flat box or a face's plane decided); then the robust
+//                versions' evaluation of
 //                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
@@ -53,6 +56,7 @@ int double_word(const A& a, const B& b, unsigned open) {
   if constexpr (robust::detail::has_cast_decision<A, B, double>)
     if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
   if (const int r = sat_words::decide(a, b, open); r != unknown) return r;
+  if (Separation<double> g; robust::detail::separation_on_grid(a, b, g)) return int(g.intersect);
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
 }
@@ -90,6 +94,10 @@ bool run(Stage* used, const A& a, const B& b) {
   bool words = false;
   int r = robust::detail::stages_before_whole<double>(a, b, &words);
   Stage st = words ? Stage::expansion : Stage::filter;
+  if (Separation<double> g; r == unknown && robust::detail::separation_on_grid(a, b, g)) {
+    r = int(g.intersect);
+    st = Stage::expansion;
+  }
   if (r == unknown) {
     const auto [s, certain] = robust::detail::separation<double>(a, b);
     if (certain) r = int(s.intersect);

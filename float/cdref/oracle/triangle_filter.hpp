@@ -98,6 +98,7 @@
 #include <bit>
 #include <cstdint>
 #include <cdref/cdref.hpp>
+#include <cdref/oracle/grid.hpp>
 #include <cdref/oracle/minmax.hpp>
 #include <cmath>
 #include <limits>
@@ -130,50 +131,11 @@ inline constexpr int unknown = 2;
 // ---- the second look: the inputs as integers on a grid, one grid an axis ----
 namespace exact_eval {
 
-using Wide = __int128;
-using UWide = unsigned __int128;
-
-// A finite double as m 2^e with m odd, or m = 0: 2^e is the coarsest grid it lies on.
-struct Dyadic {
-  std::int64_t m = 0;
-  int e = 0;
-};
-inline Dyadic dyadic(double x) {
-  const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
-  const int biased = int((b >> 52) & 0x7ff);
-  std::uint64_t mant = b & ((std::uint64_t(1) << 52) - 1);
-  if (biased != 0) mant |= std::uint64_t(1) << 52;  // a subnormal has no implicit bit
-  if (mant == 0) return {};
-  const int tz = std::countr_zero(mant);
-  mant >>= tz;
-  const int e = (biased == 0 ? -1074 : biased - 1075) + tz;
-  return {(b >> 63) ? -std::int64_t(mant) : std::int64_t(mant), e};
-}
-
-// One axis's coordinates as integers on the coarsest grid 2^G they share (G the smallest e of
-// their dyadic forms): n_j = x_j 2^-G exactly. false where one is not finite or where an n_j
-// needs more than 62 bits (the axis's values span more than 62 bits, from the largest's top bit
-// to the finest's lowest), so that a difference of two fits in an int64. `grid` is G, or
-// no_grid where every value is 0 (any grid does).
-inline constexpr int no_grid = 1 << 20;
-template <int N>
-bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
-  Dyadic d[N];
-  grid = no_grid;
-  for (int j = 0; j < N; ++j) {
-    if (!(std::fabs(x[j]) <= std::numeric_limits<double>::max())) return false;  // NaN, infinities
-    d[j] = dyadic(x[j]);
-    if (d[j].m != 0) grid = std::min(grid, d[j].e);
-  }
-  for (int j = 0; j < N; ++j) {
-    n[j] = 0;
-    if (d[j].m == 0) continue;
-    const int shift = d[j].e - grid;  // >= 0
-    if (std::bit_width(std::uint64_t(std::llabs(d[j].m))) + shift > 62) return false;
-    n[j] = d[j].m * (std::int64_t(1) << shift);
-  }
-  return true;
-}
+using grid::axis_on_grid;
+using grid::dyadic;
+using grid::Dyadic;
+using grid::no_grid;
+using grid::Wide;
 
 // The exact sign of a . (b x c) for integer vectors whose i-th coordinates are below 2^L_i in
 // magnitude with L_0 + L_1 + L_2 <= 124: each of the six monomials is below 2^124, their
@@ -191,33 +153,12 @@ inline int triple(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const 
 // integer; each a_i x_i is below 2^190, taken as a 192-bit magnitude (two 64 x 64 -> 128-bit
 // products) and added to or subtracted from a 256-bit two's-complement sum, below 2^192.
 inline int triple_wide(const std::int64_t (&a)[3], const std::int64_t (&b)[3], const std::int64_t (&c)[3]) {
-  std::uint64_t acc[4] = {0, 0, 0, 0};
+  grid::Sum256 acc;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const Wide x = Wide(b[j]) * c[k] - Wide(b[k]) * c[j];
-    if (x == 0 || a[i] == 0) continue;
-    const bool neg = (x < 0) != (a[i] < 0);
-    const UWide mx = x < 0 ? UWide(-x) : UWide(x);  // |x| < 2^127: -x does not overflow
-    const std::uint64_t ma = a[i] < 0 ? -std::uint64_t(a[i]) : std::uint64_t(a[i]);
-    const UWide lo = UWide(std::uint64_t(mx)) * ma, hi = UWide(std::uint64_t(mx >> 64)) * ma;
-    const UWide mid = (lo >> 64) + std::uint64_t(hi);
-    const std::uint64_t m[4] = {std::uint64_t(lo), std::uint64_t(mid), std::uint64_t(mid >> 64) + std::uint64_t(hi >> 64), 0};
-    // acc +- m, limb by limb with the carry or borrow
-    UWide carry = 0;
-    for (int l = 0; l < 4; ++l) {
-      if (!neg) {
-        const UWide t = UWide(acc[l]) + m[l] + carry;
-        acc[l] = std::uint64_t(t);
-        carry = t >> 64;
-      } else {
-        const UWide t = UWide(acc[l]) - m[l] - carry;
-        acc[l] = std::uint64_t(t);
-        carry = (t >> 64) != 0;  // a borrow wraps the high half
-      }
-    }
+    acc.add(Wide(b[j]) * c[k] - Wide(b[k]) * c[j], a[i]);
   }
-  if (std::int64_t(acc[3]) < 0) return -1;
-  return (acc[0] | acc[1] | acc[2] | acc[3]) != 0 ? 1 : 0;
+  return acc.sign();
 }
 
 // A ray's direction on grids of its own, 2^(G_i + delta) on axis i with one delta for the three:

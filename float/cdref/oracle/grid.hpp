@@ -1,0 +1,106 @@
+// cdref/oracle/grid.hpp - double inputs as integers on a grid, one grid a coordinate axis, and
+// exact signs of polynomials in them: the exact looks of the oracles' first stages
+// (triangle_filter.hpp for the casts on a triangle, sat_grid.hpp for a triangle and a box).
+//
+// A finite double is m 2^e with m an odd integer (or 0); 2^e is the coarsest grid it lies on.
+// The values one axis carries (the x coordinates of every point, and every length measured
+// along x) lie on the coarsest grid 2^G they share, G the smallest of their e: x_j = n_j 2^G
+// with n_j an integer, read off the bits, so that nothing rounds and subnormals are no
+// exception. A polynomial whose every monomial takes one factor from each of the axes it
+// involves (a cross product's component takes one from each of the other two axes, a triple
+// product one from each of the three) is the same polynomial in the n's scaled by a positive
+// constant, 2^-(G_0 + G_1 + G_2) or the part of it its axes name: its sign is the integer
+// polynomial's. Each n_j is kept below 2^62 (an axis whose values span more, 1e12 beside 0.1,
+// is on no grid narrow enough), so a difference of two fits in an int64, a product of two
+// differences in 127 bits, and a product of three in 190: the sums of those are taken in
+// 256-bit two's complement (Sum256).
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+
+namespace cdref::oracle::grid {
+
+using Wide = __int128;
+using UWide = unsigned __int128;
+
+struct Dyadic {
+  std::int64_t m = 0;
+  int e = 0;
+};
+// A finite double as m 2^e with m odd, or m = 0.
+inline Dyadic dyadic(double x) {
+  const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+  const int biased = int((b >> 52) & 0x7ff);
+  std::uint64_t mant = b & ((std::uint64_t(1) << 52) - 1);
+  if (biased != 0) mant |= std::uint64_t(1) << 52;  // a subnormal has no implicit bit
+  if (mant == 0) return {};
+  const int tz = std::countr_zero(mant);
+  mant >>= tz;
+  const int e = (biased == 0 ? -1074 : biased - 1075) + tz;
+  return {(b >> 63) ? -std::int64_t(mant) : std::int64_t(mant), e};
+}
+
+// One axis's values as integers on the coarsest grid 2^G they share: n_j = x_j 2^-G exactly.
+// false where one is not finite or where an n_j needs more than 62 bits (the axis's values span
+// more than 62 bits, from the largest's top bit to the finest's lowest). `grid` is G, or
+// no_grid where every value is 0 (any grid does).
+inline constexpr int no_grid = 1 << 20;
+template <int N>
+bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
+  Dyadic d[N];
+  grid = no_grid;
+  for (int j = 0; j < N; ++j) {
+    if (!(std::fabs(x[j]) <= std::numeric_limits<double>::max())) return false;  // NaN, infinities
+    d[j] = dyadic(x[j]);
+    if (d[j].m != 0) grid = std::min(grid, d[j].e);
+  }
+  for (int j = 0; j < N; ++j) {
+    n[j] = 0;
+    if (d[j].m == 0) continue;
+    const int shift = d[j].e - grid;  // >= 0
+    if (std::bit_width(std::uint64_t(std::llabs(d[j].m))) + shift > 62) return false;
+    n[j] = d[j].m * (std::int64_t(1) << shift);
+  }
+  return true;
+}
+
+// A sum of products x a, x a signed 128-bit integer below 2^127 in magnitude and a an int64:
+// each product is below 2^190, taken as a 192-bit magnitude (two 64 x 64 -> 128-bit products)
+// and added to or subtracted from a 256-bit two's-complement sum, exact while the sum stays
+// below 2^255 (fewer than 2^64 terms).
+struct Sum256 {
+  std::uint64_t acc[4] = {0, 0, 0, 0};
+  void add(Wide x, std::int64_t a) {
+    if (x == 0 || a == 0) return;
+    const bool neg = (x < 0) != (a < 0);
+    const UWide mx = x < 0 ? UWide(-x) : UWide(x);  // |x| < 2^127: -x does not overflow
+    const std::uint64_t ma = a < 0 ? -std::uint64_t(a) : std::uint64_t(a);
+    const UWide lo = UWide(std::uint64_t(mx)) * ma, hi = UWide(std::uint64_t(mx >> 64)) * ma;
+    const UWide mid = (lo >> 64) + std::uint64_t(hi);
+    const std::uint64_t m[4] = {std::uint64_t(lo), std::uint64_t(mid), std::uint64_t(mid >> 64) + std::uint64_t(hi >> 64),
+                                0};
+    UWide carry = 0;  // acc +- m, limb by limb with the carry or borrow
+    for (int l = 0; l < 4; ++l) {
+      if (!neg) {
+        const UWide t = UWide(acc[l]) + m[l] + carry;
+        acc[l] = std::uint64_t(t);
+        carry = t >> 64;
+      } else {
+        const UWide t = UWide(acc[l]) - m[l] - carry;
+        acc[l] = std::uint64_t(t);
+        carry = (t >> 64) != 0;  // a borrow wraps the high half
+      }
+    }
+  }
+  int sign() const {
+    if (std::int64_t(acc[3]) < 0) return -1;
+    return (acc[0] | acc[1] | acc[2] | acc[3]) != 0 ? 1 : 0;
+  }
+};
+
+}  // namespace cdref::oracle::grid

@@ -1,0 +1,158 @@
+// cdref/oracle/sat_grid.hpp - a triangle and an axis-aligned box (book/triangle_box.hpp,
+// Akenine-Moller's 13 axes) evaluated exactly on integers, the inputs read as integers on a grid
+// per coordinate axis (grid.hpp). Where it applies it gives the book's answer at an exact type:
+// whether they meet and, if not, the first separating axis in the book's order and its direction.
+//
+// With X_k the vertices, C the centre and H the extents, the values one axis carries are
+// X_0,i, X_1,i, X_2,i, C_i and H_i (a length along axis i). On their grid 2^G_i they are
+// integers below 2^62, and the book's quantities are, with V_k = X_k - C (below 2^63), the
+// edges e_0 = X_1 - X_0, e_1 = X_2 - X_1, e_2 = X_0 - X_2 and f = X_2 - X_0 (below 2^63):
+//   axis 0        N = e_0 x f, p = N . V_0, r = sum_i H_i |N_i|, separating iff |p| > r.
+//                 N_i takes one factor from each of the other two axes (below 2^127, exact in
+//                 a signed 128-bit integer), p and r one from each of the three: both scale by
+//                 2^(G_0 + G_1 + G_2), so p - r and p + r (|p| > r iff p - r > 0 or p + r < 0)
+//                 keep their signs on the integers. Each of their six terms is below 2^190:
+//                 Sum256.
+//   axes 1-3      min_k V_k,i > H_i or max_k V_k,i < -H_i: one axis, compared as integers.
+//   axis 4+3k+j   L = e_k x e_j (two nonzero components, +-e_k on the other two axes a, b),
+//                 p = V . L over the vertices k and k + 2, r = H_a |L_a| + H_b |L_b|: every
+//                 term takes one factor from axis a and one from b (scale 2^(G_a + G_b)), each
+//                 product below 2^126, so p and r are exact in 128 bits (|p| < 2^127, r < 2^126)
+//                 and compared there.
+// A zero-area triangle is no exception (N = 0 gives p = r = 0: not separating, as the book
+// says exactly), nor is a flat box, a subnormal input or a triangle in a face's plane: the
+// comparisons that tie there are decided as ties. Where an axis's values span more than 62 bits
+// (1e12 beside 0.1) or an input is not finite, `ok` is false and the next stage answers.
+//
+// The direction, where an axis separates: axis 0 N, axes 1-3 the unit vector, the others
+// L = e_k x e_j; each nonzero component is an integer times 2^(G_a + G_b) (N) or 2^G_i (L),
+// rounded to F once (scaled() below: subnormal results too). A component that overflows F
+// leaves the direction to the caller (direction() returns false).
+#pragma once
+
+#include <bit>
+#include <cdref/oracle/grid.hpp>
+#include <cdref/primitives.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace cdref::oracle::sat_grid {
+
+using grid::Wide;
+
+struct TriangleBox {
+  bool ok = false;  // the inputs lie on grids narrow enough
+  int axis = -1;    // the first separating axis in the book's order; -1: they meet
+  std::int64_t V[3][3] = {}, E[3][3] = {}, H[3] = {};
+  int G[3] = {};
+  Wide N[3] = {};
+
+  TriangleBox(const Triangle<double>& t, const Box<double>& b) {
+    for (int i = 0; i < 3; ++i) {
+      const double x[5] = {t.vertex[0][i], t.vertex[1][i], t.vertex[2][i], b.center[i], b.extent[i]};
+      std::int64_t n[5];
+      if (!grid::axis_on_grid(x, n, G[i])) return;
+      for (int k = 0; k < 3; ++k) {
+        V[k][i] = n[k] - n[3];
+        E[k][i] = n[(k + 1) % 3] - n[k];
+      }
+      H[i] = n[4];
+    }
+    ok = true;
+    axis = first_axis();
+  }
+
+ private:
+  int first_axis() {
+    // axis 0: N = e_0 x f, f = X_2 - X_0 = -e_2
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, l = (i + 2) % 3;
+      N[i] = Wide(E[0][j]) * -E[2][l] - Wide(E[0][l]) * -E[2][j];
+    }
+    grid::Sum256 lo, hi;  // p - r, p + r
+    for (int i = 0; i < 3; ++i) {
+      const Wide a = N[i] < 0 ? -N[i] : N[i];
+      lo.add(N[i], V[0][i]);
+      lo.add(a, -H[i]);
+      hi.add(N[i], V[0][i]);
+      hi.add(a, H[i]);
+    }
+    if (lo.sign() > 0 || hi.sign() < 0) return 0;
+    // axes 1-3: the triangle's bounding box against the box
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t mn = std::min(V[0][i], std::min(V[1][i], V[2][i]));
+      const std::int64_t mx = std::max(V[0][i], std::max(V[1][i], V[2][i]));
+      if (mn > H[i] || mx < -H[i]) return 1 + i;
+    }
+    // axes 4 + 3k + j: e_k x e_j has -+e_k on the two axes a = j + 1, b = j + 2:
+    // (e_k x e_j)_a = e_k,b [a = j + 1], -e_k,a... written out: L_{j+1} = e_{j+2}, L_{j+2} = -e_{j+1}
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) {
+        const int a = (j + 1) % 3, bb = (j + 2) % 3;
+        const std::int64_t La = E[k][bb], Lb = -E[k][a];
+        const Wide p0 = Wide(V[k][a]) * La + Wide(V[k][bb]) * Lb;
+        const Wide p1 = Wide(V[(k + 2) % 3][a]) * La + Wide(V[(k + 2) % 3][bb]) * Lb;
+        const Wide r = Wide(H[a]) * (La < 0 ? -La : La) + Wide(H[bb]) * (Lb < 0 ? -Lb : Lb);
+        const Wide mn = p0 < p1 ? p0 : p1, mx = p0 < p1 ? p1 : p0;
+        if (mn > r || mx < -r) return 4 + 3 * k + j;
+      }
+    return -1;
+  }
+
+  // x 2^g in F, x an integer, rounded once to nearest (ties to even); false where it overflows.
+  // Where the value is at least F's smallest normal number, F(x) rounds once (a conversion from an
+  // integer is correctly rounded) and the power of two is exact; below it the integer is rounded
+  // to the subnormal grid 2^(emin - p + 1) itself, so that nothing rounds twice.
+  template <class F>
+  static bool scaled(Wide x, int g, F& out) {
+    using L = std::numeric_limits<F>;
+    if (x == 0) {
+      out = F(0);
+      return true;
+    }
+    const grid::UWide m = x < 0 ? grid::UWide(-x) : grid::UWide(x);
+    const int top = 127 - (m >> 64 ? std::countl_zero(std::uint64_t(m >> 64)) : 64 + std::countl_zero(std::uint64_t(m)));
+    if (top + g >= L::min_exponent - 1) {  // |x| 2^g >= 2^(emin - 1) = F's smallest normal
+      out = std::ldexp(F(x), g);
+      return std::fabs(out) <= L::max();
+    }
+    const int lowest = L::min_exponent - L::digits;  // the subnormal grid 2^lowest
+    const int shift = lowest - g;                    // > 0: x 2^g has bits below the grid
+    if (shift <= 0) {  // on the grid already: |x| < 2^(digits - 1), exact
+      out = std::ldexp(F(x), g);
+      return true;
+    }
+    grid::UWide q = 0;
+    if (shift < 128) {
+      const grid::UWide rem = m & ((grid::UWide(1) << shift) - 1), half = grid::UWide(1) << (shift - 1);
+      q = m >> shift;
+      if (rem > half || (rem == half && (q & 1))) ++q;
+    }  // else |x| < 2^127 <= half the grid step: 0
+    out = std::ldexp(F(q), lowest);  // q <= 2^(digits - 1): exact
+    if (x < 0) out = -out;
+    return true;
+  }
+
+ public:
+  // The separating axis's direction as the book gives it at an exact type, each component
+  // rounded once to F; false where one overflows F (or no axis separates).
+  template <class F>
+  bool direction(Vec3<F>& d) const {
+    if (axis < 0) return false;
+    if (axis >= 1 && axis <= 3) {
+      d = Vec3<F>(F(axis == 1), F(axis == 2), F(axis == 3));
+      return true;
+    }
+    if (axis == 0) {
+      for (int i = 0; i < 3; ++i)
+        if (!scaled<F>(N[i], G[(i + 1) % 3] + G[(i + 2) % 3], d[i])) return false;
+      return true;
+    }
+    const int k = (axis - 4) / 3, j = (axis - 4) % 3, a = (j + 1) % 3, bb = (j + 2) % 3;
+    d[j] = F(0);
+    return scaled<F>(Wide(E[k][bb]), G[bb], d[a]) && scaled<F>(-Wide(E[k][a]), G[a], d[bb]);
+  }
+};
+
+}  // namespace cdref::oracle::sat_grid
