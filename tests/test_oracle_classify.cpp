@@ -1615,6 +1615,90 @@ TEST_CASE("a sphere and a triangle: the first stage's certificates on double wor
   CHECK(decided * 10 >= left * 9);
 }
 
+TEST_CASE("two triangles on a grid: a separating plane and a coplanar pair exactly, as the book at Gmpq",
+          "[oracle-classify][triangle]") {
+  using Q = queries::TriangleTriangle;
+  const Query q = query_by_name(Q::name);
+  const auto book_at_gmpq = [](const Triangle<double>& a, const Triangle<double>& b) {
+    return book::intersect(oracle::rational_inputs::toq(a), oracle::rational_inputs::toq(b));
+  };
+  int coplanar_cases = 0, coplanar_decided = 0, decided = 0;
+  for (const Family& f : families(q))
+    for (int k : f.scales)
+      for (std::uint64_t i = 0; i < 40; ++i) {
+        const auto [a, b] = Q::template make<double>(make_case(17, q, f, k, i));
+        INFO(f.name << "/" << k << " case " << i);
+        const int g = oracle::triangle_triangle::on_grid(a, b);
+        const bool cop = f.name == "coplanar";
+        coplanar_cases += cop;
+        if (g == oracle::triangle_triangle::unknown) continue;
+        ++decided;
+        coplanar_decided += cop;
+        const TriangleIntersection<CGAL::Gmpq> e = book_at_gmpq(a, b);
+        REQUIRE(g == int(e.intersect));
+        // a meeting pair here is a coplanar one, and the robust tier returns the book's whole answer
+        const TriangleIntersection<double> r = robust::intersect(a, b);
+        REQUIRE(r.intersect == e.intersect);
+        REQUIRE(r.coplanar == e.coplanar);
+        if (g == 1) {
+          REQUIRE(e.coplanar);
+          REQUIRE(r.p == Vec3<double>(0, 0, 0));
+          REQUIRE(r.q == Vec3<double>(0, 0, 0));
+        }
+        REQUIRE(robust::decide(a, b).certain);
+        REQUIRE(oracle::classify(a, b) == e.intersect);
+      }
+  INFO(decided << " decided on the grid; coplanar " << coplanar_decided << " of " << coplanar_cases);
+  // the coplanar family's triangles of nonzero area (integer vertices: a few are collinear)
+  REQUIRE(coplanar_decided * 10 >= coplanar_cases * 9);
+
+  // by hand, in the plane z = 3 (and the same turned into x + y + z = 1 with integer vertices):
+  using V = Vec3<double>;
+  const double h = std::ldexp(1.0, -50);
+  struct Case {
+    const char* what;
+    Triangle<double> a, b;
+    bool intersect;
+  };
+  const std::vector<Case> cases = {
+      {"touching at a vertex", {{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}, {{V(2, 0, 3), V(4, 0, 3), V(3, 1, 3)}}, true},
+      {"a hair apart", {{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}, {{V(2 + h, 0, 3), V(4, 0, 3), V(3, 1, 3)}}, false},
+      {"a vertex on the other's edge", {{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}, {{V(1, 1, 3), V(3, 1, 3), V(3, 3, 3)}}, true},
+      {"past the hypotenuse by a hair", {{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}},
+       {{V(1 + h, 1, 3), V(3, 1, 3), V(3, 3, 3)}}, false},
+      {"one inside the other", {{V(-4, -4, 3), V(8, -4, 3), V(-4, 8, 3)}}, {{V(0, 0, 3), V(1, 0, 3), V(0, 1, 3)}}, true},
+      {"sharing an edge", {{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}, {{V(2, 0, 3), V(0, 2, 3), V(2, 2, 3)}}, true},
+      {"in x + y + z = 1, touching at a vertex", {{V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)}},
+       {{V(1, 0, 0), V(2, -1, 0), V(2, 0, -1)}}, true},
+      {"in x + y + z = 1, apart", {{V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)}}, {{V(2, 0, -1), V(3, -1, -1), V(3, 0, -2)}},
+       false},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what);
+    REQUIRE(book_at_gmpq(c.a, c.b).intersect == c.intersect);
+    for (const bool swap : {false, true}) {
+      const Triangle<double>& a = swap ? c.b : c.a;
+      const Triangle<double>& b = swap ? c.a : c.b;
+      REQUIRE(oracle::triangle_triangle::on_grid(a, b) == int(c.intersect));
+      const TriangleIntersection<double> r = robust::intersect(a, b);
+      REQUIRE(r.intersect == c.intersect);
+      REQUIRE(r.coplanar == c.intersect);
+      REQUIRE(robust::decide(a, b).certain);
+      REQUIRE(oracle::classify(a, b) == c.intersect);
+    }
+  }
+  // crossing planes, a zero-area triangle, an axis too wide for a grid: not decided here
+  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, -1), V(2, 0, 1), V(0, 2, 1)}},
+                                             Triangle<double>{{V(0, 0, 1), V(2, 0, -1), V(0, 2, -1)}}) ==
+          oracle::triangle_triangle::unknown);
+  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, 3), V(1, 1, 3), V(2, 2, 3)}},
+                                             Triangle<double>{{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}) ==
+          oracle::triangle_triangle::unknown);
+  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(1e12, 0, 3), V(0.1, 0, 3), V(0, 2, 3)}},
+                                             Triangle<double>{{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}) ==
+          oracle::triangle_triangle::unknown);
+}
+
 TEST_CASE("two triangles: the first stage's tests with their signs on double words decide as the book at Gmpq",
           "[oracle-classify][triangle]") {
   using Q = queries::TriangleTriangle;

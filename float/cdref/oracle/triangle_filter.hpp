@@ -392,18 +392,27 @@ namespace triangle_triangle {
 inline constexpr int unknown = 2;
 
 // The signs of t's vertices against the plane of p, certain or 0.
-inline bool plane_separates(const Triangle<double>& p, const Triangle<double>& t, bool& finite) {
+[[gnu::always_inline]] inline void plane_signs(const Triangle<double>& p, const Triangle<double>& t, int (&s)[3], bool& finite) {
   double e1[3], e2[3], x[3];
   for (int i = 0; i < 3; ++i) {
     e1[i] = p.vertex[1][i] - p.vertex[0][i];
     e2[i] = p.vertex[2][i] - p.vertex[0][i];
   }
-  int s[3];
   for (int k = 0; k < 3; ++k) {
     for (int i = 0; i < 3; ++i) x[i] = t.vertex[k][i] - p.vertex[0][i];
     s[k] = ray_triangle::triple_sign(x, e1, e2, finite);
   }
+}
+inline bool plane_separates(const Triangle<double>& p, const Triangle<double>& t, bool& finite) {
+  int s[3];
+  plane_signs(p, t, s, finite);
   return s[0] != 0 && s[0] == s[1] && s[0] == s[2];
+}
+// t certainly has vertices on both sides of p's plane
+inline bool plane_crosses(const Triangle<double>& p, const Triangle<double>& t, bool& finite) {
+  int s[3];
+  plane_signs(p, t, s, finite);
+  return (s[0] > 0 || s[1] > 0 || s[2] > 0) && (s[0] < 0 || s[1] < 0 || s[2] < 0);
 }
 
 // The triangles' boxes apart along a coordinate axis (exact comparisons of inputs; the three

@@ -5,6 +5,10 @@
 // plane, then the six edge-triangle casts, static error bounds): where it decides, the
 // classification is exact and certain, and disjoint triangles return at once.
 //
+// At float and double, next, a plane that separates them or a coplanar pair whole, exactly on
+// the inputs read as integers on a grid per coordinate axis (oracle/triangle_grid.hpp): the
+// book's answer, classification, `coplanar` and p = q = 0 alike.
+//
 // Formulation: the book's (book/triangle_triangle.hpp: Moller's interval test with exact zero
 // tests, Theorem 3.1 with the side normals for coplanar pairs, zero-area triangles as their
 // spans) evaluated on double words (robust/words.hpp: exact inputs, every length scaled by a
@@ -22,6 +26,7 @@
 
 #include <cdref/book/triangle_triangle.hpp>
 #include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/oracle/triangle_grid.hpp>
 #include <cdref/oracle/triangle_words.hpp>
 
 #include "words.hpp"
@@ -41,7 +46,11 @@ template <class F>
 int triangle_triangle_first_stage(const Triangle<F>& a, const Triangle<F>& b) {
   if constexpr (std::is_same_v<F, double>) {
     const int f = oracle::triangle_triangle::filter(a, b);
-    return f != oracle::triangle_triangle::unknown ? f : oracle::triangle_triangle::tests_on_words(a, b);
+    if (f != oracle::triangle_triangle::unknown) return f;
+    // a pair that may be coplanar exactly first (the oracle's order: oracle/triangle_triangle.hpp)
+    if (oracle::triangle_triangle::maybe_coplanar(a, b))
+      if (const int g = oracle::triangle_triangle::on_grid(a, b); g != oracle::triangle_triangle::unknown) return g;
+    return oracle::triangle_triangle::tests_on_words(a, b);
   } else {
     return oracle::triangle_triangle::unknown;
   }
@@ -52,6 +61,22 @@ template <class F>
 std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triangle<F>& a, const Triangle<F>& b,
                                                                     int first) {
   if (first == 0) return {TriangleIntersection<F>{}, {false, true}};
+  if constexpr (std::is_same_v<F, double> || std::is_same_v<F, float>) {
+    // a separating plane, or a coplanar pair whole, exactly (oracle/triangle_grid.hpp): the
+    // book's answer, p = q = 0 (header)
+    const auto dv = [](const Triangle<F>& t) {
+      Triangle<double> d;
+      for (int k = 0; k < 3; ++k) d.vertex[k] = Vec3<double>(t.vertex[k][0], t.vertex[k][1], t.vertex[k][2]);
+      return d;
+    };
+    const int g = oracle::triangle_triangle::on_grid(dv(a), dv(b), first == 1);
+    if (g == 0) return {TriangleIntersection<F>{}, {false, true}};
+    if (g == 1) {
+      TriangleIntersection<F> r;
+      r.intersect = r.coplanar = true;
+      return {r, {true, true}};
+    }
+  }
   Scale used;
   const auto w = on_words(a, b, [](const auto& x, const auto& y) {
     return book::detail::intersect_triangles(x, y, W(0.0));
