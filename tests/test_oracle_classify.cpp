@@ -666,8 +666,46 @@ TEST_CASE("the triangle filter's exact second look: shots through vertices and e
   CHECK(st == Stage::filter);
   CHECK(tri_hand(Segment<double>{V(0, 0, 3), V(0, 0, 0)}, flat, &st));  // ending on a vertex
   CHECK(st == Stage::filter);
-  // Shots in the plane (all three w_k exactly 0) are left to the next stages.
-  CHECK(tri_hand(Ray<double>{V(-1, 1, 0), V(1, 0, 0)}, flat, &st));
+  // Shots in the plane (all three w_k exactly 0): 2-D orientations in the plane decide them
+  // (coplanar_shot), the closed triangle against the closed segment or ray.
+  struct InPlane {
+    const char* what;
+    Vec3<double> s, t;  // a segment's target; a ray's direction is t - s
+    bool segment, hit;
+  };
+  for (const InPlane& c : std::vector<InPlane>{
+           {"a ray across", V(-1, 1, 0), V(0, 1, 0), false, true},
+           {"a ray turned away", V(-1, 1, 0), V(-2, 1, 0), false, false},
+           {"a segment stopping short", V(-3, 1, 0), V(-1, 1, 0), true, false},
+           {"a segment ending on the edge x = 0", V(-3, 1, 0), V(0, 1, 0), true, true},
+           {"a segment ending on a vertex", V(-2, 0, 0), V(0, 0, 0), true, true},
+           {"a segment passing below", V(-3, -1, 0), V(5, -1, 0), true, false},
+           {"a ray along the hypotenuse's line, towards it", V(5, -1, 0), V(4, 0, 0), false, true},
+           {"a ray along the hypotenuse's line, away", V(5, -1, 0), V(6, -2, 0), false, false},
+           {"a ray grazing the vertex (4, 0)", V(4, -1, 0), V(5, 0, 0), false, false},
+           {"a ray through the vertex (4, 0)", V(3, -1, 0), V(4, 0, 0), false, true},
+           {"a segment inside", V(0.5, 0.5, 0), V(1, 2, 0), true, true},
+           {"a point on an edge", V(2, 0, 0), V(2, 0, 0), true, true},
+           {"a point beside an edge", V(2, -0.5, 0), V(2, -0.5, 0), true, false},
+           {"a point above the plane", V(1, 1, 1), V(1, 1, 1), true, false},
+       }) {
+    INFO(c.what);
+    const bool got = c.segment ? tri_hand(Segment<double>{c.s, c.t}, flat, &st) : tri_hand(Ray<double>{c.s, c.t - c.s}, flat, &st);
+    CHECK(got == c.hit);
+    CHECK(st == Stage::filter);
+  }
+  // along an edge of the triangle 10^12 from the origin (its differences exact), and past its
+  // vertex 1 by a grid step in the plane
+  {
+    const Vec3<double> e = far.vertex[1] - far.vertex[0];
+    CHECK(tri_hand(Ray<double>{far.vertex[0] - e, e}, far, &st));
+    CHECK(st == Stage::filter);
+    CHECK_FALSE(tri_hand(Segment<double>{far.vertex[0] - e, far.vertex[0] - 0.5 * e}, far, &st));
+    CHECK(st == Stage::filter);
+  }
+  // a zero-area triangle with a shot along its line: left to the next stages
+  const Triangle<double> stick{{V(0, 0, 0), V(2, 0, 0), V(4, 0, 0)}};
+  CHECK(tri_hand(Ray<double>{V(-1, 0, 0), V(1, 0, 0)}, stick, &st));
   CHECK(st != Stage::filter);
   // A triangle of size 2^-400 through a vertex. Products of three coordinates underflow in
   // double, so the static bound cannot decide; on the grid (multiples of 2^-400) they are

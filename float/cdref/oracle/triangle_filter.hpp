@@ -52,8 +52,9 @@
 // like magnitude and a unit direction through a vertex 10^6 away are all decided here. A shot
 // through a vertex or along an edge is exactly degenerate
 // there, and the bound above cannot decide a sign that is exactly 0. With the exact signs the
-// book's test is decided as it stands: opposite signs miss; all three w_k zero (the shot's
-// line in the plane, or a zero-area triangle met in it) is left to the next stage; otherwise
+// book's test is decided as it stands: opposite signs miss; all three w_k zero is the shot's
+// line in the plane, decided by 2-D orientations there (coplanar_shot below; a zero-area
+// triangle is left to the next stage); otherwise
 // D has the sign sD of the w_k that are not zero, and the ray hits iff Ns is not -sD (Ns = 0:
 // lambda = 0), the segment iff moreover Nt is not sD (Nt = 0: lambda = 1).
 //
@@ -189,6 +190,58 @@ inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int6
   return true;
 }
 
+// Every w_k = 0: the shot's line lies in the triangle's plane (or the shot is a point, d = 0).
+// A point off the plane (Ns != 0) is a miss, a triangle of zero area is left to the next stage.
+// Otherwise the closed segment or ray and the closed triangle lie in one plane, and they meet iff
+// no axis of Theorem 3.1 in that plane separates them: the triangle's three side normals and the
+// shot's line normal (a ray is the limit of ever longer segments, each with these axes). On a
+// side normal of edge (p, q) with third vertex r every point x of the plane projects to
+// f(x) = ((q - p) x (x - p)) . n times one positive factor, and for x in the plane that is the
+// component along an axis c with n_c != 0, times n_c / |n|^2 (the 2-D orientation the
+// coplanar triangles take too: triangle_grid.hpp): the triangle covers [min(0, f(r)), max(0,
+// f(r))], the segment [f(s), f(t)], the ray f(s) + lambda g, g = ((q - p) x d)_c, over lambda >=
+// 0. On the line normal the triangle's vertices v project to (d x (v - s))_c, the shot to 0.
+// Each f, g and line value is a difference of two products of integers below 2^63: exact in 128
+// bits, whichever scale the direction's grid takes (only signs and values of one kind compared).
+inline int coplanar_shot(const std::int64_t (&A)[3][3], const std::int64_t (&d)[3], const std::int64_t (&e1)[3],
+                         const std::int64_t (&e2)[3], bool segment, int Ns) {
+  Wide n[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, l = (i + 2) % 3;
+    n[i] = Wide(e1[j]) * e2[l] - Wide(e1[l]) * e2[j];
+  }
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) return unknown;  // a triangle of zero area
+  if (Ns != 0) return 0;                                    // a point off the plane
+  int c = 0;
+  while (n[c] == 0) ++c;
+  const int x = (c + 1) % 3, y = (c + 2) % 3;
+  // positions relative to the source: the vertices A[k], the source 0, a segment's target d
+  const auto cross_c = [x, y](std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy) {
+    return Wide(ux) * vy - Wide(uy) * vx;
+  };
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const std::int64_t ex = A[j][x] - A[i][x], ey = A[j][y] - A[i][y];  // q - p: v_j - v_i
+    const auto f = [&](std::int64_t px, std::int64_t py) { return cross_c(ex, ey, px - A[i][x], py - A[i][y]); };
+    const Wide third = f(A[k][x], A[k][y]), lo = third < 0 ? third : 0, hi = third < 0 ? 0 : third;
+    const Wide fs = f(0, 0);
+    if (segment) {
+      const Wide ft = f(d[x], d[y]);
+      if ((fs > hi && ft > hi) || (fs < lo && ft < lo)) return 0;
+    } else {
+      const Wide g = cross_c(ex, ey, d[x], d[y]);
+      if ((g >= 0 && fs > hi) || (g <= 0 && fs < lo)) return 0;
+    }
+  }
+  bool above = true, below = true;
+  for (int k = 0; k < 3; ++k) {
+    const Wide h = cross_c(d[x], d[y], A[k][x], A[k][y]);
+    above = above && h > 0;
+    below = below && h < 0;
+  }
+  return above || below ? 0 : 1;
+}
+
 // The cast decided from the static signs (nonzero: certain; 0: undecided) and the exact ones
 // where those are undecided; `unknown` where the inputs are on no grid narrow enough (an axis
 // spanning more than 62 bits) or the shot lies in the triangle's plane.
@@ -235,7 +288,7 @@ inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int6
     if (w[k] == 0) w[k] = sign(d, A[(k + 1) % 3], A[(k + 2) % 3]);
   const bool neg = w[0] < 0 || w[1] < 0 || w[2] < 0, pos = w[0] > 0 || w[1] > 0 || w[2] > 0;
   if (neg && pos) return 0;
-  if (!(neg || pos)) return unknown;  // the shot's line in the triangle's plane
+  if (!(neg || pos)) return coplanar_shot(A, d, e1, e2, t != nullptr, sign(A[0], e1, e2));
   const int sD = pos ? 1 : -1;
   // Ns = (v0 - s) . (e1 x e2): lambda's numerator; Nt = (v0 - t) . (e1 x e2)
   if (sign(A[0], e1, e2) == -sD) return 0;        // lambda < 0
