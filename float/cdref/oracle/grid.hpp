@@ -23,6 +23,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include <cdref/vec.hpp>
+
 namespace cdref::oracle::grid {
 
 using Wide = __int128;
@@ -65,6 +67,34 @@ bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
     const int shift = d[j].e - grid;  // >= 0
     if (std::bit_width(std::uint64_t(std::llabs(d[j].m))) + shift > 62) return false;
     n[j] = d[j].m * (std::int64_t(1) << shift);
+  }
+  return true;
+}
+
+// A ray's direction on grids of its own, 2^(G_i + delta) on axis i with one delta for the three:
+// every monomial of d . (A x B) takes d from one axis and A, B from the other two, so each is
+// scaled by 2^-(delta + G_0 + G_1 + G_2), the same positive factor. delta is the largest that
+// keeps every d_i an integer (a unit direction beside coordinates 10^6 from the origin has bits
+// far below their grid). false where a d_i would need more than 62 bits (its axes' grids too far
+// apart for the direction's spread), where it is not finite, or where it is zero. An axis whose
+// positions are all 0 (no grid) takes d_i's own.
+inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int64_t (&d)[3]) {
+  Dyadic q[3];
+  int delta = no_grid;
+  for (int i = 0; i < 3; ++i) {
+    if (!(std::fabs(dir[i]) <= std::numeric_limits<double>::max())) return false;
+    q[i] = dyadic(dir[i]);
+    if (q[i].m == 0) continue;
+    if (grid[i] == no_grid) grid[i] = q[i].e;
+    delta = std::min(delta, q[i].e - grid[i]);
+  }
+  if (delta == no_grid) return false;
+  for (int i = 0; i < 3; ++i) {
+    d[i] = 0;
+    if (q[i].m == 0) continue;
+    const int shift = q[i].e - grid[i] - delta;  // >= 0
+    if (std::bit_width(std::uint64_t(std::llabs(q[i].m))) + shift > 62) return false;
+    d[i] = q[i].m * (std::int64_t(1) << shift);
   }
   return true;
 }

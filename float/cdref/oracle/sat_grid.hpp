@@ -63,7 +63,6 @@ struct TriangleBox {
     axis = first_axis();
   }
 
- private:
   int first_axis() {
     // axis 0: N = e_0 x f, f = X_2 - X_0 = -e_2
     for (int i = 0; i < 3; ++i) {
@@ -134,7 +133,6 @@ struct TriangleBox {
     return true;
   }
 
- public:
   // The separating axis's direction as the book gives it at an exact type, each component
   // rounded once to F; false where one overflows F (or no axis separates).
   template <class F>
@@ -152,6 +150,105 @@ struct TriangleBox {
     const int k = (axis - 4) / 3, j = (axis - 4) % 3, a = (j + 1) % 3, bb = (j + 2) % 3;
     d[j] = F(0);
     return scaled<F>(Wide(E[k][bb]), G[bb], d[a]) && scaled<F>(-Wide(E[k][a]), G[a], d[bb]);
+  }
+};
+
+// A segment or a ray and an axis-aligned box (book/segment_box.hpp: the box's three faces, then
+// r x e_j), exactly on the grid. A segment: with M = s + t - 2c = 2m and W = t - s = 2w (each
+// below 2^64, in 128 bits), face i separates iff |M_i| > 2 H_i + |W_i|, and r x e_j iff
+// |P| > R with P = M_a W_b - M_b W_a and R = 2 (H_a |W_b| + H_b |W_a|), (a, b) = (j + 1, j + 2):
+// four times the book's m_a w_b - m_b w_a and h_a |w_b| + h_b |w_a|. Every term takes one factor
+// from axis a and one from b (scale 2^(G_a + G_b)); each is below 2^128, so |P| > R is taken as
+// P - R > 0 or P + R < 0 in 256 bits. A ray: m = s - c (below 2^63) and the direction on grids
+// of its own (grid.hpp, direction_on_grid: 2^(G_i + delta) on axis i, one delta for the three),
+// face i separates iff m_i > H_i and d_i >= 0 or m_i < -H_i and d_i <= 0, and r x e_j iff
+// |m_a d_b - m_b d_a| > H_a |d_b| + H_b |d_a|: one factor from axis a and one from b in every
+// term, each below 2^125, exact in 128 bits. The direction: e_i, or r x e_j with the components
+// -+r_a, -+r_b (a segment's differences, rounded once; a ray's own, exact).
+struct ShotBox {
+  bool ok = false;
+  int axis = -1;
+  bool segment = false;
+  std::int64_t W[3] = {};  // a segment's t - s
+  int G[3] = {};
+
+  ShotBox(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool seg) : segment(seg) {
+    std::int64_t S[3], T[3], C[3], H[3];
+    for (int i = 0; i < 3; ++i) {
+      const double x[4] = {src[i], seg ? rt[i] : src[i], b.center[i], b.extent[i]};
+      std::int64_t n[4];
+      if (!grid::axis_on_grid(x, n, G[i])) return;
+      S[i] = n[0], T[i] = n[1], C[i] = n[2], H[i] = n[3];
+    }
+    if (seg) {
+      Wide M[3];
+      for (int i = 0; i < 3; ++i) {
+        M[i] = Wide(S[i]) + T[i] - 2 * Wide(C[i]);
+        W[i] = T[i] - S[i];
+      }
+      ok = true;
+      for (int i = 0; i < 3; ++i) {
+        const Wide am = M[i] < 0 ? -M[i] : M[i];
+        if (am > 2 * Wide(H[i]) + (W[i] < 0 ? -Wide(W[i]) : Wide(W[i]))) {
+          axis = i;
+          return;
+        }
+      }
+      for (int j = 0; j < 3; ++j) {
+        const int a = (j + 1) % 3, bb = (j + 2) % 3;
+        grid::Sum256 lo, hi;  // P - R, P + R
+        const std::int64_t awa = W[a] < 0 ? -W[a] : W[a], awb = W[bb] < 0 ? -W[bb] : W[bb];
+        for (grid::Sum256* acc : {&lo, &hi}) {
+          acc->add(M[a], W[bb]);
+          acc->add(-M[bb], W[a]);
+          const std::int64_t sgn = acc == &lo ? -1 : 1;
+          acc->add(2 * Wide(H[a]), sgn * awb);
+          acc->add(2 * Wide(H[bb]), sgn * awa);
+        }
+        if (lo.sign() > 0 || hi.sign() < 0) {
+          axis = 3 + j;
+          return;
+        }
+      }
+    } else {
+      std::int64_t d[3];
+      if (!grid::direction_on_grid(rt, G, d)) return;
+      ok = true;
+      std::int64_t m[3];
+      for (int i = 0; i < 3; ++i) m[i] = S[i] - C[i];
+      for (int i = 0; i < 3; ++i)
+        if ((m[i] > H[i] && d[i] >= 0) || (m[i] < -H[i] && d[i] <= 0)) {
+          axis = i;
+          return;
+        }
+      for (int j = 0; j < 3; ++j) {
+        const int a = (j + 1) % 3, bb = (j + 2) % 3;
+        const Wide P = Wide(m[a]) * d[bb] - Wide(m[bb]) * d[a];
+        const Wide R = Wide(H[a]) * (d[bb] < 0 ? -d[bb] : d[bb]) + Wide(H[bb]) * (d[a] < 0 ? -d[a] : d[a]);
+        if ((P < 0 ? -P : P) > R) {
+          axis = 3 + j;
+          return;
+        }
+      }
+    }
+  }
+  // The separating axis's direction as the book gives it at an exact type, rounded once to F
+  // (`dir`: a ray's direction, in F); false where a component overflows F or none separates.
+  template <class F>
+  bool direction(const Vec3<F>& dir, Vec3<F>& out) const {
+    if (axis < 0) return false;
+    if (axis < 3) {
+      out = Vec3<F>(F(axis == 0), F(axis == 1), F(axis == 2));
+      return true;
+    }
+    const int j = axis - 3, a = (j + 1) % 3, bb = (j + 2) % 3;
+    out[j] = F(0);
+    if (!segment) {
+      out[a] = dir[bb];
+      out[bb] = -dir[a];
+      return true;
+    }
+    return TriangleBox::scaled<F>(Wide(W[bb]), G[bb], out[a]) && TriangleBox::scaled<F>(-Wide(W[a]), G[a], out[bb]);
   }
 };
 

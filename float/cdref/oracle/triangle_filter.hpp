@@ -133,6 +133,7 @@ inline constexpr int unknown = 2;
 namespace exact_eval {
 
 using grid::axis_on_grid;
+using grid::direction_on_grid;
 using grid::dyadic;
 using grid::Dyadic;
 using grid::no_grid;
@@ -160,34 +161,6 @@ inline int triple_wide(const std::int64_t (&a)[3], const std::int64_t (&b)[3], c
     acc.add(Wide(b[j]) * c[k] - Wide(b[k]) * c[j], a[i]);
   }
   return acc.sign();
-}
-
-// A ray's direction on grids of its own, 2^(G_i + delta) on axis i with one delta for the three:
-// every monomial of d . (A x B) takes d from one axis and A, B from the other two, so each is
-// scaled by 2^-(delta + G_0 + G_1 + G_2), the same positive factor. delta is the largest that
-// keeps every d_i an integer (a unit direction beside coordinates 10^6 from the origin has bits
-// far below their grid). false where a d_i would need more than 62 bits (its axes' grids too far
-// apart for the direction's spread), where it is not finite, or where it is zero. An axis whose
-// positions are all 0 (no grid) takes d_i's own.
-inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int64_t (&d)[3]) {
-  Dyadic q[3];
-  int delta = no_grid;
-  for (int i = 0; i < 3; ++i) {
-    if (!(std::fabs(dir[i]) <= std::numeric_limits<double>::max())) return false;
-    q[i] = dyadic(dir[i]);
-    if (q[i].m == 0) continue;
-    if (grid[i] == no_grid) grid[i] = q[i].e;
-    delta = std::min(delta, q[i].e - grid[i]);
-  }
-  if (delta == no_grid) return false;
-  for (int i = 0; i < 3; ++i) {
-    d[i] = 0;
-    if (q[i].m == 0) continue;
-    const int shift = q[i].e - grid[i] - delta;  // >= 0
-    if (std::bit_width(std::uint64_t(std::llabs(q[i].m))) + shift > 62) return false;
-    d[i] = q[i].m * (std::int64_t(1) << shift);
-  }
-  return true;
 }
 
 // Every w_k = 0: the shot's line lies in the triangle's plane (or the shot is a point, d = 0).

@@ -22,13 +22,14 @@
 // certainly not separating), those axes alone on double words with rigorous bounds come next
 // (oracle/sat_words.hpp): where they decide, the classification is the solid's at an exact type
 // too. The order of these stages is stages_before_whole below, shared with the oracle.
-// A triangle and an axis-aligned box at float and double are first evaluated exactly, the
-// inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp): where every axis's
-// values span at most 62 bits (all but inputs far from the origin beside small ones), the full
-// query's classification, first separating axis and direction are the book's at an exact type
-// (the direction rounded once), zero-area triangles and flat boxes included, in about 150 ns
-// a case where the whole formulation on double words took 3,000-4,300 (standalone loop over
-// 4,000 cases of each family, 2026-11-29); decide() takes it after the filters.
+// A triangle, a segment or a ray and an axis-aligned box at float and double are first evaluated
+// exactly, the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp):
+// where every axis's values span at most 62 bits (all but inputs far from the origin beside
+// small ones), the full query's classification, first separating axis and direction are the
+// book's at an exact type (the direction rounded once), zero-area triangles and flat boxes
+// included: triangle-box in about 150 ns a case where the whole formulation on double words took
+// 3,000-4,300 (standalone loop over 4,000 cases of each family, 2026-11-29). decide() takes it
+// after the filters (or Algorithm 3.3's certificate).
 // A segment or a ray and an axis-aligned box take Algorithm 3.3's certificate instead
 // (ray_box.hpp; has_slab_certificate below): where it is certain the classification is exact,
 // and where neither it nor the double words are, its value is the answer of every entry point.
@@ -67,14 +68,55 @@ namespace cdref::robust {
 
 namespace detail {
 
+// The degree in lengths of a polytope's face normals and edge directions (book/separating_axes.hpp,
+// polytope()): the double words scale every length by 2^k (words.hpp, Scale: positions, extents,
+// a ray's direction; not an oriented box's axes), so a separating axis comes back multiplied by
+// 2^(k deg): a segment's or a ray's edge 1, a triangle's normal 2 and its edges 1, a box's faces
+// and edges 0 (unit vectors, or an oriented box's axes and their cross products).
+template <class P>
+struct PolytopeDegrees {
+  static constexpr int faces = 0, face = 0, edge = 0;
+};
+template <class F>
+struct PolytopeDegrees<Segment<F>> {
+  static constexpr int faces = 0, face = 0, edge = 1;
+};
+template <class F>
+struct PolytopeDegrees<Ray<F>> {
+  static constexpr int faces = 0, face = 0, edge = 1;
+};
+template <class F>
+struct PolytopeDegrees<Triangle<F>> {
+  static constexpr int faces = 1, face = 2, edge = 1;
+};
+template <class F>
+struct PolytopeDegrees<Box<F>> {
+  static constexpr int faces = 3, face = 0, edge = 0;
+};
+template <class F>
+struct PolytopeDegrees<OrientedBox<F>> {
+  static constexpr int faces = 3, face = 0, edge = 0;
+};
+template <class A, class B>
+int axis_degree(int axis) {
+  using DA = PolytopeDegrees<A>;
+  using DB = PolytopeDegrees<B>;
+  if (axis < DA::faces) return DA::face;
+  if (axis < DA::faces + DB::faces) return DB::face;
+  return DA::edge + DB::edge;
+}
+
 template <class F, class A, class B>
 std::pair<Separation<F>, bool> separation(const A& a, const B& b) {
-  const auto r = on_words(a, b, [](const auto& x, const auto& y) { return book::separate(book::polytope(x), book::polytope(y)); });
+  Scale sc;
+  const auto r =
+      on_words(a, b, [](const auto& x, const auto& y) { return book::separate(book::polytope(x), book::polytope(y)); }, &sc);
   if (r) {
     Separation<F> s;
     s.intersect = r->intersect;
     s.axis = r->axis;
-    s.direction = value<F>(r->direction);
+    // the axis at the inputs' own scale: the word's, taken back by 2^(-k deg)
+    if (r->axis >= 0) s.direction = Scale{-sc.k * axis_degree<A, B>(r->axis)}.len(value<F>(r->direction));
     return {s, true};
   }
   return {book::separate(book::polytope(a), book::polytope(b)), false};
@@ -215,9 +257,10 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
   }
 }
 
-// A triangle and a box at float or double: the book's 13 axes exactly on the inputs read as
-// integers on a grid per coordinate axis (oracle/sat_grid.hpp): whether they meet, the first
-// separating axis and its direction rounded once, as the book gives them at an exact type.
+// A triangle, a segment or a ray and a box at float or double: the book's 13 or 6 axes exactly
+// on the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp): whether
+// they meet, the first separating axis and its direction rounded once, as the book gives them at
+// an exact type.
 // false where the inputs lie on no grid narrow enough (an axis's values spanning more than 62
 // bits), where a direction component would be subnormal or overflow, and for every other pair.
 // Zero-area triangles, flat boxes and triangles in a face's plane tie exactly on some axis,
@@ -234,6 +277,21 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     out.intersect = g.axis < 0;
     out.axis = g.axis;
     if (g.axis >= 0 && !g.direction(out.direction)) return false;
+    s = out;
+    return true;
+  } else if constexpr ((std::is_same_v<A, Segment<F>> || std::is_same_v<A, Ray<F>>) && std::is_same_v<B, Box<F>> &&
+                       (std::is_same_v<F, double> || std::is_same_v<F, float>)) {
+    const auto dv = [](const Vec3<F>& v) { return Vec3<double>(double(v[0]), double(v[1]), double(v[2])); };  // exact
+    constexpr bool seg = std::is_same_v<A, Segment<F>>;
+    const Vec3<F>& to = [&]() -> const Vec3<F>& {
+      if constexpr (seg) return a.target; else return a.direction;
+    }();
+    const oracle::sat_grid::ShotBox g(dv(a.source), dv(to), Box<double>{dv(b.center), dv(b.extent)}, seg);
+    if (!g.ok) return false;
+    Separation<F> out;
+    out.intersect = g.axis < 0;
+    out.axis = g.axis;
+    if (g.axis >= 0 && !g.direction(to, out.direction)) return false;
     s = out;
     return true;
   } else {
@@ -266,6 +324,7 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
       const Decision slab = decide(a, b); /* before the first stage: it costs less */       \
       if (slab.certain) return slab;                                                        \
+      if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};    \
       const auto [s, certain] = detail::separation<F>(a, b);                                \
       return certain ? Decision{s.intersect, true} : slab;                                  \
     } else {                                                                                \
