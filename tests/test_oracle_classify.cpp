@@ -1335,7 +1335,7 @@ TEMPLATE_TEST_CASE("a triangle and a box on a grid: the book's 13 axes exactly, 
         Separation<F> s;
         s.intersect = g.axis < 0;
         s.axis = g.axis;
-        if (g.axis >= 0 && !g.direction(s.direction)) {  // a component below F's normal range
+        if (g.axis >= 0 && !g.direction(s.direction)) {  // a component beyond F's range
           ++no_direction;
           continue;
         }
@@ -1349,7 +1349,7 @@ TEMPLATE_TEST_CASE("a triangle and a box on a grid: the book's 13 axes exactly, 
       }
   INFO(on_grid << " of " << total << " cases on a grid, " << degenerate_on_grid << " of " << degenerate
                << " degenerate, " << no_direction << " without a normal direction");
-  REQUIRE(no_direction < total / 20);  // (float at the tiny magnitudes)
+  REQUIRE(no_direction < total / 20);  // (float at the far magnitudes)
   REQUIRE(degenerate_on_grid == degenerate);  // coordinates in [-3, 3]: every axis spans < 62 bits
   REQUIRE(on_grid > total * 3 / 4);           // all but the long-range family and far magnitudes
 }

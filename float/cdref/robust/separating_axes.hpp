@@ -73,37 +73,20 @@ namespace detail {
 // a ray's direction; not an oriented box's axes), so a separating axis comes back multiplied by
 // 2^(k deg): a segment's or a ray's edge 1, a triangle's normal 2 and its edges 1, a box's faces
 // and edges 0 (unit vectors, or an oriented box's axes and their cross products).
-template <class P>
 struct PolytopeDegrees {
-  static constexpr int faces = 0, face = 0, edge = 0;
+  int faces, face, edge;  // the face count, and the degrees
 };
-template <class F>
-struct PolytopeDegrees<Segment<F>> {
-  static constexpr int faces = 0, face = 0, edge = 1;
-};
-template <class F>
-struct PolytopeDegrees<Ray<F>> {
-  static constexpr int faces = 0, face = 0, edge = 1;
-};
-template <class F>
-struct PolytopeDegrees<Triangle<F>> {
-  static constexpr int faces = 1, face = 2, edge = 1;
-};
-template <class F>
-struct PolytopeDegrees<Box<F>> {
-  static constexpr int faces = 3, face = 0, edge = 0;
-};
-template <class F>
-struct PolytopeDegrees<OrientedBox<F>> {
-  static constexpr int faces = 3, face = 0, edge = 0;
-};
+template <class F> constexpr PolytopeDegrees degrees_of(const Segment<F>*) { return {0, 0, 1}; }
+template <class F> constexpr PolytopeDegrees degrees_of(const Ray<F>*) { return {0, 0, 1}; }
+template <class F> constexpr PolytopeDegrees degrees_of(const Triangle<F>*) { return {1, 2, 1}; }
+template <class F> constexpr PolytopeDegrees degrees_of(const Box<F>*) { return {3, 0, 0}; }
+template <class F> constexpr PolytopeDegrees degrees_of(const OrientedBox<F>*) { return {3, 0, 0}; }
 template <class A, class B>
 int axis_degree(int axis) {
-  using DA = PolytopeDegrees<A>;
-  using DB = PolytopeDegrees<B>;
-  if (axis < DA::faces) return DA::face;
-  if (axis < DA::faces + DB::faces) return DB::face;
-  return DA::edge + DB::edge;
+  constexpr PolytopeDegrees da = degrees_of(static_cast<const A*>(nullptr)), db = degrees_of(static_cast<const B*>(nullptr));
+  if (axis < da.faces) return da.face;
+  if (axis < da.faces + db.faces) return db.face;
+  return da.edge + db.edge;
 }
 
 template <class F, class A, class B>
