@@ -1542,11 +1542,19 @@ TEST_CASE("a triangle and a box on a grid: exact ties, subnormals, and inputs no
     REQUIRE(n[0] == std::ldexp(1 + std::ldexp(1.0, -14), -1060));
     require_book_at_gmpq(robust::separate(t, b), t, b);
   }
-  // 1e12 beside 0.1 on one axis spans more than 62 bits: no grid; the other stages answer
+  // 10^12 from the origin beside an extent of 1.1: the coordinates span about 95 bits on the
+  // extent's grid, their differences and the extent far fewer: on the grid
   const Triangle<double> far{{V(1e12, 0, 0), V(1e12, 1, 0), V(1e12, 0, 1)}};
   const Box<double> near{V(1e12 - 1, 0, 0), V(1 + 0.1, 1, 1)};
-  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(far, near).ok);
-  REQUIRE(oracle::classify(far, near) == book::separate(oracle::rational_inputs::toq(far), oracle::rational_inputs::toq(near)).intersect);
+  REQUIRE(oracle::sat_grid::TriangleBox(far, near).ok);
+  require_book_at_gmpq(robust::separate(far, near), far, near);
+  // a vertex 10^12 from a box of extent 0.1: the difference needs about 95 bits there: no grid,
+  // and the other stages answer
+  const Triangle<double> away{{V(1e12, 0, 0), V(0, 0.05, 0), V(0, 0, 0.05)}};
+  const Box<double> small{V(0, 0, 0), V(0.1, 0.1, 0.1)};
+  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(away, small).ok);
+  REQUIRE(oracle::classify(away, small) ==
+          book::separate(oracle::rational_inputs::toq(away), oracle::rational_inputs::toq(small)).intersect);
   // a NaN is on no grid (the checks refuse it before any stage)
   const Triangle<double> bad{{V(std::nan(""), 0, 0), V(0, 0, 0), V(0, 0, 0)}};
   REQUIRE_FALSE(oracle::sat_grid::TriangleBox(bad, unit).ok);

@@ -48,12 +48,15 @@ inline Dyadic dyadic(double x) {
 }
 
 // One axis's values as integers on the coarsest grid 2^G they share: n_j = x_j 2^-G exactly.
-// false where one is not finite or where an n_j needs more than 62 bits (the axis's values span
-// more than 62 bits, from the largest's top bit to the finest's lowest). `grid` is G, or
-// no_grid where every value is 0 (any grid does).
+// false where one is not finite or where an n_j needs more than `bits` bits (the axis's values
+// span more, from the largest's top bit to the finest's lowest): 62 for an int64, so that a
+// difference of two fits in one; up to 125 for a 128-bit integer, whose differences the caller
+// checks (a box 10^12 from the origin with extents near 1: the coordinates span about 96 bits
+// on the extents' grid, their differences far fewer). `grid` is G, or no_grid where every value
+// is 0 (any grid does).
 inline constexpr int no_grid = 1 << 20;
-template <int N>
-bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
+template <int N, class I = std::int64_t>
+bool axis_on_grid(const double (&x)[N], I (&n)[N], int& grid, int bits = 62) {
   Dyadic d[N];
   grid = no_grid;
   for (int j = 0; j < N; ++j) {
@@ -65,9 +68,15 @@ bool axis_on_grid(const double (&x)[N], std::int64_t (&n)[N], int& grid) {
     n[j] = 0;
     if (d[j].m == 0) continue;
     const int shift = d[j].e - grid;  // >= 0
-    if (std::bit_width(std::uint64_t(std::llabs(d[j].m))) + shift > 62) return false;
-    n[j] = d[j].m * (std::int64_t(1) << shift);
+    if (int(std::bit_width(std::uint64_t(std::llabs(d[j].m)))) + shift > bits) return false;
+    n[j] = I(d[j].m) * (I(1) << shift);
   }
+  return true;
+}
+// x as an int64 where |x| < 2^62 (a difference of two such then fits in 63 bits)
+inline bool narrow(Wide x, std::int64_t& out) {
+  if (x <= -(Wide(1) << 62) || x >= (Wide(1) << 62)) return false;
+  out = std::int64_t(x);
   return true;
 }
 

@@ -1,12 +1,14 @@
-// cdref/oracle/sat_grid.hpp - a triangle and an axis-aligned box (book/triangle_box.hpp,
-// Akenine-Moller's 13 axes) evaluated exactly on integers, the inputs read as integers on a grid
-// per coordinate axis (grid.hpp). Where it applies it gives the book's answer at an exact type:
-// whether they meet and, if not, the first separating axis in the book's order and its direction.
+// cdref/oracle/sat_grid.hpp - a triangle, a segment or a ray and an axis-aligned box
+// (book/triangle_box.hpp, Akenine-Moller's 13 axes; book/segment_box.hpp, 6 axes) evaluated
+// exactly on integers, the inputs read as integers on a grid per coordinate axis (grid.hpp).
+// Where it applies it gives the book's answer at an exact type: whether they meet and, if not,
+// the first separating axis in the book's order and its direction.
 //
 // With X_k the vertices, C the centre and H the extents, the values one axis carries are
 // X_0,i, X_1,i, X_2,i, C_i and H_i (a length along axis i). On their grid 2^G_i they are
-// integers below 2^62, and the book's quantities are, with V_k = X_k - C (below 2^63), the
-// edges e_0 = X_1 - X_0, e_1 = X_2 - X_1, e_2 = X_0 - X_2 and f = X_2 - X_0 (below 2^63):
+// integers below 2^125 (coordinates 10^12 from the origin beside extents near 1 span about 96
+// bits), and what the formulas take is required below 2^62: H, V_k = X_k - C and the edges
+// e_0 = X_1 - X_0, e_1 = X_2 - X_1, e_2 = X_0 - X_2 (f = X_2 - X_0 = -e_2). So:
 //   axis 0        N = e_0 x f, p = N . V_0, r = sum_i H_i |N_i|, separating iff |p| > r.
 //                 N_i takes one factor from each of the other two axes (below 2^127, exact in
 //                 a signed 128-bit integer), p and r one from each of the three: both scale by
@@ -21,8 +23,9 @@
 //                 and compared there.
 // A zero-area triangle is no exception (N = 0 gives p = r = 0: not separating, as the book
 // says exactly), nor is a flat box, a subnormal input or a triangle in a face's plane: the
-// comparisons that tie there are decided as ties. Where an axis's values span more than 62 bits
-// (1e12 beside 0.1) or an input is not finite, `ok` is false and the next stage answers.
+// comparisons that tie there are decided as ties. Where an axis's values span more than 125
+// bits, a difference or an extent needs more than 62 (a vertex 10^12 away from a box of size
+// 0.1), or an input is not finite, `ok` is false and the next stage answers.
 //
 // The direction, where an axis separates: axis 0 N, axes 1-3 the unit vector, the others
 // L = e_k x e_j; each nonzero component is an integer times 2^(G_a + G_b) (N) or 2^G_i (L),
@@ -51,13 +54,11 @@ struct TriangleBox {
   TriangleBox(const Triangle<double>& t, const Box<double>& b) {
     for (int i = 0; i < 3; ++i) {
       const double x[5] = {t.vertex[0][i], t.vertex[1][i], t.vertex[2][i], b.center[i], b.extent[i]};
-      std::int64_t n[5];
-      if (!grid::axis_on_grid(x, n, G[i])) return;
-      for (int k = 0; k < 3; ++k) {
-        V[k][i] = n[k] - n[3];
-        E[k][i] = n[(k + 1) % 3] - n[k];
-      }
-      H[i] = n[4];
+      Wide n[5];
+      if (!grid::axis_on_grid(x, n, G[i], 125)) return;
+      for (int k = 0; k < 3; ++k)
+        if (!grid::narrow(n[k] - n[3], V[k][i]) || !grid::narrow(n[(k + 1) % 3] - n[k], E[k][i])) return;
+      if (!grid::narrow(n[4], H[i])) return;
     }
     ok = true;
     axis = first_axis();
@@ -154,8 +155,9 @@ struct TriangleBox {
 };
 
 // A segment or a ray and an axis-aligned box (book/segment_box.hpp: the box's three faces, then
-// r x e_j), exactly on the grid. A segment: with M = s + t - 2c = 2m and W = t - s = 2w (each
-// below 2^64, in 128 bits), face i separates iff |M_i| > 2 H_i + |W_i|, and r x e_j iff
+// r x e_j), exactly on the grid (raw values below 2^125; s - c, t - c and h required below
+// 2^62, as above). A segment: with M = s + t - 2c = 2m and W = t - s = 2w (below 2^63, in 128
+// bits), face i separates iff |M_i| > 2 H_i + |W_i|, and r x e_j iff
 // |P| > R with P = M_a W_b - M_b W_a and R = 2 (H_a |W_b| + H_b |W_a|), (a, b) = (j + 1, j + 2):
 // four times the book's m_a w_b - m_b w_a and h_a |w_b| + h_b |w_a|. Every term takes one factor
 // from axis a and one from b (scale 2^(G_a + G_b)); each is below 2^128, so |P| > R is taken as
@@ -173,18 +175,18 @@ struct ShotBox {
   int G[3] = {};
 
   ShotBox(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool seg) : segment(seg) {
-    std::int64_t S[3], T[3], C[3], H[3];
+    std::int64_t SC[3], TC[3], H[3];  // s - c, t - c, h
     for (int i = 0; i < 3; ++i) {
       const double x[4] = {src[i], seg ? rt[i] : src[i], b.center[i], b.extent[i]};
-      std::int64_t n[4];
-      if (!grid::axis_on_grid(x, n, G[i])) return;
-      S[i] = n[0], T[i] = n[1], C[i] = n[2], H[i] = n[3];
+      Wide n[4];
+      if (!grid::axis_on_grid(x, n, G[i], 125)) return;
+      if (!grid::narrow(n[0] - n[2], SC[i]) || !grid::narrow(n[1] - n[2], TC[i]) || !grid::narrow(n[3], H[i])) return;
     }
     if (seg) {
       Wide M[3];
       for (int i = 0; i < 3; ++i) {
-        M[i] = Wide(S[i]) + T[i] - 2 * Wide(C[i]);
-        W[i] = T[i] - S[i];
+        M[i] = Wide(SC[i]) + TC[i];
+        W[i] = TC[i] - SC[i];
       }
       ok = true;
       for (int i = 0; i < 3; ++i) {
@@ -214,8 +216,7 @@ struct ShotBox {
       std::int64_t d[3];
       if (!grid::direction_on_grid(rt, G, d)) return;
       ok = true;
-      std::int64_t m[3];
-      for (int i = 0; i < 3; ++i) m[i] = S[i] - C[i];
+      const std::int64_t (&m)[3] = SC;
       for (int i = 0; i < 3; ++i)
         if ((m[i] > H[i] && d[i] >= 0) || (m[i] < -H[i] && d[i] <= 0)) {
           axis = i;
