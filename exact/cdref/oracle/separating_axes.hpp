@@ -20,9 +20,10 @@
 //                touching one axis of the 13 or 15); (sphere) a box with the coordinate
 //                axes as sphere-box does it (classify.hpp: double words, then the exact sign
 //                on expansions), any other stage 1's point and direction on double words
-//                (sat_words.hpp); (a triangle and a box) the 13 axes exactly on the inputs
-//                read as integers on a grid per coordinate axis (sat_grid.hpp: every tie of a
-//                zero-area triangle, a flat box or a face's plane decided); then the robust
+//                (sat_words.hpp); (a triangle, a segment or a ray and a box) the 13 or 6 axes
+//                exactly on the inputs read as integers on a grid per coordinate axis
+//                (sat_grid.hpp: every tie of a zero-area triangle, a flat box or a face's plane
+//                decided); then the robust
 //                versions' evaluation of
 //                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);

@@ -24,8 +24,8 @@
 // too. The order of these stages is stages_before_whole below, shared with the oracle.
 // A triangle, a segment or a ray and an axis-aligned box at float and double are first evaluated
 // exactly, the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp):
-// where every axis's values span at most 62 bits (all but inputs far from the origin beside
-// small ones), the full query's classification, first separating axis and direction are the
+// where every axis's values span at most 125 bits and the differences the formulas take at most
+// 62 (all but a shot from far away, or a vertex far from a small box), the full query's classification, first separating axis and direction are the
 // book's at an exact type (the direction rounded once), zero-area triangles and flat boxes
 // included: triangle-box in about 150 ns a case where the whole formulation on double words took
 // 3,000-4,300 (standalone loop over 4,000 cases of each family, 2026-11-29). decide() takes it
@@ -219,7 +219,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
       // the double words of each open axis took 1,000 ns a case on the degenerate family and
       // left 78% of it open (standalone loop, 2026-11-29); one open axis (a vertex near a face)
       // costs less on words
-      if constexpr (std::is_same_v<B, Box<double>>)
+      if constexpr (std::is_same_v<A, Triangle<double>> && std::is_same_v<B, Box<double>>)
         if (std::popcount(open) != 1)
           if (const oracle::sat_grid::TriangleBox g(a, b); g.ok) {
             if (words) *words = true;
@@ -244,8 +244,8 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
 // on the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp): whether
 // they meet, the first separating axis and its direction rounded once, as the book gives them at
 // an exact type.
-// false where the inputs lie on no grid narrow enough (an axis's values spanning more than 62
-// bits), where a direction component would be subnormal or overflow, and for every other pair.
+// false where the inputs lie on no grid narrow enough (sat_grid.hpp), where a direction
+// component overflows F, and for every other pair.
 // Zero-area triangles, flat boxes and triangles in a face's plane tie exactly on some axis,
 // which neither the filters nor the double words can call; here ties are decided as ties.
 template <class F, class A, class B>
