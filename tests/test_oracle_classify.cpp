@@ -1436,6 +1436,27 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
   both(Segment<double>{V(1, 1, 1), V(1, 1, 1)}, true);            // a point on a corner
   both(Segment<double>{V(1, 1, 1 + h), V(1, 1, 1 + h)}, false);  // a point past it
   both(Segment<double>{V(-3, 1, 1), V(3, 1, 1)}, true);           // along an edge
+  // shots from 2^40 away ending on (or a grid step past) a box whose extent lies on the grid
+  // 2^-52: about 92 bits on the axis, taken in 128-bit values and 256-bit products
+  {
+    const double e = 1 + std::ldexp(1.0, -52), K = std::ldexp(1.0, 40);
+    const Box<double> fine{V(0, 0, 0), V(e, e, e)};
+    for (const bool past : {false, true}) {
+      INFO((past ? "past" : "on") << " the face");
+      const Segment<double> sg{V(K, 3, -7), V(past ? e + std::ldexp(1.0, -51) : e, 0.5, 0.25)};
+      const oracle::sat_grid::ShotBox g(sg.source, sg.target, fine, true);
+      REQUIRE(g.ok);
+      REQUIRE((g.axis < 0) == !past);
+      require_shot_box_at_gmpq(robust::separate(sg, fine), sg, fine);
+      const Ray<double> r{V(K, past ? e + std::ldexp(1.0, -51) : e, 0.25), V(-1, 0, 0)};  // along the face y = e
+      const oracle::sat_grid::ShotBox gr(r.source, r.direction, fine, false);
+      REQUIRE(gr.ok);
+      REQUIRE((gr.axis < 0) == !past);
+      require_shot_box_at_gmpq(robust::separate(r, fine), r, fine);
+      REQUIRE(oracle::classify(sg, fine) == !past);
+      REQUIRE(oracle::classify(r, fine) == !past);
+    }
+  }
   const Box<double> sub{V(tiny, tiny, tiny), V(tiny, 0, tiny)};
   const Segment<double> across{V(-4 * tiny, tiny, tiny), V(4 * tiny, tiny, tiny)};
   const oracle::sat_grid::ShotBox g(across.source, across.target, sub, true);

@@ -108,22 +108,48 @@ inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int6
   return true;
 }
 
-// A sum of products x a, x a signed 128-bit integer below 2^127 in magnitude and a an int64:
-// each product is below 2^190, taken as a 192-bit magnitude (two 64 x 64 -> 128-bit products)
-// and added to or subtracted from a 256-bit two's-complement sum, exact while the sum stays
-// below 2^255 (fewer than 2^64 terms).
+// A sum of products, each x a (x a signed 128-bit integer below 2^127 in magnitude, a an int64:
+// below 2^190, a 192-bit magnitude from two 64 x 64 -> 128-bit products) or x y (both 128-bit:
+// below 2^254, from four), added to or subtracted from a 256-bit two's-complement sum, exact
+// while the sum stays below 2^255.
 struct Sum256 {
   std::uint64_t acc[4] = {0, 0, 0, 0};
+  // + x a
   void add(Wide x, std::int64_t a) {
     if (x == 0 || a == 0) return;
-    const bool neg = (x < 0) != (a < 0);
     const UWide mx = x < 0 ? UWide(-x) : UWide(x);  // |x| < 2^127: -x does not overflow
     const std::uint64_t ma = a < 0 ? -std::uint64_t(a) : std::uint64_t(a);
     const UWide lo = UWide(std::uint64_t(mx)) * ma, hi = UWide(std::uint64_t(mx >> 64)) * ma;
     const UWide mid = (lo >> 64) + std::uint64_t(hi);
     const std::uint64_t m[4] = {std::uint64_t(lo), std::uint64_t(mid), std::uint64_t(mid >> 64) + std::uint64_t(hi >> 64),
                                 0};
-    UWide carry = 0;  // acc +- m, limb by limb with the carry or borrow
+    accumulate(m, (x < 0) != (a < 0));
+  }
+  // + x y, both below 2^127 in magnitude (the product below 2^254: a few of them stay below 2^255)
+  void add_product(Wide x, Wide y) {
+    if (x == 0 || y == 0) return;
+    const UWide mx = x < 0 ? UWide(-x) : UWide(x), my = y < 0 ? UWide(-y) : UWide(y);
+    const std::uint64_t x0 = std::uint64_t(mx), x1 = std::uint64_t(mx >> 64);
+    const std::uint64_t y0 = std::uint64_t(my), y1 = std::uint64_t(my >> 64);
+    const UWide p00 = UWide(x0) * y0, p01 = UWide(x0) * y1, p10 = UWide(x1) * y0, p11 = UWide(x1) * y1;
+    std::uint64_t m[4];
+    m[0] = std::uint64_t(p00);
+    UWide t = (p00 >> 64) + std::uint64_t(p01) + std::uint64_t(p10);  // below 3 2^64
+    m[1] = std::uint64_t(t);
+    t = (t >> 64) + (p01 >> 64) + (p10 >> 64) + std::uint64_t(p11);
+    m[2] = std::uint64_t(t);
+    m[3] = std::uint64_t((t >> 64) + (p11 >> 64));
+    accumulate(m, (x < 0) != (y < 0));
+  }
+  int sign() const {
+    if (std::int64_t(acc[3]) < 0) return -1;
+    return (acc[0] | acc[1] | acc[2] | acc[3]) != 0 ? 1 : 0;
+  }
+
+ private:
+  // acc +- m, limb by limb with the carry or borrow
+  void accumulate(const std::uint64_t (&m)[4], bool neg) {
+    UWide carry = 0;
     for (int l = 0; l < 4; ++l) {
       if (!neg) {
         const UWide t = UWide(acc[l]) + m[l] + carry;
@@ -135,10 +161,6 @@ struct Sum256 {
         carry = (t >> 64) != 0;  // a borrow wraps the high half
       }
     }
-  }
-  int sign() const {
-    if (std::int64_t(acc[3]) < 0) return -1;
-    return (acc[0] | acc[1] | acc[2] | acc[3]) != 0 ? 1 : 0;
   }
 };
 

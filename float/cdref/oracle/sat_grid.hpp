@@ -155,57 +155,70 @@ struct TriangleBox {
 };
 
 // A segment or a ray and an axis-aligned box (book/segment_box.hpp: the box's three faces, then
-// r x e_j), exactly on the grid (raw values below 2^125; s - c, t - c and h required below
-// 2^62, as above). A segment: with M = s + t - 2c = 2m and W = t - s = 2w (below 2^63, in 128
-// bits), face i separates iff |M_i| > 2 H_i + |W_i|, and r x e_j iff
-// |P| > R with P = M_a W_b - M_b W_a and R = 2 (H_a |W_b| + H_b |W_a|), (a, b) = (j + 1, j + 2):
-// four times the book's m_a w_b - m_b w_a and h_a |w_b| + h_b |w_a|. Every term takes one factor
-// from axis a and one from b (scale 2^(G_a + G_b)); each is below 2^128, so |P| > R is taken as
-// P - R > 0 or P + R < 0 in 256 bits. A ray: m = s - c (below 2^63) and the direction on grids
-// of its own (grid.hpp, direction_on_grid: 2^(G_i + delta) on axis i, one delta for the three),
-// face i separates iff m_i > H_i and d_i >= 0 or m_i < -H_i and d_i <= 0, and r x e_j iff
-// |m_a d_b - m_b d_a| > H_a |d_b| + H_b |d_a|: one factor from axis a and one from b in every
-// term, each below 2^125, exact in 128 bits. The direction: e_i, or r x e_j with the components
+// r x e_j), exactly on the grid: every value of an axis below 2^124 on its grid (a shot from
+// 10^12 away toward a box of extents near 1 spans about 96 bits), so s - c, t - c and h are
+// below 2^125. A segment: with M = s + t - 2c = 2m (below 2^126) and W = t - s = 2w (below
+// 2^125), face i separates iff |M_i| > 2 H_i + |W_i| (128 bits), and r x e_j iff |P| > R with
+// P = M_a W_b - M_b W_a and R = 2 (H_a |W_b| + H_b |W_a|), (a, b) = (j + 1, j + 2): four times
+// the book's m_a w_b - m_b w_a and h_a |w_b| + h_b |w_a|. Every term takes one factor from axis
+// a and one from b (scale 2^(G_a + G_b)), each product below 2^251, so |P| > R is taken as P - R
+// > 0 or P + R < 0 in 256 bits (Sum256). A ray: m = s - c and the direction on grids of its own
+// (grid.hpp, direction_on_grid: 2^(G_i + delta) on axis i, one delta for the three, each below
+// 2^62), face i separates iff m_i > H_i and d_i >= 0 or m_i < -H_i and d_i <= 0, and r x e_j
+// iff |m_a d_b - m_b d_a| > H_a |d_b| + H_b |d_a|: one factor from axis a and one from b in
+// every term, each below 2^187, in 256 bits. The direction: e_i, or r x e_j with the components
 // -+r_a, -+r_b (a segment's differences, rounded once; a ray's own, exact).
 struct ShotBox {
   bool ok = false;
   int axis = -1;
   bool segment = false;
-  std::int64_t W[3] = {};  // a segment's t - s
+  Wide W[3] = {};  // a segment's t - s
   int G[3] = {};
 
   ShotBox(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool seg) : segment(seg) {
-    std::int64_t SC[3], TC[3], H[3];  // s - c, t - c, h
+    Wide SC[3], TC[3], H[3];  // s - c, t - c, h: below 2^125
     for (int i = 0; i < 3; ++i) {
       const double x[4] = {src[i], seg ? rt[i] : src[i], b.center[i], b.extent[i]};
       Wide n[4];
-      if (!grid::axis_on_grid(x, n, G[i], 125)) return;
-      if (!grid::narrow(n[0] - n[2], SC[i]) || !grid::narrow(n[1] - n[2], TC[i]) || !grid::narrow(n[3], H[i])) return;
+      if (!grid::axis_on_grid(x, n, G[i], 124)) return;
+      SC[i] = n[0] - n[2], TC[i] = n[1] - n[2], H[i] = n[3];
+    }
+    const auto abs = [](Wide x) { return x < 0 ? -x : x; };
+    // every difference and extent below 2^62 (all but a shot from far away): the cheaper
+    // products, 128 x 64 bits or 64 x 64, serve
+    bool small = true;
+    for (int i = 0; i < 3; ++i) {
+      std::int64_t t;
+      small = small && grid::narrow(SC[i], t) && grid::narrow(TC[i], t) && grid::narrow(H[i], t);
     }
     if (seg) {
-      Wide M[3];
+      Wide M[3];  // below 2^126
       for (int i = 0; i < 3; ++i) {
-        M[i] = Wide(SC[i]) + TC[i];
+        M[i] = SC[i] + TC[i];
         W[i] = TC[i] - SC[i];
       }
       ok = true;
-      for (int i = 0; i < 3; ++i) {
-        const Wide am = M[i] < 0 ? -M[i] : M[i];
-        if (am > 2 * Wide(H[i]) + (W[i] < 0 ? -Wide(W[i]) : Wide(W[i]))) {
+      for (int i = 0; i < 3; ++i)
+        if (abs(M[i]) > 2 * H[i] + abs(W[i])) {  // the right side below 2^126
           axis = i;
           return;
         }
-      }
       for (int j = 0; j < 3; ++j) {
         const int a = (j + 1) % 3, bb = (j + 2) % 3;
-        grid::Sum256 lo, hi;  // P - R, P + R
-        const std::int64_t awa = W[a] < 0 ? -W[a] : W[a], awb = W[bb] < 0 ? -W[bb] : W[bb];
+        grid::Sum256 lo, hi;  // P - R, P + R: four products below 2^251 each
         for (grid::Sum256* acc : {&lo, &hi}) {
-          acc->add(M[a], W[bb]);
-          acc->add(-M[bb], W[a]);
-          const std::int64_t sgn = acc == &lo ? -1 : 1;
-          acc->add(2 * Wide(H[a]), sgn * awb);
-          acc->add(2 * Wide(H[bb]), sgn * awa);
+          const int sgn = acc == &lo ? -1 : 1;
+          if (small) {  // W below 2^63
+            acc->add(M[a], std::int64_t(W[bb]));
+            acc->add(-M[bb], std::int64_t(W[a]));
+            acc->add(2 * H[a], std::int64_t(sgn * abs(W[bb])));
+            acc->add(2 * H[bb], std::int64_t(sgn * abs(W[a])));
+          } else {
+            acc->add_product(M[a], W[bb]);
+            acc->add_product(-M[bb], W[a]);
+            acc->add_product(2 * H[a], sgn * abs(W[bb]));
+            acc->add_product(2 * H[bb], sgn * abs(W[a]));
+          }
         }
         if (lo.sign() > 0 || hi.sign() < 0) {
           axis = 3 + j;
@@ -216,17 +229,37 @@ struct ShotBox {
       std::int64_t d[3];
       if (!grid::direction_on_grid(rt, G, d)) return;
       ok = true;
-      const std::int64_t (&m)[3] = SC;
+      const Wide (&m)[3] = SC;
       for (int i = 0; i < 3; ++i)
         if ((m[i] > H[i] && d[i] >= 0) || (m[i] < -H[i] && d[i] <= 0)) {
           axis = i;
           return;
         }
+      if (small) {  // each product below 2^124: P and R in 128 bits, from 64-bit factors
+        std::int64_t m64[3], h64[3];
+        for (int i = 0; i < 3; ++i) m64[i] = std::int64_t(m[i]), h64[i] = std::int64_t(H[i]);
+        for (int j = 0; j < 3; ++j) {
+          const int a = (j + 1) % 3, bb = (j + 2) % 3;
+          const Wide P = Wide(m64[a]) * d[bb] - Wide(m64[bb]) * d[a];
+          const Wide R = Wide(h64[a]) * (d[bb] < 0 ? -d[bb] : d[bb]) + Wide(h64[bb]) * (d[a] < 0 ? -d[a] : d[a]);
+          if (abs(P) > R) {
+            axis = 3 + j;
+            return;
+          }
+        }
+        return;
+      }
       for (int j = 0; j < 3; ++j) {
         const int a = (j + 1) % 3, bb = (j + 2) % 3;
-        const Wide P = Wide(m[a]) * d[bb] - Wide(m[bb]) * d[a];
-        const Wide R = Wide(H[a]) * (d[bb] < 0 ? -d[bb] : d[bb]) + Wide(H[bb]) * (d[a] < 0 ? -d[a] : d[a]);
-        if ((P < 0 ? -P : P) > R) {
+        grid::Sum256 lo, hi;  // P - R, P + R: four products below 2^188 each
+        for (grid::Sum256* acc : {&lo, &hi}) {
+          const std::int64_t sgn = acc == &lo ? -1 : 1;
+          acc->add(m[a], d[bb]);
+          acc->add(-m[bb], d[a]);
+          acc->add(H[a], sgn * (d[bb] < 0 ? -d[bb] : d[bb]));
+          acc->add(H[bb], sgn * (d[a] < 0 ? -d[a] : d[a]));
+        }
+        if (lo.sign() > 0 || hi.sign() < 0) {
           axis = 3 + j;
           return;
         }
@@ -249,7 +282,7 @@ struct ShotBox {
       out[bb] = -dir[a];
       return true;
     }
-    return TriangleBox::scaled<F>(Wide(W[bb]), G[bb], out[a]) && TriangleBox::scaled<F>(-Wide(W[a]), G[a], out[bb]);
+    return TriangleBox::scaled<F>(W[bb], G[bb], out[a]) && TriangleBox::scaled<F>(-W[a], G[a], out[bb]);
   }
 };
 
