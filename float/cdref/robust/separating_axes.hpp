@@ -24,8 +24,8 @@
 // too. The order of these stages is stages_before_whole below, shared with the oracle.
 // A triangle, a segment or a ray and an axis-aligned box at float and double are first evaluated
 // exactly, the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp):
-// where every axis's values span at most 125 bits and the differences the formulas take at most
-// 62 (all but a shot from far away, or a vertex far from a small box), the full query's classification, first separating axis and direction are the
+// where the inputs fit the grids (sat_grid.hpp: all but a triangle's vertex far from a small
+// box, or a ray's direction whose components' grids lie far apart), the full query's classification, first separating axis and direction are the
 // book's at an exact type (the direction rounded once), zero-area triangles and flat boxes
 // included: triangle-box in about 150 ns a case where the whole formulation on double words took
 // 3,000-4,300 (standalone loop over 4,000 cases of each family, 2026-11-29). decide() takes it
