@@ -189,7 +189,7 @@ inline int coplanar_shot(const std::int64_t (&A)[3][3], const std::int64_t (&d)[
   while (n[c] == 0) ++c;
   const int x = (c + 1) % 3, y = (c + 2) % 3;
   // positions relative to the source: the vertices A[k], the source 0, a segment's target d
-  const auto cross_c = [x, y](std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy) {
+  const auto cross_c = [](std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy) {
     return Wide(ux) * vy - Wide(uy) * vx;
   };
   for (int i = 0; i < 3; ++i) {
