@@ -1295,13 +1295,22 @@ TEST_CASE("the open axes alone decide: a triangle's plane 2^-48 from a box's cor
 }
 
 namespace {
-// The book's separation at CGAL::Gmpq on the same inputs, and the grid's (and the robust tier's)
-// against it: the classification, the first separating axis and the direction rounded once.
+// The book's separation at CGAL::Gmpq on the same inputs (converted exactly), and the grid's (or
+// the robust tier's) against it: the classification, the first separating axis and the direction
+// rounded once. A triangle, a segment or a ray against a box.
 template <class F>
-void require_book_at_gmpq(const Separation<F>& got, const Triangle<F>& t, const Box<F>& b) {
-  const auto q = [](const Vec3<F>& v) { return Vec3<CGAL::Gmpq>(CGAL::Gmpq(double(v[0])), CGAL::Gmpq(double(v[1])), CGAL::Gmpq(double(v[2]))); };
-  const Separation<CGAL::Gmpq> e =
-      book::separate(Triangle<CGAL::Gmpq>{{q(t.vertex[0]), q(t.vertex[1]), q(t.vertex[2])}}, Box<CGAL::Gmpq>{q(b.center), q(b.extent)});
+Vec3<CGAL::Gmpq> gmpq_of(const Vec3<F>& v) {
+  return Vec3<CGAL::Gmpq>(CGAL::Gmpq(double(v[0])), CGAL::Gmpq(double(v[1])), CGAL::Gmpq(double(v[2])));
+}
+template <class F> Triangle<CGAL::Gmpq> gmpq_of(const Triangle<F>& t) {
+  return {{gmpq_of(t.vertex[0]), gmpq_of(t.vertex[1]), gmpq_of(t.vertex[2])}};
+}
+template <class F> Segment<CGAL::Gmpq> gmpq_of(const Segment<F>& s) { return {gmpq_of(s.source), gmpq_of(s.target)}; }
+template <class F> Ray<CGAL::Gmpq> gmpq_of(const Ray<F>& r) { return {gmpq_of(r.source), gmpq_of(r.direction)}; }
+template <class F> Box<CGAL::Gmpq> gmpq_of(const Box<F>& b) { return {gmpq_of(b.center), gmpq_of(b.extent)}; }
+template <class F, class A>
+void require_book_at_gmpq(const Separation<F>& got, const A& a, const Box<F>& b) {
+  const Separation<CGAL::Gmpq> e = book::separate(gmpq_of(a), gmpq_of(b));
   REQUIRE(got.intersect == e.intersect);
   REQUIRE(got.axis == e.axis);
   for (int i = 0; i < 3; ++i) REQUIRE(got.direction[i] == round_to<F>(e.direction[i]));
@@ -1355,19 +1364,6 @@ TEMPLATE_TEST_CASE("a triangle and a box on a grid: the book's 13 axes exactly, 
 }
 
 namespace {
-// A shot and a box: the grid's separation (and the robust tier's) against the book at CGAL::Gmpq.
-template <class F, class Shot>
-void require_shot_box_at_gmpq(const Separation<F>& got, const Shot& a, const Box<F>& b) {
-  const auto q = [](const Vec3<F>& v) { return Vec3<CGAL::Gmpq>(CGAL::Gmpq(double(v[0])), CGAL::Gmpq(double(v[1])), CGAL::Gmpq(double(v[2]))); };
-  Separation<CGAL::Gmpq> e;
-  if constexpr (std::is_same_v<Shot, Segment<F>>)
-    e = book::separate(Segment<CGAL::Gmpq>{q(a.source), q(a.target)}, Box<CGAL::Gmpq>{q(b.center), q(b.extent)});
-  else
-    e = book::separate(Ray<CGAL::Gmpq>{q(a.source), q(a.direction)}, Box<CGAL::Gmpq>{q(b.center), q(b.extent)});
-  REQUIRE(got.intersect == e.intersect);
-  REQUIRE(got.axis == e.axis);
-  for (int i = 0; i < 3; ++i) REQUIRE(got.direction[i] == round_to<F>(e.direction[i]));
-}
 template <class F, bool IsRay>
 void shot_box_on_every_family(int& on_grid, int& total, int& off_grid_near) {
   using SB = fuzz::queries::SegmentBox<IsRay>;
@@ -1397,8 +1393,8 @@ void shot_box_on_every_family(int& on_grid, int& total, int& off_grid_near) {
         s.intersect = g.axis < 0;
         s.axis = g.axis;
         if (g.axis >= 0) REQUIRE(g.direction(to, s.direction));
-        require_shot_box_at_gmpq(s, a, b);
-        require_shot_box_at_gmpq(robust::separate(a, b), a, b);
+        require_book_at_gmpq(s, a, b);
+        require_book_at_gmpq(robust::separate(a, b), a, b);
         const robust::Decision d = robust::decide(a, b);
         REQUIRE(d.certain);
         REQUIRE(d.value == s.intersect);
@@ -1424,11 +1420,11 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
     const oracle::sat_grid::ShotBox g(sg.source, sg.target, unit, true);
     REQUIRE(g.ok);
     REQUIRE((g.axis < 0) == meets);
-    require_shot_box_at_gmpq(robust::separate(sg, unit), sg, unit);
+    require_book_at_gmpq(robust::separate(sg, unit), sg, unit);
     REQUIRE(oracle::classify(sg, unit) == meets);
     if (sg.source == sg.target) return;  // (a ray needs a direction)
     const Ray<double> r{sg.source, sg.target - sg.source};
-    require_shot_box_at_gmpq(robust::separate(r, unit), r, unit);
+    require_book_at_gmpq(robust::separate(r, unit), r, unit);
     REQUIRE(robust::decide(r, unit).certain);
   };
   both(Segment<double>{V(2, 0, 1), V(0, 2, 1)}, true);          // touching the edge x = y = 1, z = 1
@@ -1447,12 +1443,12 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
       const oracle::sat_grid::ShotBox g(sg.source, sg.target, fine, true);
       REQUIRE(g.ok);
       REQUIRE((g.axis < 0) == !past);
-      require_shot_box_at_gmpq(robust::separate(sg, fine), sg, fine);
+      require_book_at_gmpq(robust::separate(sg, fine), sg, fine);
       const Ray<double> r{V(K, past ? e + std::ldexp(1.0, -51) : e, 0.25), V(-1, 0, 0)};  // along the face y = e
       const oracle::sat_grid::ShotBox gr(r.source, r.direction, fine, false);
       REQUIRE(gr.ok);
       REQUIRE((gr.axis < 0) == !past);
-      require_shot_box_at_gmpq(robust::separate(r, fine), r, fine);
+      require_book_at_gmpq(robust::separate(r, fine), r, fine);
       REQUIRE(oracle::classify(sg, fine) == !past);
       REQUIRE(oracle::classify(r, fine) == !past);
     }
@@ -1462,10 +1458,10 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
   const oracle::sat_grid::ShotBox g(across.source, across.target, sub, true);
   REQUIRE(g.ok);
   REQUIRE(g.axis < 0);
-  require_shot_box_at_gmpq(robust::separate(across, sub), across, sub);
+  require_book_at_gmpq(robust::separate(across, sub), across, sub);
   const Segment<double> above{V(-4 * tiny, 2 * tiny, tiny), V(4 * tiny, 3 * tiny, tiny)};
   REQUIRE(oracle::sat_grid::ShotBox(above.source, above.target, sub, true).axis >= 0);
-  require_shot_box_at_gmpq(robust::separate(above, sub), above, sub);
+  require_book_at_gmpq(robust::separate(above, sub), above, sub);
 }
 
 namespace {
