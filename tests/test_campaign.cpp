@@ -810,6 +810,44 @@ TEST_CASE("every output of a certain robust answer at double within 2 ulps on ev
   CHECK(graded > 80000);
 }
 
+TEST_CASE("the robust distance and depth of a sphere from a sphere or a box within an ulp of the truth on every family",
+          "[campaign][robust]") {
+  // sphere_sphere.hpp and sphere_box.hpp, item 7: where the filter decides, |v| - rho from one
+  // double word is within half an ulp plus u/16 of the value, else items 2-5 (within half an ulp
+  // plus 1.07u): next to the correctly rounded truth either way.
+  int graded = 0;
+  for (const char* name : {"sphere-sphere", "sphere-box"}) {
+    const Query q = query_by_name(name);
+    const QueryInfo& qi = info(q);
+    for (const Family& f : families(q))
+      for (const int k : f.scales)
+        for (std::uint64_t i = 0; i < 300; ++i) {
+          const Inputs in = make_case(12, q, f, k, i);
+          Answer got;
+          try {
+            got = qi.robust(53, in);
+          } catch (const cdref::invalid_input&) {
+            continue;
+          }
+          if (!got.certain) continue;
+          const Answer t = oracle_truth(q, in, 53);
+          REQUIRE(got.cls == t.cls);
+          int col = 0;
+          for (const Output& o : qi.outputs) {
+            const bool graded_here = o.when == Output::always || t.cls == (o.when == Output::on_hit);
+            for (int w = 0; w < o.width; ++w, ++col) {
+              if (!graded_here || o.label || (o.name != std::string("distance") && o.name != std::string("depth"))) continue;
+              INFO(qi.name << " " << f.name << "/" << k << " case " << i << " " << o.name << ": " << hexfloat(got.v[col])
+                           << " against " << hexfloat(t.v[col]));
+              CHECK(ulp_distance(got.v[col], t.v[col], 53) <= 1u);
+              ++graded;
+            }
+          }
+        }
+  }
+  CHECK(graded > 20000);
+}
+
 TEST_CASE("a campaign with --outputs certain grades a certified implementation's values only where it is certain", "[campaign][robust]") {
   // The ray cast on a sphere scaled to 10^-310 (subnormal coordinates) and 10^300 (squares
   // beyond the doubles), and its degenerate placements: the robust cast's certificate leaves

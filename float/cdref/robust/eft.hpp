@@ -11,9 +11,12 @@
 //     keeps its digits as long as the cancellation is smaller than 1/u.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 namespace cdref::robust {
 
@@ -21,6 +24,32 @@ template <class F>
 struct Pair {
   F hi, lo;
 };
+
+// exponent_of(x): std::ilogb(x), and exp2_of(k): 2^k (std::ldexp(F(1), k)), read off and
+// written into the bits for normal floats and doubles (libm's are calls, and the robust tier
+// scales by powers of two on every query); every other case, as libm gives it.
+template <class F>
+inline constexpr bool binary_bits = std::numeric_limits<F>::is_iec559 &&
+                                    ((std::is_same_v<F, double> && sizeof(F) == 8) || (std::is_same_v<F, float> && sizeof(F) == 4));
+template <class F>
+int exponent_of(F x) {
+  if constexpr (binary_bits<F>) {
+    using U = std::conditional_t<sizeof(F) == 8, std::uint64_t, std::uint32_t>;
+    constexpr int p = std::numeric_limits<F>::digits - 1, top = 2 * std::numeric_limits<F>::max_exponent - 1;
+    const int biased = int((std::bit_cast<U>(x) >> p) & U(top));
+    if (biased != 0 && biased != top) return biased - (std::numeric_limits<F>::max_exponent - 1);
+  }
+  return std::ilogb(x);
+}
+template <class F>
+F exp2_of(int k) {
+  if constexpr (binary_bits<F>) {
+    using U = std::conditional_t<sizeof(F) == 8, std::uint64_t, std::uint32_t>;
+    constexpr int p = std::numeric_limits<F>::digits - 1, bias = std::numeric_limits<F>::max_exponent - 1;
+    if (k >= 1 - bias && k <= bias) return std::bit_cast<F>(U(unsigned(k + bias)) << p);
+  }
+  return std::ldexp(F(1), k);
+}
 
 template <class F>
 Pair<F> two_sum(F a, F b) {
@@ -157,27 +186,37 @@ auto with_products(const Fn& f) {
   return f(SplitProduct{});
 }
 
-template <class F>
+// f() in the copy compiled for the FMA extension where the CPU has it (std::fma an instruction
+// there instead of a call into libm), else as built. std::fma rounds once either way, so the
+// values are the same; only the time differs.
+template <class Fn>
+auto with_fma(const Fn& f) {
+  if (cpu_fma()) return fused_call([&](FusedProduct) { return f(); });
+  return f();
+}
+
+// Double-word arithmetic (Mul: the exact product's policy above; Dekker's by default).
+template <class Mul = SplitProduct, class F>
 Pair<F> mul_pair(const Pair<F>& x, const Pair<F>& y) {
-  const Pair<F> p = two_prod_split(x.hi, y.hi);
+  const Pair<F> p = Mul::prod(x.hi, y.hi);
   return fast_two_sum(p.hi, F(p.lo + F(x.hi * y.lo + x.lo * y.hi)));
 }
 
-template <class F>
+template <class Mul = SplitProduct, class F>
 Pair<F> div_pair(const Pair<F>& x, const Pair<F>& y) {
   const F t = x.hi / y.hi;
-  const Pair<F> p = two_prod_split(t, y.hi);
+  const Pair<F> p = Mul::prod(t, y.hi);
   const F rem = F(F(F(x.hi - p.hi) - p.lo) + x.lo) - t * y.lo;
   const F corr = rem / y.hi;
   if (!std::isfinite(corr)) return {t, F(0)};  // t itself at the edge of the range
   return fast_two_sum(t, corr);
 }
 
-template <class F>
+template <class Mul = SplitProduct, class F>
 Pair<F> sqrt_pair(const Pair<F>& x) {
   if (!(x.hi > F(0))) return {F(0), F(0)};
   const F y = std::sqrt(x.hi);
-  const Pair<F> p = two_prod_split(y, y);
+  const Pair<F> p = Mul::prod(y, y);
   const F e = F(F(x.hi - p.hi) - p.lo) + x.lo;
   return fast_two_sum(y, F(e / F(2 * y)));
 }

@@ -212,13 +212,13 @@ Scaled<F> scaled(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& b, bool 
   for (int i = 0; i < 3; ++i)
     m = std::max({m, std::fabs(s[i]), std::fabs(t_or_d[i]), std::fabs(b.center[i]), std::fabs(b.extent[i])});
   Scaled<F> L;
-  const int e = m > F(0) ? std::ilogb(m) : 0;
+  const int e = m > F(0) ? exponent_of(m) : 0;
   if (e < 0 || e >= std::numeric_limits<F>::max_exponent - 6) L.scale = e;
   // Multiplying by 2^-scale rounds exactly as ldexp does; where 2^-scale is not a normal
   // number, ldexp itself. Scaling up (scale < 0) is exact (the result stays below 2).
   const int k = -L.scale;
   const bool by_mul = k >= std::numeric_limits<F>::min_exponent && k < std::numeric_limits<F>::max_exponent - 1;
-  const F f = by_mul ? std::ldexp(F(1), k) : F(1), inv = by_mul ? std::ldexp(F(1), -k) : F(1);
+  const F f = by_mul ? exp2_of<F>(k) : F(1), inv = by_mul ? exp2_of<F>(-k) : F(1);
   auto sc = [&](F x) {
     if (L.scale == 0) return x;
     const F y = by_mul ? F(x * f) : std::ldexp(x, k);
@@ -264,7 +264,7 @@ template <class F>
 F point_coordinate(F s, F t_or_d, const Pair<F>& lambda, bool bounded) {
   const F m = std::max(std::fabs(s), std::fabs(t_or_d));
   if (m == F(0)) return s;
-  const int e = std::ilogb(m);
+  const int e = exponent_of(m);
   const F ss = std::ldexp(s, -e), td = std::ldexp(t_or_d, -e);
   const Pair<F> r = bounded ? two_sum(td, F(-ss)) : Pair<F>{td, F(0)};
   const F x1 = std::fma(lambda.hi, r.hi, ss);
@@ -329,7 +329,7 @@ struct ExactData {
     if constexpr (std::is_same_v<W, F>) {
       constexpr int K = (std::numeric_limits<W>::max_exponent - 10) / 2;
       if (m > W(0)) {
-        const int sigma = K - std::ilogb(m);
+        const int sigma = K - exponent_of(m);
         for (auto& row : v)
           for (W& x : row) {
             const W y = std::ldexp(x, sigma);

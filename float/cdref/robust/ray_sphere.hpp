@@ -207,7 +207,7 @@ struct Pow2 {
   explicit Pow2(int e_) : e(e_) {
     constexpr int emax = std::numeric_limits<F>::max_exponent;
     direct = e > -(emax - 2) && e < emax - 2;
-    f = direct ? std::ldexp(F(1), -e) : F(0);
+    f = direct ? exp2_of<F>(-e) : F(0);
   }
   F operator()(F x) const { return direct ? x * f : std::ldexp(x, -e); }
 };
@@ -226,7 +226,7 @@ LocalDW<F> scaled_dw(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho) {
   F m = rho;
   for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(s[i].hi), std::fabs(r[i].hi)});
   LocalDW<F> L{};
-  L.scale = m > F(0) ? std::ilogb(m) : 0;
+  L.scale = m > F(0) ? exponent_of(m) : 0;
   const Pow2<F> sc(L.scale);
   for (int i = 0; i < 3; ++i) {
     L.s[i] = {sc(s[i].hi), sc(s[i].lo)};
@@ -527,7 +527,7 @@ Tri ge0(const Bounded<F>& q) {
 template <class F>
 int overflow_guard(F m) {
   if (!(m > F(0))) return 0;
-  return std::max(0, std::ilogb(m) - (std::numeric_limits<F>::max_exponent - 4));
+  return std::max(0, exponent_of(m) - (std::numeric_limits<F>::max_exponent - 4));
 }
 
 // x 2^-e, flagging in `exact` a result that lost bits in the subnormal range.

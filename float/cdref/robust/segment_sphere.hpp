@@ -124,7 +124,7 @@ SegSphLocal<F> seg_sph_local(const Segment<F>& seg, const Sphere<F>& sp) {
     rtop = std::max(rtop, std::fabs(R[i].hi));
   }
   L.r_zero = rtop == F(0);
-  const int e2 = top > F(0) ? std::ilogb(top) : 0;
+  const int e2 = top > F(0) ? exponent_of(top) : 0;
   const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
     L.s[i] = down(S[i].hi);
@@ -405,11 +405,9 @@ void seg_sph_xx(const LocalDW<F>& D, bool interior, Rational& xx) {
 }
 }  // namespace detail
 
+namespace detail {
 template <class F>
-Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_proximity) {
-  check(seg, "segment");
-  check(sp, "sphere");
-  if constexpr (std::is_same_v<F, float>) return detail::rounded(proximity(detail::widened(seg), detail::widened(sp), w));
+Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w) {
   Proximity<F> res;
   const auto L = detail::seg_sph_local(seg, sp);
   const auto R = detail::seg_sph_solve(L);
@@ -518,6 +516,17 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
     for (int i = 0; i < 3; ++i) res.on_b[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
   }
   return res;
+}
+}  // namespace detail
+
+template <class F>
+Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_proximity) {
+  check(seg, "segment");
+  check(sp, "sphere");
+  if constexpr (std::is_same_v<F, float>)
+    return detail::rounded(proximity(detail::widened(seg), detail::widened(sp), w));
+  else
+    return with_fma([&] { return detail::proximity_dw(seg, sp, w); });
 }
 
 }  // namespace cdref::robust

@@ -573,7 +573,7 @@ Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w =
   check(s, "sphere");
   check(b, "oriented box");
   detail::WordValues kv;
-  auto [p, d] = detail::proximity_eval(s, b, w, &kv);
+  auto [p, d] = with_fma([&] { return detail::proximity_eval(s, b, w, &kv); });
   if (!d.certain)  // (where the double words are certain they are exact already)
     if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
   // the distance and the depth sharpened where the double words leave them loose (rational.hpp)

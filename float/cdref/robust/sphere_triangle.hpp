@@ -181,7 +181,7 @@ template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const Triangle<F>& t, unsigned w = want_proximity) {
   check(s, "sphere");
   check(t, "triangle");
-  return detail::sphere_triangle_eval(s, t, w).first;
+  return with_fma([&] { return detail::sphere_triangle_eval(s, t, w).first; });
 }
 template <class F>
 Decision decide(const Sphere<F>& s, const Triangle<F>& t) {

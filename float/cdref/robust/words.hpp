@@ -195,7 +195,7 @@ Scale scale_of(const A& a, const B& b) {
   largest(b, m);
   Scale sc;
   if (m > F(0) && std::isfinite(m)) {
-    sc.k = -std::ilogb(m);
+    sc.k = -exponent_of(m);
     const Scale back{-sc.k};
     if (!same(scaled(scaled(a, sc), back), a) || !same(scaled(scaled(b, sc), back), b)) sc.k = 0;
   }
