@@ -529,6 +529,55 @@ TEST_CASE("the solid's sphere query on a parallelepiped", "[sat][obb]") {
   CHECK_FALSE(exact_equal(book_out.distance, out.distance));
 }
 
+TEST_CASE("the parallelepiped's closest point by the outcode is the enumeration's, at Gmpq", "[sat][obb]") {
+  // solid/obb.hpp, closest_by_outcode: where it answers, the closest point and its squared
+  // distance are exactly those of the enumeration of the 26 features; boxes whose axes are a
+  // rotation rounded to double (orthonormal to rounding), and sheared ones (axes anywhere in
+  // [-1, 1]^3), where the designated feature is often not the closest and it must say so.
+  using T = CGAL::Gmpq;
+  std::mt19937_64 g(7);
+  std::uniform_real_distribution<double> U1(-1, 1), E(0.1, 2), P(-4, 4), A(0, 6.283185307179586);
+  const auto v3 = [](double x, double y, double z) { return Vec3<T>(T(x), T(y), T(z)); };
+  for (const bool sheared : {false, true}) {
+    int outside = 0, decided = 0;
+    for (int n = 0; n < 3000; ++n) {
+      OrientedBox<T> b;
+      b.center = v3(P(g) / 4, P(g) / 4, P(g) / 4);
+      b.extent = v3(E(g), E(g), n % 10 == 0 ? 0.0 : E(g));
+      if (sheared) {
+        for (auto& a : b.axis) a = v3(U1(g), U1(g), U1(g));
+      } else {
+        const double x = A(g), y = A(g), z = A(g);
+        const double cx = std::cos(x), sx = std::sin(x), cy = std::cos(y), sy = std::sin(y), cz = std::cos(z), sz = std::sin(z);
+        b.axis = {v3(cy * cz, cy * sz, -sy), v3(sx * sy * cz - cx * sz, sx * sy * sz + cx * cz, sx * cy),
+                  v3(cx * sy * cz + sx * sz, cx * sy * sz - sx * cz, cx * cy)};
+      }
+      const auto f = solid::detail::frame(b);
+      if (f.delta_abs == T(0)) continue;
+      const Vec3<T> q = v3(P(g), P(g), P(g));
+      const Vec3<T> Uq = solid::detail::coords(f, q, b.center);
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) inside = inside && book::detail::abs_of(Uq[i]) <= f.H[i];
+      if (inside) continue;
+      ++outside;
+      Vec3<T> xe, xo;
+      const T de = solid::detail::closest_enumerated(b, f, q, Uq, &xe);
+      T d2;
+      if (!solid::detail::closest_by_outcode(b, f, q, Uq, d2, &xo)) continue;
+      ++decided;
+      INFO((sheared ? "sheared" : "rotated") << " case " << n);
+      REQUIRE(d2 == de);
+      REQUIRE(xo == xe);
+    }
+    // the rotated boxes: every one outside (2,948 of 3,000 with this seed); the sheared ones:
+    // 653 of 2,988, none wrong (without the normal-cone tests of the edges and vertices, 2,547,
+    // of which 1,867 wrong)
+    CAPTURE(sheared, outside, decided);
+    if (!sheared) CHECK(decided == outside);
+    if (sheared) CHECK((decided > outside / 8 && decided < outside));
+  }
+}
+
 TEMPLATE_TEST_CASE("oriented boxes refuse bad input by name", "[sat][errors]", float, double, long double,
                    CGAL::Gmpq) {
   using T = TestType;

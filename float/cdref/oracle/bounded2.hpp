@@ -200,6 +200,10 @@ class Bounded2 {
   // min and max return the operand itself, with its own bound (an exact 0 stays exact). (cdref's algorithms call abs_of,
   // min_of and max_of for them, found here by argument-dependent lookup). The values are
   // compared as the double words they are (hi first, then lo: both are normalized).
+  // x > 0 where that is certain (book/common.hpp): never throwing, and never lenient.
+  friend bool surely_positive(const Bounded2& x) {
+    return x.finite() && x.hi_ > 0 && x.hi_ * (1 - 2 * u) > (std::fabs(x.lo_) + x.e_) * grow;
+  }
   friend Bounded2 abs_of(const Bounded2& a) { return a.hi_ < 0 || (a.hi_ == 0 && a.lo_ < 0) ? -a : a; }
   friend Bounded2 max_of(const Bounded2& a, const Bounded2& b) {
     if (!a.finite() || !b.finite()) return not_finite();  // a NaN must not be dropped

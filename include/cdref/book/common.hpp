@@ -30,6 +30,15 @@ S min_of(const S& a, const S& b) {
   return b < a ? b : a;
 }
 
+// Whether x > 0 is certain: x > 0 at an exact type or a float; a number type whose signs may be
+// too close to call provides its own (found by argument-dependent lookup: oracle::Bounded2,
+// false there, never throwing and never lenient). For a shortcut taken only where it is certain,
+// with the general formulation behind it.
+template <class S>
+bool surely_positive(const S& x) {
+  return S(0) < x;
+}
+
 // v / k component-wise, v over T lifted to S.
 template <class S, class T>
 Vec3<S> divided(const Vec3<T>& v, const S& k) {
