@@ -343,14 +343,16 @@ auto proximity_on_words(const A& a, const B& b, Prox prox, Meet meet, WordValues
     return p;
   };
   const auto values_of = [](const Proximity<W>& r, const Scale& sc, bool words) {
+    // (x 2^-k in long double is exact for every double x and |k| of a double's exponent range)
+    const long double back = std::ldexp(1.0L, -sc.k);
     return WordValues{words,
-                      std::ldexp((long double)r.distance.hi(), -sc.k),
-                      std::ldexp((long double)r.depth.hi(), -sc.k),
+                      (long double)r.distance.hi() * back,
+                      (long double)r.depth.hi() * back,
                       std::ldexp(r.distance.lo(), -sc.k),
                       std::ldexp(r.depth.lo(), -sc.k),
                       true,
-                      std::ldexp((long double)r.distance.bound(), -sc.k),
-                      std::ldexp((long double)r.depth.bound(), -sc.k)};
+                      (long double)r.distance.bound() * back,
+                      (long double)r.depth.bound() * back};
   };
   Scale sc;
   if (const auto r = on_words(a, b, prox, &sc)) {
