@@ -230,8 +230,9 @@ F along_dw(F c, F k, const Pair<F>& n) {
 // c + x 2^e for a double-word x, rounded once (x 2^e exact unless it leaves the normal range).
 template <class F>
 F plus_dw(F c, const Pair<F>& x, int e) {
-  const Pair<F> s = two_sum(c, std::ldexp(x.hi, e));
-  return s.hi + F(s.lo + std::ldexp(x.lo, e));
+  const Pow2<F> up(-e);  // x 2^e, as std::ldexp gives it
+  const Pair<F> s = two_sum(c, up(x.hi));
+  return s.hi + F(s.lo + up(x.lo));
 }
 
 // The exact sign of x_0 + ... + x_{N-1} (Shewchuk's Grow-Expansion with zero elimination:
@@ -382,7 +383,7 @@ Proximity<F> proximity_dw(const Sphere<F>& a, const Sphere<F>& b, unsigned w) {
     const Pair<F> den = fast_two_sum(t.hi, F(t.lo + F(len.lo + L.sl)));
     if (den.hi > F(0) && (Q > F(0)) == (q > F(0))) {
       const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
-      const F dv = std::ldexp(F(d.hi + d.lo), L.scale);
+      const F dv = Pow2<F>(-L.scale)(F(d.hi + d.lo));
       if ((w & want_distance) && q > F(0)) res.distance = dv;
       if ((w & want_depth) && q < F(0)) res.depth = dv;
     }
