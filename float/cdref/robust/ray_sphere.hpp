@@ -447,23 +447,38 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
   }
   if (w & want_point)
     for (int i = 0; i < 3; ++i) {
-      const Pair<F> P = two_sum(std::ldexp(x[i].hi, L.scale), sp.center[i]);
-      res.point[i] = P.hi + F(P.lo + std::ldexp(x[i].lo, L.scale));
+      const Pow2<F> up(-L.scale);  // x 2^scale, as std::ldexp gives it
+      const Pair<F> P = two_sum(up(x[i].hi), sp.center[i]);
+      res.point[i] = P.hi + F(P.lo + up(x[i].lo));
     }
   if ((w & want_normal) && L.rho != F(0))
     for (int i = 0; i < 3; ++i) res.normal[i] = F(x[i].hi + x[i].lo) / L.rho;
-  // x_i carries about u^2 (33 |s| + 10 |l_i| + 10 |h r_i|) (step 5): where a coordinate of
-  // the point or of x (the normal) is below 32u (64 |s| + 16 (|l_i| + |h r_i|)), that is more
-  // than u/32 of it (at range, a point near a coordinate plane: 26 ulps at 10^12 radii), and
-  // the coordinate is evaluated exactly instead (exact_entry)
+  // x_i carries l_i's error, at most u^2 (33 |s| + 10 |l_i|) (step 5), and h r_i's: h's relative
+  // error is at most err_D / (2D) + 40u^2 (a's 52u^2 halved, the quotient's and the root's), with
+  // err_D <= u^2 (64 (rho^2 + |l|^2) + 80 |l| |s|) (the decision's bound above; its u^4 terms
+  // inside the slack). Where a coordinate of the point or of x (the normal) is below
+  //   m_i = 2u (64 |s| + 16 |l_i| + 64 |h r_i|) + |h r_i| err_D / (u D)
+  // (|s| <= 2 max |s_i|, |l| <= 2 max |l_i|), those errors could be more than u/2 of it, half an
+  // ulp, and the coordinate is evaluated exactly instead (exact_entry): at range a point near a
+  // coordinate plane (26 ulps at 10^12 radii before), near tangency where D is small. Elsewhere
+  // the error before the last rounding is below half an ulp, and the coordinate is within an ulp
+  // of the truth: the correctly rounded value or its neighbour. (Until 2026-11-29 the threshold
+  // was 32u (64 |s| + 16 (|l_i| + |h r_i|)), u/32 of the coordinate without the tangency term,
+  // which sent far more coordinates at range to the rationals: see the README.)
   {
     const F u = std::numeric_limits<F>::epsilon() / F(2);
-    F sn = 0;
-    for (int i = 0; i < 3; ++i) sn = std::max(sn, std::fabs(L.s[i].hi));
+    F sn = 0, ln = 0;
     for (int i = 0; i < 3; ++i) {
-      const F m = F(F(32) * u) * F(F(64) * sn + F(16) * F(std::fabs(Q.l[i].hi) + std::fabs(F(h.hi * L.r[i].hi))));
-      const bool pt = (w & want_point) && std::fabs(res.point[i]) < std::ldexp(m, L.scale);
-      const bool nm = (w & want_normal) && L.rho != F(0) && std::fabs(x[i].hi) < m;
+      sn = std::max(sn, std::fabs(L.s[i].hi));
+      ln = std::max(ln, std::fabs(Q.l[i].hi));
+    }
+    const F errD_u = F(F(64) * F(L.rho * L.rho + F(F(4) * ln) * ln)) + F(F(320) * ln) * sn;  // err_D / u^2
+    const F t = Q.D.hi > F(0) ? F(u * errD_u) / Q.D.hi : std::numeric_limits<F>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const F hr = std::fabs(F(h.hi * L.r[i].hi));
+      const F m = F(F(F(2) * u) * F(F(64) * sn + F(16) * std::fabs(Q.l[i].hi) + F(64) * hr)) + F(hr * t);
+      const bool pt = (w & want_point) && !(std::fabs(res.point[i]) >= Pow2<F>(-L.scale)(m));
+      const bool nm = (w & want_normal) && L.rho != F(0) && !(std::fabs(x[i].hi) >= m);
       if (pt || nm) exact_entry(s, r, sp, i, pt ? &res.point[i] : nullptr, nm ? &res.normal[i] : nullptr);
     }
   }
@@ -710,11 +725,14 @@ Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast)
   check(seg, "segment");
   check(sp, "sphere");
   if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(seg), detail::widened(sp), w));
+  // the filter first, as decide() and hit() take it: a certain miss has no values to compute
+  const int f = detail::cast_filter(seg.source, seg.target, sp, true);
+  if (f < 0) return Cast<F>{};
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
-  Cast<F> c = detail::cast_local(s, r, sp, true, w);
-  if (const int f = detail::cast_filter(seg.source, seg.target, sp, true)) c.hit = f > 0;  // as decide() and hit()
+  Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, true, w); });
+  if (f != 0) c.hit = true;
   return c;
 }
 
@@ -723,11 +741,13 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   check(ray, "ray");
   check(sp, "sphere");
   if constexpr (std::is_same_v<F, float>) return detail::rounded(cast(detail::widened(ray), detail::widened(sp), w));
+  const int f = detail::cast_filter(ray.source, ray.direction, sp, false);  // (as the segment's)
+  if (f < 0) return Cast<F>{};
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
-  Cast<F> c = detail::cast_local(s, r, sp, false, w);
-  if (const int f = detail::cast_filter(ray.source, ray.direction, sp, false)) c.hit = f > 0;  // as decide() and hit()
+  Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, false, w); });
+  if (f != 0) c.hit = true;
   return c;
 }
 
