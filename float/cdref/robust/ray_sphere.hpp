@@ -445,12 +445,13 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
     const Pair<F> T = two_sum(Q.l[i].hi, F(-P.hi));
     x[i] = two_sum(T.hi, F(F(T.lo + Q.l[i].lo) - P.lo) - F(h.hi * L.r[i].lo + h.lo * L.r[i].hi));
   }
-  if (w & want_point)
+  if (w & want_point) {
+    const Pow2<F> up(-L.scale);  // x 2^scale, as std::ldexp gives it
     for (int i = 0; i < 3; ++i) {
-      const Pow2<F> up(-L.scale);  // x 2^scale, as std::ldexp gives it
       const Pair<F> P = two_sum(up(x[i].hi), sp.center[i]);
       res.point[i] = P.hi + F(P.lo + up(x[i].lo));
     }
+  }
   if ((w & want_normal) && L.rho != F(0))
     for (int i = 0; i < 3; ++i) res.normal[i] = F(x[i].hi + x[i].lo) / L.rho;
   // x_i carries l_i's error, at most u^2 (33 |s| + 10 |l_i|) (step 5), and h r_i's: h's relative
@@ -732,7 +733,7 @@ Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast)
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
   Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, true, w); });
-  if (f != 0) c.hit = true;
+  if (f > 0) c.hit = true;
   return c;
 }
 
@@ -747,7 +748,7 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
   Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, false, w); });
-  if (f != 0) c.hit = true;
+  if (f > 0) c.hit = true;
   return c;
 }
 

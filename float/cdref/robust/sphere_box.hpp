@@ -295,6 +295,16 @@ Decision decide(const Sphere<F>& sp, const Box<F>& box) {
 
 namespace detail {
 
+// v rounded to pairs (item 5): v_i = a_i + fl(b_i + e_i) as two_sum gives it.
+template <class F>
+void sph_box_pairs(const SphBoxLocal<F>& L, F (&vh)[3], F (&vl)[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const Pair<F> p = two_sum(L.a[i], F(L.b[i] + L.e[i]));
+    vh[i] = p.hi;
+    vl[i] = p.lo;
+  }
+}
+
 // A centre outside the box, where the filter decides: the values from |v| alone where that is
 // accurate enough (sphere_sphere.hpp, item 7; v_i = a_i + (b_i + e_i) rounded once, within
 // 2u^2 |v_i|). Returns which of the asked values it set.
@@ -303,26 +313,12 @@ unsigned sph_box_fast(const SphBoxLocal<F>& L, const Sphere<F>& sp, int cls, uns
                       Proximity<F>& res) {
   if (cls == 0 || !L.exact || !L.outside) return 0;
   F vh[3], vl[3];
-  for (int i = 0; i < 3; ++i) {
-    const Pair<F> p = two_sum(L.a[i], F(L.b[i] + L.e[i]));
-    vh[i] = p.hi;
-    vl[i] = p.lo;
-  }
-  const F vtop = std::max({std::fabs(vh[0]), std::fabs(vh[1]), std::fabs(vh[2])});
-  if (!(vtop >= exp2_of<F>(std::numeric_limits<F>::min_exponent / 2 + 110))) return 0;
-  const Pair<F> len = sqrt_pair<Mul>(norm2_dw<Mul>(vh, vl));  // |v| (1 + 21u^2)
+  sph_box_pairs(L, vh, vl);
+  Pair<F> len;  // |v| (1 + 21u^2)
+  if (!first_look_norm<Mul>(vh, vl, len)) return 0;
   unsigned done = 0;
-  if (w & (want_distance | want_depth)) {
-    const Pair<F> t = two_sum(len.hi, F(-L.rho));
-    const F g = t.hi + F(t.lo + len.lo);
-    const F u = unit_roundoff<F>();
-    if (std::fabs(g) > F(F(520) * u) * F(len.hi + L.rho) && (g > F(0)) == (cls > 0)) {
-      const F dv = Pow2<F>(-L.scale)(std::fabs(g));
-      if (w & want_distance) res.distance = g > F(0) ? dv : F(0);
-      if (w & want_depth) res.depth = g < F(0) ? dv : F(0);
-      done |= want_distance | want_depth;
-    }
-  }
+  if ((w & (want_distance | want_depth)) && first_look_gap(len, L.rho, F(0), cls, L.scale, w, res))
+    done |= want_distance | want_depth;
   if (w & want_witnesses) {
     for (int i = 0; i < 3; ++i)
       res.on_a[i] = along_dw(sp.center[i], sp.radius, div_pair<Mul>(Pair<F>{vh[i], vl[i]}, len));  // v_i / |v| (1 + 30u^2)
@@ -361,11 +357,7 @@ Proximity<F> proximity_dw(const Sphere<F>& sp, const Box<F>& box, unsigned w) {
 
   if (L.outside) {
     F vh[3], vl[3];
-    for (int i = 0; i < 3; ++i) {
-      const Pair<F> p = two_sum(L.a[i], F(L.b[i] + L.e[i]));
-      vh[i] = p.hi;
-      vl[i] = p.lo;
-    }
+    detail::sph_box_pairs(L, vh, vl);
     // Q's sign: the exact one where it is certain (an exact touch, Q = 0 proven: distance and
     // depth stay 0), else the computed one's
     const int qs = q_certain ? q_sign : int(q > F(0)) - int(q < F(0));

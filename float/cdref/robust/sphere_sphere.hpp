@@ -322,27 +322,39 @@ Decision decide(const Sphere<F>& a, const Sphere<F>& b) {
 
 namespace detail {
 
-// Item 7's first look (header): the values from |v| alone where that is accurate enough.
-// Returns which of the asked values it set (want_distance | want_depth together, and
-// want_witnesses); the caller computes the rest as items 2-5 do.
+// Item 7's first look (header), shared with sphere_box.hpp. first_look_norm: |v| for v = h + l
+// (pairs) as a double word (18u^2), or false where |v| lies below 2^-400 (scaled units).
+// first_look_gap: g = |v| - s (s = sh + sl) summed once; where |g| > 520u (|v^| + s) and g's sign
+// is the filter's (cls), the distance or the depth, scaled back by 2^scale, and true.
+template <class Mul, class F>
+bool first_look_norm(const F (&h)[3], const F (&l)[3], Pair<F>& len) {
+  const F top = std::max({std::fabs(h[0]), std::fabs(h[1]), std::fabs(h[2])});
+  if (!(top >= exp2_of<F>(std::numeric_limits<F>::min_exponent / 2 + 110))) return false;
+  len = sqrt_pair<Mul>(norm2_dw<Mul>(h, l));
+  return true;
+}
+template <class F>
+bool first_look_gap(const Pair<F>& len, F sh, F sl, int cls, int scale, unsigned w, Proximity<F>& res) {
+  const Pair<F> t = two_sum(len.hi, F(-sh));
+  const F g = t.hi + F(t.lo + F(len.lo - sl));
+  const F u = unit_roundoff<F>();
+  if (!(std::fabs(g) > F(F(520) * u) * F(len.hi + sh) && (g > F(0)) == (cls > 0))) return false;
+  const F dv = Pow2<F>(-scale)(std::fabs(g));
+  if (w & want_distance) res.distance = g > F(0) ? dv : F(0);
+  if (w & want_depth) res.depth = g < F(0) ? dv : F(0);
+  return true;
+}
+
+// The first look for two spheres: which of the asked values it set (want_distance | want_depth
+// together, and want_witnesses); the caller computes the rest as items 2-5 do.
 template <class Mul, class F>
 unsigned sphere_sphere_fast(const SphereSphereLocal<F>& L, const Sphere<F>& a, const Sphere<F>& b, int cls, unsigned w,
                             Proximity<F>& res) {
-  const F vtop = std::max({std::fabs(L.v[0]), std::fabs(L.v[1]), std::fabs(L.v[2])});
-  if (cls == 0 || !L.exact || !(vtop >= exp2_of<F>(std::numeric_limits<F>::min_exponent / 2 + 110))) return 0;
-  const Pair<F> len = sqrt_pair<Mul>(norm2_dw<Mul>(L.v, L.vl));  // |v| (1 + 18u^2)
+  Pair<F> len;
+  if (cls == 0 || !L.exact || !first_look_norm<Mul>(L.v, L.vl, len)) return 0;
   unsigned done = 0;
-  if (w & (want_distance | want_depth)) {
-    const Pair<F> t = two_sum(len.hi, F(-L.s));
-    const F g = t.hi + F(t.lo + F(len.lo - L.sl));
-    const F u = unit_roundoff<F>();
-    if (std::fabs(g) > F(F(520) * u) * F(len.hi + L.s) && (g > F(0)) == (cls > 0)) {
-      const F dv = Pow2<F>(-L.scale)(std::fabs(g));
-      if (w & want_distance) res.distance = g > F(0) ? dv : F(0);
-      if (w & want_depth) res.depth = g < F(0) ? dv : F(0);
-      done |= want_distance | want_depth;
-    }
-  }
+  if ((w & (want_distance | want_depth)) && first_look_gap(len, L.s, L.sl, cls, L.scale, w, res))
+    done |= want_distance | want_depth;
   if (w & want_witnesses) {
     for (int i = 0; i < 3; ++i) {
       const Pair<F> n = div_pair<Mul>(Pair<F>{L.v[i], L.vl[i]}, len);  // v_i / |v| (1 + 27u^2)

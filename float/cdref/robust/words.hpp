@@ -128,7 +128,7 @@ struct Scale {
   template <class F>
   F len(F x) const {
     if constexpr (std::is_same_v<F, double>)
-      if (k >= -1022 && k <= 1023) return x * std::bit_cast<double>(std::uint64_t(k + 1023) << 52);
+      if (k >= -1022 && k <= 1023) return x * exp2_of<double>(k);
     return std::ldexp(x, k);
   }
   template <class F>
