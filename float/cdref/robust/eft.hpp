@@ -109,7 +109,11 @@ F sum_k(F (&p)[N], int K) {
 //     |yl| <= u|yh|; the remainder xh - t yh is exact, three roundings of the u-sized
 //     correction and the division by yh instead of y);
 //   sqrt_pair(x) = sqrt(xh + xl) as (y, (xh - y^2 + xl) / (2y)), y = fl(sqrt xh): one Newton
-//     step, relative error at most 4u^2.
+//     step, relative error at most 4u^2;
+//   recip_pair(y) = 1 / y as (t, fl(fl(e - t yl) t)), t = fl(1 / yh), e = 1 - t yh exactly (the
+//     remainder of a rounded quotient is a double): 1/y = t + E/y with E = e - t yl, |E| <=
+//     2.01u; E's two roundings err by 3.03u^2, E t against E/y by 2.01u |E| |1/y| (t and yh
+//     against y), t E's rounding 2.1u^2: relative error at most 10u^2, one division.
 // Each result is normalized (|lo| <= ulp(hi)/2) by a final fast_two_sum.
 
 template <class F>
@@ -210,6 +214,14 @@ Pair<F> div_pair(const Pair<F>& x, const Pair<F>& y) {
   const F corr = rem / y.hi;
   if (!std::isfinite(corr)) return {t, F(0)};  // t itself at the edge of the range
   return fast_two_sum(t, corr);
+}
+
+template <class Mul = SplitProduct, class F>
+Pair<F> recip_pair(const Pair<F>& y) {
+  const F t = F(1) / y.hi;
+  const Pair<F> p = Mul::prod(t, y.hi);
+  const F e = F(F(1) - p.hi) - p.lo;
+  return fast_two_sum(t, F(F(e - t * y.lo) * t));
 }
 
 template <class Mul = SplitProduct, class F>

@@ -31,6 +31,38 @@
 // the outputs come from the triangle's normal (proximity_by_face below): the sphere's witness
 // c + rho (x - c) / |x - c| took its direction from x - c, which cancels when the centre lies
 // near the plane (2.3e4 ulps on the degenerate family; now every output within 1 ulp there).
+//
+// F. The first look (proximity() at double, where the first stage classifies). The closest
+// point is unique, and x is it iff c - x lies in the normal cone of x's feature; the region is
+// taken where that is certain, and x there in double words with a rigorous error bound:
+//  1. P_k = v_k - c and the edges e_k = v_k+1 - v_k as exact pairs (two_sum); where the
+//     largest of them and rho lies outside [2^-100, 2^100], scaled by the power of two that
+//     brings it into [1, 2). (An underflowing product errs by 2^-1074 at most, and no product
+//     of degree 4 then exceeds 2^404: tiny below covers them.)
+//  2. In double on the highs, each with the bound 6u sum |x_i y_i| (the lows u of the highs,
+//     three products and two sums) plus tiny = 2^-800 (underflow): ee_k = e_k.e_k, alpha_k =
+//     -P_k.e_k, beta_k = -P_k+1.e_k, ce_k = e_k.e_k-1, and q_k = alpha_k ce_k - ee_k beta_k-1 =
+//     (e_k x (c - v_k)).(e_k x (v_k-1 - v_k)) (Lagrange's identity), whose bound adds the
+//     products' errors and 2u of the two products. The region: vertex k where alpha_k < 0 and
+//     beta_k-1 > 0 certainly ((c - v_k).(y - v_k) <= 0 at both other vertices); edge k where
+//     alpha_k > 0, beta_k < 0 (the foot within the edge) and q_k < 0 (c beyond the edge's line
+//     within the plane, so c - x . (v_k-1 - v_k) = q_k / ee_k <= 0); the face where every q_k
+//     > 0 (then n != 0). Anything else (a boundary within the bounds, a zero-area triangle):
+//     the path below.
+//  3. v = x - c: a vertex's P_k exactly; an edge's P_k + t e_k, t = alpha / ee from double-word
+//     dots (dot_words: 48u^2 sum |x_i y_i|), div_pair (8u^2) and mul_pair (5u^2), the sum with
+//     P_k by two_sum (4u^2 of the terms); the face's n s / n.n with n = e_0 x (v_2 - v_0) in
+//     double words (the highs' products exact, 32u^2 of their magnitudes), s = P_0 . n. Each
+//     component carries a bound that follows every error through (the quotients' by
+//     (E_num + |q| E_den) / den_lo).
+//  4. g = |v| - rho summed once from |v| as a double word (18u^2 plus the sum of v's bounds):
+//     the distance or the depth where that bound is below u |g| / 16 and g's sign is the first
+//     stage's.
+//  5. The witnesses c + rho v / |v| (along_dw; in the face region v / |v| = sign(s) n / |n|,
+//     which does not carry s / n.n's error) and x = c + v (plus_dw; a vertex exactly) where
+//     each coordinate's error before its last rounding is below a quarter of u times it: then
+//     within 3/4 of an ulp of the truth.
+// Every value asked, or the path below for all of them.
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
@@ -38,6 +70,7 @@
 #include <cdref/oracle/triangle_words.hpp>
 
 #include "rational.hpp"
+#include "sphere_sphere.hpp"
 #include "words.hpp"
 
 namespace cdref::robust {
@@ -175,13 +208,265 @@ std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const
   return r;
 }
 
+// ---- The first look at double (item F of the header) ----------------------------------------
+
+// A dot product of two vectors of normalized pairs (x = xh + xl, |xl| <= u |xh|; y alike) as a
+// double word, with a bound on its error: the three products of the highs exact (Mul), summed
+// by a two_sum chain; their lows, the chain's errors and the six cross products xh yl, xl yh
+// summed in double; xl yl dropped. With S = sum |xh_i yh_i|: dropped <= u^2 S (1 + u); the
+// cross products total <= 2u S (1 + u) and their 6 products and 5 sums err by <= 12u^2 S; the
+// lows' eleven terms total <= 5.05u S and their sums err by <= 25.5u^2 S; the last two_sum is
+// exact. Below 39u^2 S (1 + 3u): 48u^2 S~ (S~ the computed S, >= S (1 - 2u)) plus `tiny` for
+// products whose lows fall below the normal range (each off by at most 2^-1074).
+struct WordDot {
+  Pair<double> v;
+  double err;
+};
+inline constexpr double first_look_u = 0x1p-53, first_look_tiny = 0x1p-800, first_look_grow = 1 + 64 * 0x1p-53;
+template <class Mul>
+WordDot dot_words(const double (&xh)[3], const double (&xl)[3], const double (&yh)[3], const double (&yl)[3]) {
+  constexpr double u = first_look_u;
+  const Pair<double> p0 = Mul::prod(xh[0], yh[0]), p1 = Mul::prod(xh[1], yh[1]), p2 = Mul::prod(xh[2], yh[2]);
+  const Pair<double> s1 = two_sum(p0.hi, p1.hi), s2 = two_sum(s1.hi, p2.hi);
+  const double cross = (xh[0] * yl[0] + xl[0] * yh[0]) + (xh[1] * yl[1] + xl[1] * yh[1]) + (xh[2] * yl[2] + xl[2] * yh[2]);
+  const double low = ((p0.lo + p1.lo) + (p2.lo + s1.lo)) + (s2.lo + cross);
+  const double S = (std::fabs(p0.hi) + std::fabs(p1.hi)) + std::fabs(p2.hi);
+  return {two_sum(s2.hi, low), 48 * u * u * S + first_look_tiny};
+}
+
+// The closest point's offset from the centre, v = x - c, in units of 2^scale: pairs with a
+// bound on each component's error.
+struct FirstLookPoint {
+  double h[3], l[3], err[3];
+  int scale = 0;
+  int vertex = -1;  // the closest point is this input vertex (v exact)
+  // in the face region, v's direction: sign * n, n = nh + nl within nerr (sign 0 elsewhere);
+  // n / |n| does not carry the error of the factor s / n.n
+  int sign = 0;
+  double nh[3], nl[3], nerr[3];
+};
+
+// Item F, steps 1-3: the region certified and v there; false where a test cannot tell.
+template <class Mul>
+bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, FirstLookPoint& out) {
+  constexpr double u = first_look_u, tiny = first_look_tiny, grow = first_look_grow;
+  // 1. the vertices about the centre and the edges, exact pairs, scaled by 2^-scale
+  double Ph[3][3], Pl[3][3], Eh[3][3], El[3][3];
+  double top = sp.radius;
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      const Pair<double> p = two_sum(t.vertex[k][i], -sp.center[i]);
+      const Pair<double> e = two_sum(t.vertex[(k + 1) % 3][i], -t.vertex[k][i]);
+      Ph[k][i] = p.hi, Pl[k][i] = p.lo, Eh[k][i] = e.hi, El[k][i] = e.lo;
+      top = std::max({top, std::fabs(p.hi), std::fabs(e.hi)});
+    }
+  if (!(top > 0x1p-1000 && top < 0x1p1000)) return false;
+  const int scale = top >= 0x1p-100 && top <= 0x1p100 ? 0 : exponent_of(top);
+  if (scale != 0) {
+    const Pow2<double> down(scale);
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) {
+        Ph[k][i] = down(Ph[k][i]), Pl[k][i] = down(Pl[k][i]);
+        Eh[k][i] = down(Eh[k][i]), El[k][i] = down(El[k][i]);
+      }
+  }
+  // 2. the region tests on the highs, each with its bound
+  const auto dot = [](const double (&x)[3], const double (&y)[3], double& err) {
+    err = (6 * u) * ((std::fabs(x[0] * y[0]) + std::fabs(x[1] * y[1])) + std::fabs(x[2] * y[2])) + tiny;
+    return (x[0] * y[0] + x[1] * y[1]) + x[2] * y[2];
+  };
+  double ee[3], Eee[3], al[3], Eal[3], be[3], Ebe[3], ce[3], Ece[3];
+  for (int k = 0; k < 3; ++k) {
+    const int n = (k + 1) % 3, p = (k + 2) % 3;
+    ee[k] = dot(Eh[k], Eh[k], Eee[k]);
+    al[k] = -dot(Ph[k], Eh[k], Eal[k]);  // (c - P_k) . e_k
+    be[k] = -dot(Ph[n], Eh[k], Ebe[k]);  // (c - P_k+1) . e_k
+    ce[k] = dot(Eh[k], Eh[p], Ece[k]);   // e_k . e_k-1
+  }
+  const auto certain_pos = [](double x, double e) { return x > e; };
+  const auto certain_neg = [](double x, double e) { return x < -e; };
+  double q[3], Eq[3];
+  for (int k = 0; k < 3; ++k) {
+    const int p = (k + 2) % 3;
+    const double a = al[k] * ce[k], b = ee[k] * be[p];
+    q[k] = a - b;
+    Eq[k] = (Eal[k] * std::fabs(ce[k]) + (std::fabs(al[k]) + Eal[k]) * Ece[k] + Eee[k] * std::fabs(be[p]) +
+             (std::fabs(ee[k]) + Eee[k]) * Ebe[p] + 2 * u * (std::fabs(a) + std::fabs(b))) *
+                grow +
+            tiny;
+  }
+  out.scale = scale;
+  for (int k = 0; k < 3; ++k) {
+    const int p = (k + 2) % 3;
+    if (certain_neg(al[k], Eal[k]) && certain_pos(be[p], Ebe[p])) {  // vertex k
+      for (int i = 0; i < 3; ++i) out.h[i] = Ph[k][i], out.l[i] = Pl[k][i], out.err[i] = tiny;
+      out.vertex = k;
+      return true;
+    }
+    if (certain_pos(al[k], Eal[k]) && certain_neg(be[k], Ebe[k]) && certain_neg(q[k], Eq[k])) {  // edge k
+      // 3. v = P_k + t e_k, t = alpha / (e.e) from double words
+      WordDot a = dot_words<Mul>(Ph[k], Pl[k], Eh[k], El[k]), d = dot_words<Mul>(Eh[k], El[k], Eh[k], El[k]);
+      a.v = {-a.v.hi, -a.v.lo};
+      const double den = d.v.hi * (1 - 2 * u) - d.err;
+      if (!(den > 0)) return false;
+      const Pair<double> tt = div_pair<Mul>(a.v, d.v);
+      const double at = std::fabs(tt.hi) * (1 + u);
+      const double Et = ((a.err + at * d.err) / den + 8 * u * u * at) * grow;
+      for (int i = 0; i < 3; ++i) {
+        const Pair<double> te = mul_pair<Mul>(tt, Pair<double>{Eh[k][i], El[k][i]});
+        const Pair<double> s = two_sum(Ph[k][i], te.hi);
+        const Pair<double> v = two_sum(s.hi, double(s.lo + double(Pl[k][i] + te.lo)));
+        out.h[i] = v.hi, out.l[i] = v.lo;
+        out.err[i] = (Et * std::fabs(Eh[k][i]) + 10 * u * u * (std::fabs(Ph[k][i]) + std::fabs(te.hi))) * grow + tiny;
+      }
+      return true;
+    }
+  }
+  if (!(certain_pos(q[0], Eq[0]) && certain_pos(q[1], Eq[1]) && certain_pos(q[2], Eq[2]))) return false;
+  // 3. the face: v = n s / n.n, n = e_0 x (-e_2) = (v1 - v0) x (v2 - v0), s = P_0 . n
+  double nh[3], nl[3], En[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, m = (i + 2) % 3;
+    // n_i = e0_j f_m - e0_m f_j with f = -e_2
+    const double fjh = -Eh[2][j], fjl = -El[2][j], fmh = -Eh[2][m], fml = -El[2][m];
+    const Pair<double> a = Mul::prod(Eh[0][j], fmh), b = Mul::prod(Eh[0][m], fjh);
+    const Pair<double> s = two_sum(a.hi, -b.hi);
+    const double low = (s.lo + (a.lo - b.lo)) + ((Eh[0][j] * fml + El[0][j] * fmh) - (Eh[0][m] * fjl + El[0][m] * fjh));
+    const Pair<double> n = two_sum(s.hi, low);
+    nh[i] = n.hi, nl[i] = n.lo;
+    En[i] = 32 * u * u * (std::fabs(a.hi) + std::fabs(b.hi)) + tiny;
+  }
+  const WordDot s = dot_words<Mul>(Ph[0], Pl[0], nh, nl);
+  const double Es =
+      (s.err + (1 + 2 * u) * ((std::fabs(Ph[0][0]) * En[0] + std::fabs(Ph[0][1]) * En[1]) + std::fabs(Ph[0][2]) * En[2])) * grow;
+  const Pair<double> nn = norm2_dw<Mul>(nh, nl);
+  double Enn = 28 * u * u * nn.hi;
+  for (int i = 0; i < 3; ++i) Enn += (2 * std::fabs(nh[i]) * (1 + u) + En[i]) * En[i];
+  Enn = Enn * grow + tiny;
+  const double den = nn.hi * (1 - 2 * u) - Enn;
+  if (!(den > 0)) return false;
+  if (s.v.hi > Es * (1 + 2 * u)) out.sign = 1;
+  if (s.v.hi < -Es * (1 + 2 * u)) out.sign = -1;
+  for (int i = 0; i < 3; ++i) out.nh[i] = nh[i], out.nl[i] = nl[i], out.nerr[i] = En[i];
+  const Pair<double> kk = div_pair<Mul>(s.v, nn);
+  const double ak = std::fabs(kk.hi) * (1 + u);
+  const double Ek = ((Es + ak * Enn) / den + 8 * u * u * ak) * grow;
+  for (int i = 0; i < 3; ++i) {
+    const Pair<double> v = mul_pair<Mul>(Pair<double>{nh[i], nl[i]}, kk);
+    out.h[i] = v.hi, out.l[i] = v.lo;
+    out.err[i] = (5 * u * u * std::fabs(nh[i]) * ak + ak * En[i] + (std::fabs(nh[i]) * (1 + u) + En[i]) * Ek) * grow + tiny;
+  }
+  return true;
+}
+
+// Item F, steps 4-5: the values from v where its bounds certify them within an ulp; which of the
+// asked values it set (want_distance | want_depth together, want_witnesses, want_closest).
+// cls: the first stage's classification (1 meets, 0 apart).
+template <class Mul>
+unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int cls, unsigned w,
+                              Proximity<double>& res) {
+  constexpr double u = first_look_u, grow = first_look_grow;
+  FirstLookPoint P;
+  if (!first_look_point<Mul>(sp, t, P)) return 0;
+  const double top = std::max({std::fabs(P.h[0]), std::fabs(P.h[1]), std::fabs(P.h[2])});
+  if (!(top >= 0x1p-400)) return 0;  // (scaled units: v far below the inputs' size, or 0)
+  const Pair<double> len = sqrt_pair<Mul>(norm2_dw<Mul>(P.h, P.l));  // |v~| (1 + 18u^2)
+  const double Elen = (18 * u * u * len.hi + ((P.err[0] + P.err[1]) + P.err[2])) * grow;
+  const double lden = len.hi * (1 - 2 * u) - Elen;
+  if (!(lden > 0)) return 0;
+  unsigned done = 0;
+  if (w & (want_distance | want_depth)) {
+    // g = |v| - rho summed once (sphere_sphere.hpp, first_look_gap): before that rounding within
+    // Elen + 2.1u^2 (|v| + rho) of the truth; kept where that is below u |g| / 16
+    const double rho = Pow2<double>(P.scale)(sp.radius);
+    const Pair<double> d = two_sum(len.hi, -rho);
+    const double g = d.hi + double(d.lo + len.lo);
+    const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
+    if (16 * Eg < u * std::fabs(g) && (g > 0) == (cls == 0)) {
+      const double dv = Pow2<double>(-P.scale)(std::fabs(g));
+      if (w & want_distance) res.distance = g > 0 ? dv : 0.0;
+      if (w & want_depth) res.depth = g < 0 ? dv : 0.0;
+      done |= want_distance | want_depth;
+    }
+  }
+  // a value c + z rounded once within 3/4 of an ulp of the truth where its error before the
+  // rounding is below u |value| / 4 (u |value| <= its ulp); 2^-1070 for an underflowing low part
+  const auto kept = [](double value, double err) {
+    return std::isfinite(value) && err + 0x1p-1070 <= 0.25 * u * std::fabs(value);
+  };
+  if (w & want_witnesses) {
+    // the sphere's witness c + rho v / |v| (sphere_sphere.hpp, along_dw: before its rounding
+    // within u^2 |value| + 3u^2 rho |n_i| of c + rho n~_i); in the face region v / |v| is
+    // sign(s) n / |n|
+    const bool face = P.sign != 0;
+    const double *dh = face ? P.nh : P.h, *dl = face ? P.nl : P.l, *de = face ? P.nerr : P.err;
+    Pair<double> dlen = len;
+    double Edlen = Elen, dden = lden;
+    if (face) {
+      dlen = sqrt_pair<Mul>(norm2_dw<Mul>(P.nh, P.nl));
+      Edlen = (18 * u * u * dlen.hi + ((P.nerr[0] + P.nerr[1]) + P.nerr[2])) * grow;
+      dden = dlen.hi * (1 - 2 * u) - Edlen;
+    }
+    const double rho = P.sign < 0 ? -sp.radius : sp.radius;
+    bool ok = dden > 0;
+    const Pair<double> inv = recip_pair<Mul>(dlen);  // 10u^2
+    const double rden = 1 / dden;  // (its rounding and the product's within grow)
+    for (int i = 0; i < 3 && ok; ++i) {
+      const Pair<double> n = mul_pair<Mul>(Pair<double>{dh[i], dl[i]}, inv);  // + 5u^2
+      const double an = std::fabs(n.hi) * (1 + u);
+      const double En = ((de[i] + an * Edlen) * rden + 16 * u * u * an) * grow;
+      const double r = along_dw(sp.center[i], rho, n);
+      ok = kept(r, (sp.radius * En + 4 * u * u * (std::fabs(r) + sp.radius * an)) * grow);
+      res.on_a[i] = r;
+    }
+    if (ok) done |= want_witnesses;
+  }
+  if (w & (want_witnesses | want_closest)) {
+    // the triangle's point x = c + v 2^scale (plus_dw: before its rounding within
+    // u^2 (|x_i| + |v_i|) of c + v~); a vertex exactly
+    Vec3<double> x;
+    bool ok = true;
+    const Pow2<double> up(-P.scale);
+    for (int i = 0; i < 3 && ok; ++i) {
+      if (P.vertex >= 0) {
+        x[i] = t.vertex[P.vertex][i];
+        continue;
+      }
+      x[i] = plus_dw(sp.center[i], Pair<double>{P.h[i], P.l[i]}, P.scale);
+      ok = kept(x[i], (up(P.err[i]) + 2 * u * u * (std::fabs(x[i]) + up(std::fabs(P.h[i])))) * grow);
+    }
+    if (ok) {
+      if (w & want_closest) res.closest = x, done |= want_closest;
+      if (w & want_witnesses) res.on_b = x;
+    } else {
+      done &= ~want_witnesses;
+    }
+  }
+  return done;
+}
+
+// proximity() at double: the first stage, then the first look (item F), else the double words.
+template <class Mul>
+Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Triangle<double>& t, unsigned w) {
+  if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
+    Proximity<double> res;
+    res.intersect = f != 0;
+    const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
+    if (!asked || (sphere_triangle_fast<Mul>(s, t, f, w, res) & asked) == asked) return res;
+  }
+  return sphere_triangle_eval(s, t, w).first;
+}
+
 }  // namespace detail
 
 template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const Triangle<F>& t, unsigned w = want_proximity) {
   check(s, "sphere");
   check(t, "triangle");
-  return with_fma([&] { return detail::sphere_triangle_eval(s, t, w).first; });
+  if constexpr (std::is_same_v<F, double>)
+    return with_products([&](auto mul) { return detail::sphere_triangle_proximity<decltype(mul)>(s, t, w); });
+  else
+    return with_fma([&] { return detail::sphere_triangle_eval(s, t, w).first; });
 }
 template <class F>
 Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
