@@ -1928,6 +1928,84 @@ TEST_CASE("sphere-triangle's first look: every value it answers within an ulp of
   CHECK(boundary_answered * 4 >= boundary);  // (most are a few ulps from a boundary, yet certain)
 }
 
+TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
+          "[oracle-classify][triangle][robust]") {
+  // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'
+  // bounds order the triangles or the ones they cannot tell apart give the same values.
+  using Q = queries::PolygonSphere;
+  const Query q = query_by_name(Q::name);
+  std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
+  for (const Family& f : families(q))
+    for (const int k : f.scales)
+      for (std::uint64_t i = 0; i < 200; ++i) {
+        const Inputs in = make_case(23, q, f, k, i);
+        const auto [s, p] = Q::make<double>(in);
+        try {
+          check(s, "sphere");
+          check(p);
+        } catch (const cdref::invalid_input&) {
+          continue;
+        }
+        auto& [yes, cases] = answered[f.name];
+        ++cases;
+        Proximity<double> r;
+        if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s, p, r)) continue;
+        ++yes;
+        const Answer truth = oracle_truth(q, in, 53);
+        INFO(f.name << "/" << k << " case " << i);
+        REQUIRE(truth.cls == r.intersect);
+        CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
+        CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
+        for (int j = 0; j < 3; ++j) {
+          CHECK(ulp_distance(r.on_a[j], truth.v[2 + j], 53) <= 1u);
+          CHECK(ulp_distance(r.on_b[j], truth.v[5 + j], 53) <= 1u);
+          CHECK(r.closest[j] == r.on_b[j]);
+        }
+      }
+  for (const auto& [name, a] : answered) WARN(name << ": the first look answered " << a.first << " of " << a.second);
+  CHECK(answered["uniform"].first * 100 >= answered["uniform"].second * 95);
+  CHECK(answered["long-range"].first * 100 >= answered["long-range"].second * 95);
+  // Centres over a quadrilateral's diagonal, 2^-20 to 2^-45 of its size to either side: the two
+  // fan triangles' distances then agree to 2^-40 to 2^-90 of the distance, where the rounded
+  // keys tie and only their bounds tell which triangle is the nearest.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  int near_diagonal = 0, near_answered = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    Polygon<double> p;
+    p.n = 4;
+    p.vertex[0] = Vec3<double>(-1 - U(rng), -0.5 + U(rng), 0);
+    p.vertex[1] = Vec3<double>(-0.5 + U(rng), -1 - U(rng), 0);
+    p.vertex[2] = Vec3<double>(1 + U(rng), -0.5 + U(rng), 0);
+    p.vertex[3] = Vec3<double>(-0.5 + U(rng), 1 + U(rng), 0);
+    const Vec3<double> d = p.vertex[2] - p.vertex[0];
+    const Vec3<double> side(-d[1], d[0], 0);  // in the plane, toward the second triangle
+    const double off = (trial % 2 ? 1 : -1) * std::ldexp(0.5 + U(rng), -20 - trial % 26);
+    const Vec3<double> c = p.vertex[0] + (0.2 + 0.6 * U(rng)) * d + off * side.normalized() + Vec3<double>(0, 0, 0.5 + U(rng));
+    Inputs in{};
+    in[0] = 4;  // (the polygon's columns, then the sphere's: queries/polygons.hpp)
+    for (int m = 0; m < 4; ++m)
+      for (int j = 0; j < 3; ++j) in[1 + 3 * m + j] = p.vertex[m][j];
+    in[25] = c[0], in[26] = c[1], in[27] = c[2], in[28] = 0.25 + U(rng);
+    const auto [s2, p2] = Q::make<double>(in);
+    ++near_diagonal;
+    Proximity<double> r;
+    if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s2, p2, r)) continue;
+    ++near_answered;
+    const Answer truth = oracle_truth(q, in, 53);
+    INFO("near the diagonal, trial " << trial);
+    REQUIRE(truth.cls == r.intersect);
+    CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
+    CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
+    for (int j = 0; j < 3; ++j) {
+      CHECK(ulp_distance(r.on_a[j], truth.v[2 + j], 53) <= 1u);
+      CHECK(ulp_distance(r.on_b[j], truth.v[5 + j], 53) <= 1u);
+    }
+  }
+  WARN("centres near a diagonal: the first look answered " << near_answered << " of " << near_diagonal);
+  CHECK(near_answered > 0);
+}
+
 TEST_CASE("two triangles on a grid: a separating plane and a coplanar pair exactly, as the book at Gmpq",
           "[oracle-classify][triangle]") {
   using Q = queries::TriangleTriangle;

@@ -94,6 +94,42 @@ Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
   const detail::Scale sc = detail::tiny_scale(s, p);
   return sc.k == 0 ? run(s, p) : run(detail::scaled(s, sc), detail::scaled(p, sc));
 }
+namespace detail {
+// At double, first: every fan triangle's first stage and first look (sphere_triangle.hpp, item
+// F) with every value. The nearest is the least key |x - c| - rho; it is taken where its key's
+// interval lies below every other's, or where each triangle it cannot be told from gives the
+// same values bit for bit (each within 3/4 of an ulp of its own truth, so of the nearest's).
+// The union's classification is exact, every first stage having decided. false: the loop below.
+inline bool same_values(const Proximity<double>& a, const Proximity<double>& b) {
+  return a.distance == b.distance && a.depth == b.depth && a.on_a == b.on_a && a.on_b == b.on_b && a.closest == b.closest;
+}
+template <class Mul>
+bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p, Proximity<double>& best) {
+  constexpr unsigned all = want_distance | want_depth | want_witnesses | want_closest;
+  constexpr double u = 0x1p-53;
+  Proximity<double> r[Polygon<double>::max_vertices];
+  double key[Polygon<double>::max_vertices][2];
+  bool meet = false;
+  int b = 0;
+  const int n = p.triangles();
+  for (int k = 0; k < n; ++k) {
+    const Triangle<double> t = p.triangle(k);
+    const int f = sphere_triangle_first_stage(s, t);
+    if (f == oracle::sphere_triangle::unknown) return false;
+    meet = meet || f != 0;
+    if ((sphere_triangle_fast<Mul>(s, t, f, all, r[k], key[k]) & all) != all) return false;
+    if (key[k][0] < key[b][0]) b = k;
+  }
+  // (fl(g_k - g_b) > (e_b + e_k)(1 + 4u) proves g_k - g_b > e_b + e_k)
+  for (int k = 0; k < n; ++k)
+    if (k != b && !(key[k][0] - key[b][0] > (key[b][1] + key[k][1]) * (1 + 4 * u)) && !same_values(r[b], r[k]))
+      return false;
+  best = r[b];
+  best.intersect = meet;
+  return true;
+}
+}  // namespace detail
+
 // The nearest fan triangle (the book's choice: the least |x - c|, the first on ties) is chosen
 // by the triangles' robust distances and depths: key |x - c| - rho, i.e. the distance, or minus
 // the depth. Every triangle's robust query runs anyway for the union's certificate; the book's
@@ -116,11 +152,14 @@ Proximity<F> proximity(const Sphere<F>& s0, const Polygon<F>& p0, unsigned w = w
   const Sphere<F> s = detail::scaled(s0, sc);
   const Polygon<F> p = detail::scaled(p0, sc);
   Proximity<F> best;
+  bool first_look = false;  // (at double, above)
+  if constexpr (std::is_same_v<F, double>)
+    first_look = with_products([&](auto mul) { return detail::polygon_sphere_first_look<decltype(mul)>(s, p, best); });
   // the key |x - c| - rho as hi + lo: the double words' where they completed, else F's value
   std::pair<long double, double> best_key{0, 0};
-  Decision u{false, true};
+  Decision u{best.intersect, true};
   bool yes = false;  // a triangle certainly met
-  for (int k = 0; k < p.triangles(); ++k) {
+  for (int k = 0; k < p.triangles() && !first_look; ++k) {
     // (every output, as decide() asks: the same evaluation, so the same certificate)
     detail::WordValues kept;
     const auto e = detail::sphere_triangle_eval(s, p.triangle(k), want_proximity, &kept);

@@ -59,7 +59,8 @@
 //     the distance or the depth where that bound is below u |g| / 16 and g's sign is the first
 //     stage's.
 //  5. The witnesses c + rho v / |v| (along_dw; in the face region v / |v| = sign(s) n / |n|,
-//     which does not carry s / n.n's error) and x = c + v (plus_dw; a vertex exactly) where
+//     which does not carry s / n.n's error) and x = c + v (plus_dw; a vertex exactly, and a
+//     coordinate that every vertex of x's edge or face shares exactly: it is x's) where
 //     each coordinate's error before its last rounding is below a quarter of u times it: then
 //     within 3/4 of an ulp of the truth.
 // Every value asked, or the path below for all of them.
@@ -240,6 +241,7 @@ struct FirstLookPoint {
   double h[3], l[3], err[3];
   int scale = 0;
   int vertex = -1;  // the closest point is this input vertex (v exact)
+  int edge = -1;    // ... on the edge from vertex edge to the next
   // in the face region, v's direction: sign * n, n = nh + nl within nerr (sign 0 elsewhere);
   // n / |n| does not carry the error of the factor s / n.n
   int sign = 0;
@@ -319,6 +321,7 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
         out.h[i] = v.hi, out.l[i] = v.lo;
         out.err[i] = (Et * std::fabs(Eh[k][i]) + 10 * u * u * (std::fabs(Ph[k][i]) + std::fabs(te.hi))) * grow + tiny;
       }
+      out.edge = k;
       return true;
     }
   }
@@ -361,10 +364,12 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
 
 // Item F, steps 4-5: the values from v where its bounds certify them within an ulp; which of the
 // asked values it set (want_distance | want_depth together, want_witnesses, want_closest).
-// cls: the first stage's classification (1 meets, 0 apart).
+// cls: the first stage's classification (1 meets, 0 apart). key, where given and the distance
+// and depth are set: |x - c| - rho rounded (key[0]) and a bound on its error (key[1]), for
+// polygon.hpp to order a fan's triangles.
 template <class Mul>
 unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int cls, unsigned w,
-                              Proximity<double>& res) {
+                              Proximity<double>& res, double* key = nullptr) {
   constexpr double u = first_look_u, grow = first_look_grow;
   FirstLookPoint P;
   if (!first_look_point<Mul>(sp, t, P)) return 0;
@@ -383,10 +388,13 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     const double g = d.hi + double(d.lo + len.lo);
     const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
     if (16 * Eg < u * std::fabs(g) && (g > 0) == (cls == 0)) {
-      const double dv = Pow2<double>(-P.scale)(std::fabs(g));
+      const Pow2<double> up(-P.scale);
+      const double dv = up(std::fabs(g));
       if (w & want_distance) res.distance = g > 0 ? dv : 0.0;
       if (w & want_depth) res.depth = g < 0 ? dv : 0.0;
       done |= want_distance | want_depth;
+      // (the scaling exact but for an underflow, 2^-1074 at most)
+      if (key) key[0] = up(g), key[1] = up((Eg + u * std::fabs(g)) * grow) + 0x1p-1070;
     }
   }
   // a value c + z rounded once within 3/4 of an ulp of the truth where its error before the
@@ -428,8 +436,12 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     bool ok = true;
     const Pow2<double> up(-P.scale);
     for (int i = 0; i < 3 && ok; ++i) {
-      if (P.vertex >= 0) {
-        x[i] = t.vertex[P.vertex][i];
+      // a vertex, or a coordinate that every vertex of the feature shares (an axis-aligned
+      // face or edge: a floor's height, exactly)
+      const int a = P.vertex >= 0 ? P.vertex : P.edge >= 0 ? P.edge : 0;
+      const double same = t.vertex[a][i];
+      if (P.vertex >= 0 || (t.vertex[(a + 1) % 3][i] == same && (P.edge >= 0 || t.vertex[(a + 2) % 3][i] == same))) {
+        x[i] = same;
         continue;
       }
       x[i] = plus_dw(sp.center[i], Pair<double>{P.h[i], P.l[i]}, P.scale);
