@@ -1817,13 +1817,10 @@ TEST_CASE("a sphere and a triangle: the first stage's certificates on double wor
 
 namespace {
 // robust/sphere_triangle.hpp's first look (item F) on one case: where it answers, each value it
-// set within an ulp of the correctly rounded truth (the classification the first stage's, as
-// the truth's). Returns the values it answered, of distance/depth, witnesses and closest (0-3).
+// set within an ulp of the correctly rounded truth, and its classification the truth's. Returns the values it answered, of distance/depth, witnesses and closest (0-3).
 int first_look_graded(const Inputs& in, const std::string& where) {
   const Query q = query_by_name(queries::SphereTriangle::name);
   const auto [s, t] = queries::SphereTriangle::make<double>(in);
-  const int c = robust::detail::sphere_triangle_first_stage(s, t);
-  if (c == oracle::sphere_triangle::unknown) return 0;
   INFO(where);
   // the closest point's offset v = x - c (and in the face region the normal n) within the
   // bounds the first look derives, against x at Gmpq (the book's closest point is the truth)
@@ -1847,11 +1844,14 @@ int first_look_graded(const Inputs& in, const std::string& where) {
       CHECK((side > 0 ? 1 : -1) == P.sign);
     }
   }
+  // the classification from g's certain sign, or the first stage's
   Proximity<double> r;
+  int c = oracle::sphere_triangle::unknown;
   const unsigned done = robust::detail::sphere_triangle_fast<robust::SplitProduct>(s, t, c, want_proximity, r);
-  if (!done) return 0;
+  if (c == oracle::sphere_triangle::unknown) return 0;
   const Answer truth = oracle_truth(q, in, 53);
   REQUIRE(truth.cls == (c != 0));
+  if (!done) return 0;
   int n = 0;
   if (done & want_distance) {
     CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
@@ -1926,6 +1926,32 @@ TEST_CASE("sphere-triangle's first look: every value it answers within an ulp of
   }
   WARN("centres on region boundaries: the first look answered " << boundary_answered << " of " << boundary);
   CHECK(boundary_answered * 4 >= boundary);  // (most are a few ulps from a boundary, yet certain)
+  // Spheres that touch the triangle exactly: a triangle in the plane z = 0 and the centre at
+  // height +-rho over a point inside it. The double words' |v| - rho is then a few u^2 of rho
+  // either side of 0: g's sign is not the classification, and the first look must not take it.
+  int touching = 0, classified = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    Vec3<double> v[3];
+    for (auto& p : v) p = Vec3<double>(U(rng), U(rng), 0);
+    const double a = 0.2 + 0.2 * (U(rng) + 1), b = 0.2 * (U(rng) + 1);
+    const Vec3<double> on = v[0] + a * (v[1] - v[0]) + b * (v[2] - v[0]);
+    const double rho = std::ldexp(1 + (U(rng) + 1) / 2, -int(trial % 9));
+    Inputs in{};
+    in[0] = on[0], in[1] = on[1], in[2] = trial % 2 ? rho : -rho, in[3] = rho;
+    for (int m = 0; m < 3; ++m)
+      for (int i = 0; i < 3; ++i) in[4 + 3 * m + i] = v[m][i];
+    const auto [s, t] = queries::SphereTriangle::make<double>(in);
+    Proximity<double> r;
+    int c = oracle::sphere_triangle::unknown;
+    robust::detail::sphere_triangle_fast<robust::SplitProduct>(s, t, c, want_proximity, r);
+    ++touching;
+    if (c == oracle::sphere_triangle::unknown) continue;
+    ++classified;
+    INFO("touching, trial " << trial);
+    CHECK(c == 1);  // |v| = rho exactly: they meet
+    first_look_graded(in, "touching, trial " + std::to_string(trial));
+  }
+  WARN("spheres touching the triangle: the first look classified " << classified << " of " << touching);
 }
 
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",

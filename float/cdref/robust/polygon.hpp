@@ -95,11 +95,11 @@ Decision decide(const Sphere<F>& s, const Polygon<F>& p) {
   return sc.k == 0 ? run(s, p) : run(detail::scaled(s, sc), detail::scaled(p, sc));
 }
 namespace detail {
-// At double, first: every fan triangle's first stage and first look (sphere_triangle.hpp, item
-// F) with every value. The nearest is the least key |x - c| - rho; it is taken where its key's
+// At double, first: every fan triangle's first look (sphere_triangle.hpp, item F) with every
+// value, and its classification. The nearest is the least key |x - c| - rho; it is taken where its key's
 // interval lies below every other's, or where each triangle it cannot be told from gives the
 // same values bit for bit (each within 3/4 of an ulp of its own truth, so of the nearest's).
-// The union's classification is exact, every first stage having decided. false: the loop below.
+// The union's classification is exact, every triangle's being certain. false: the loop below.
 inline bool same_values(const Proximity<double>& a, const Proximity<double>& b) {
   return a.distance == b.distance && a.depth == b.depth && a.on_a == b.on_a && a.on_b == b.on_b && a.closest == b.closest;
 }
@@ -113,11 +113,9 @@ bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p
   int b = 0;
   const int n = p.triangles();
   for (int k = 0; k < n; ++k) {
-    const Triangle<double> t = p.triangle(k);
-    const int f = sphere_triangle_first_stage(s, t);
-    if (f == oracle::sphere_triangle::unknown) return false;
+    int f = oracle::sphere_triangle::unknown;
+    if ((sphere_triangle_fast<Mul>(s, p.triangle(k), f, all, r[k], key[k]) & all) != all) return false;
     meet = meet || f != 0;
-    if ((sphere_triangle_fast<Mul>(s, t, f, all, r[k], key[k]) & all) != all) return false;
     if (key[k][0] < key[b][0]) b = k;
   }
   // (fl(g_k - g_b) > (e_b + e_k)(1 + 4u) proves g_k - g_b > e_b + e_k)

@@ -32,7 +32,7 @@
 // c + rho (x - c) / |x - c| took its direction from x - c, which cancels when the centre lies
 // near the plane (2.3e4 ulps on the degenerate family; now every output within 1 ulp there).
 //
-// F. The first look (proximity() at double, where the first stage classifies). The closest
+// F. The first look (proximity() at double, every value asked). The closest
 // point is unique, and x is it iff c - x lies in the normal cone of x's feature; the region is
 // taken where that is certain, and x there in double words with a rigorous error bound:
 //  1. P_k = v_k - c and the edges e_k = v_k+1 - v_k as exact pairs (two_sum); where the
@@ -56,8 +56,8 @@
 //     component carries a bound that follows every error through (the quotients' by
 //     (E_num + |q| E_den) / den_lo).
 //  4. g = |v| - rho summed once from |v| as a double word (18u^2 plus the sum of v's bounds):
-//     the distance or the depth where that bound is below u |g| / 16 and g's sign is the first
-//     stage's.
+//     the classification from g's sign where the bound makes it certain (else the first
+//     stage's), the distance or the depth where the bound is below u |g| / 16.
 //  5. The witnesses c + rho v / |v| (along_dw; in the face region v / |v| = sign(s) n / |n|,
 //     which does not carry s / n.n's error) and x = c + v (plus_dw; a vertex exactly, and a
 //     coordinate that every vertex of x's edge or face shares exactly: it is x's) where
@@ -364,29 +364,38 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
 
 // Item F, steps 4-5: the values from v where its bounds certify them within an ulp; which of the
 // asked values it set (want_distance | want_depth together, want_witnesses, want_closest).
-// cls: the first stage's classification (1 meets, 0 apart). key, where given and the distance
-// and depth are set: |x - c| - rho rounded (key[0]) and a bound on its error (key[1]), for
-// polygon.hpp to order a fan's triangles.
+// cls: the classification (1 meets, 0 apart), or oracle::sphere_triangle::unknown: then g's
+// sign where its bound makes it certain, else the first stage's, and the function sets it
+// (unknown where neither tells: nothing set). key, where given and the distance and depth are
+// set: |x - c| - rho rounded (key[0]) and a bound on its error (key[1]), for polygon.hpp to
+// order a fan's triangles.
 template <class Mul>
-unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int cls, unsigned w,
+unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int& cls, unsigned w,
                               Proximity<double>& res, double* key = nullptr) {
   constexpr double u = first_look_u, grow = first_look_grow;
+  constexpr int unknown = oracle::sphere_triangle::unknown;
   FirstLookPoint P;
-  if (!first_look_point<Mul>(sp, t, P)) return 0;
-  const double top = std::max({std::fabs(P.h[0]), std::fabs(P.h[1]), std::fabs(P.h[2])});
-  if (!(top >= 0x1p-400)) return 0;  // (scaled units: v far below the inputs' size, or 0)
-  const Pair<double> len = sqrt_pair<Mul>(norm2_dw<Mul>(P.h, P.l));  // |v~| (1 + 18u^2)
-  const double Elen = (18 * u * u * len.hi + ((P.err[0] + P.err[1]) + P.err[2])) * grow;
+  const bool point = first_look_point<Mul>(sp, t, P);
+  // (scaled units: v far below the inputs' size, or 0, is left to the path below)
+  const bool sized = point && std::max({std::fabs(P.h[0]), std::fabs(P.h[1]), std::fabs(P.h[2])}) >= 0x1p-400;
+  const Pair<double> len = sized ? sqrt_pair<Mul>(norm2_dw<Mul>(P.h, P.l)) : Pair<double>{0, 0};  // |v~| (1 + 18u^2)
+  const double Elen = sized ? (18 * u * u * len.hi + ((P.err[0] + P.err[1]) + P.err[2])) * grow : 0.0;
   const double lden = len.hi * (1 - 2 * u) - Elen;
-  if (!(lden > 0)) return 0;
+  if (!sized || !(lden > 0)) {
+    if (cls == unknown) cls = sphere_triangle_first_stage(sp, t);
+    return 0;
+  }
+  // g = |v| - rho summed once (sphere_sphere.hpp, first_look_gap): before that rounding within
+  // Eg = Elen + 2.1u^2 (|v| + rho) of the truth, so its sign is certain where Eg (1 + 4u) < |g|
+  const double rho = Pow2<double>(P.scale)(sp.radius);
+  const Pair<double> d = two_sum(len.hi, -rho);
+  const double g = d.hi + double(d.lo + len.lo);
+  const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
+  if (cls == unknown) cls = Eg * (1 + 4 * u) < std::fabs(g) ? int(g < 0) : sphere_triangle_first_stage(sp, t);
+  if (cls == unknown) return 0;
   unsigned done = 0;
   if (w & (want_distance | want_depth)) {
-    // g = |v| - rho summed once (sphere_sphere.hpp, first_look_gap): before that rounding within
-    // Elen + 2.1u^2 (|v| + rho) of the truth; kept where that is below u |g| / 16
-    const double rho = Pow2<double>(P.scale)(sp.radius);
-    const Pair<double> d = two_sum(len.hi, -rho);
-    const double g = d.hi + double(d.lo + len.lo);
-    const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
+    // the distance or the depth, where Eg is below u |g| / 16
     if (16 * Eg < u * std::fabs(g) && (g > 0) == (cls == 0)) {
       const Pow2<double> up(-P.scale);
       const double dv = up(std::fabs(g));
@@ -457,14 +466,17 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
   return done;
 }
 
-// proximity() at double: the first stage, then the first look (item F), else the double words.
+// proximity() at double: the first look (item F), its classification from g or the first stage;
+// else the double words. The classification alone: the first stage.
 template <class Mul>
 Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Triangle<double>& t, unsigned w) {
-  if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
-    Proximity<double> res;
-    res.intersect = f != 0;
-    const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
-    if (!asked || (sphere_triangle_fast<Mul>(s, t, f, w, res) & asked) == asked) return res;
+  const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
+  int cls = asked ? oracle::sphere_triangle::unknown : sphere_triangle_first_stage(s, t);
+  Proximity<double> res;
+  const unsigned done = asked ? sphere_triangle_fast<Mul>(s, t, cls, w, res) : 0u;
+  if (cls != oracle::sphere_triangle::unknown && (done & asked) == asked) {
+    res.intersect = cls != 0;
+    return res;
   }
   return sphere_triangle_eval(s, t, w).first;
 }
