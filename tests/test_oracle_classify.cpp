@@ -1960,6 +1960,23 @@ TEST_CASE("polygon-sphere's first look: where it answers, every value within an 
   // bounds order the triangles or the ones they cannot tell apart give the same values.
   using Q = queries::PolygonSphere;
   const Query q = query_by_name(Q::name);
+  // where the first look answers, its values against the correctly rounded truth
+  const auto graded = [&](const Inputs& in, const std::string& where) {
+    const auto [s, p] = Q::make<double>(in);
+    Proximity<double> r;
+    if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s, p, r)) return false;
+    const Answer truth = oracle_truth(q, in, 53);
+    INFO(where);
+    REQUIRE(truth.cls == r.intersect);
+    CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
+    CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
+    for (int j = 0; j < 3; ++j) {
+      CHECK(ulp_distance(r.on_a[j], truth.v[2 + j], 53) <= 1u);
+      CHECK(ulp_distance(r.on_b[j], truth.v[5 + j], 53) <= 1u);
+      CHECK(r.closest[j] == r.on_b[j]);
+    }
+    return true;
+  };
   std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
   for (const Family& f : families(q))
     for (const int k : f.scales)
@@ -1974,19 +1991,7 @@ TEST_CASE("polygon-sphere's first look: where it answers, every value within an 
         }
         auto& [yes, cases] = answered[f.name];
         ++cases;
-        Proximity<double> r;
-        if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s, p, r)) continue;
-        ++yes;
-        const Answer truth = oracle_truth(q, in, 53);
-        INFO(f.name << "/" << k << " case " << i);
-        REQUIRE(truth.cls == r.intersect);
-        CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
-        CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
-        for (int j = 0; j < 3; ++j) {
-          CHECK(ulp_distance(r.on_a[j], truth.v[2 + j], 53) <= 1u);
-          CHECK(ulp_distance(r.on_b[j], truth.v[5 + j], 53) <= 1u);
-          CHECK(r.closest[j] == r.on_b[j]);
-        }
+        yes += graded(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i));
       }
   for (const auto& [name, a] : answered) WARN(name << ": the first look answered " << a.first << " of " << a.second);
   CHECK(answered["uniform"].first * 100 >= answered["uniform"].second * 95);
@@ -2013,20 +2018,8 @@ TEST_CASE("polygon-sphere's first look: where it answers, every value within an 
     for (int m = 0; m < 4; ++m)
       for (int j = 0; j < 3; ++j) in[1 + 3 * m + j] = p.vertex[m][j];
     in[25] = c[0], in[26] = c[1], in[27] = c[2], in[28] = 0.25 + U(rng);
-    const auto [s2, p2] = Q::make<double>(in);
     ++near_diagonal;
-    Proximity<double> r;
-    if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s2, p2, r)) continue;
-    ++near_answered;
-    const Answer truth = oracle_truth(q, in, 53);
-    INFO("near the diagonal, trial " << trial);
-    REQUIRE(truth.cls == r.intersect);
-    CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
-    CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
-    for (int j = 0; j < 3; ++j) {
-      CHECK(ulp_distance(r.on_a[j], truth.v[2 + j], 53) <= 1u);
-      CHECK(ulp_distance(r.on_b[j], truth.v[5 + j], 53) <= 1u);
-    }
+    near_answered += graded(in, "near the diagonal, trial " + std::to_string(trial));
   }
   WARN("centres near a diagonal: the first look answered " << near_answered << " of " << near_diagonal);
   CHECK(near_answered > 0);
