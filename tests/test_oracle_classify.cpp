@@ -1954,6 +1954,47 @@ TEST_CASE("sphere-triangle's first look: every value it answers within an ulp of
   WARN("spheres touching the triangle: the first look classified " << classified << " of " << touching);
 }
 
+TEST_CASE("sphere-triangle's first look for the oracle: every value it answers the truth rounded, bit for bit, and "
+          "none whose bound holds a rounding midpoint",
+          "[oracle-classify][triangle][robust]") {
+  // robust/sphere_triangle.hpp, sphere_triangle_fast<Mul, true>: each value kept only where the interval
+  // of its double word and bound rounds to one double. Distances from a vertex c + (1, y, 0) to a
+  // centre c, y^2 near 2^-52, the radius 2^-110 or less: |v| - rho = sqrt(1 + y^2) - rho lies
+  // within 2^-104 or so of the midpoint 1 + 2^-53 between 1 and its successor. (The oracle's
+  // test on every family, in test_campaign.cpp, checks the same path there.)
+  const Query q = query_by_name(queries::SphereTriangle::name);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> U(0, 1);
+  int answered = 0, refused = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double y = std::ldexp(1.0 + std::ldexp(U(rng) - 0.5, -20 - trial % 30), -26);
+    Inputs in{};
+    in[0] = 0.5, in[2] = 0.125, in[3] = std::ldexp(1.0, -110 - trial % 20);
+    const double v[3][3] = {{1.5, y, 0.125}, {2.5, y, 0.625}, {2.5, y, -0.375}};
+    for (int m = 0; m < 3; ++m)
+      for (int i = 0; i < 3; ++i) in[4 + 3 * m + i] = v[m][i];
+    const auto [s, t] = queries::SphereTriangle::make<double>(in);
+    Proximity<double> r;
+    if (!robust::detail::sphere_triangle_rounded<robust::SplitProduct>(s, t, r)) {
+      ++refused;
+      continue;
+    }
+    ++answered;
+    const Answer truth = oracle_truth(q, in, 53);
+    INFO("trial " << trial);
+    REQUIRE(truth.cls == r.intersect);
+    CHECK(double(truth.v[0]) == r.distance);
+    CHECK(double(truth.v[1]) == r.depth);
+    for (int i = 0; i < 3; ++i) {
+      CHECK(double(truth.v[2 + i]) == r.on_a[i]);
+      CHECK(double(truth.v[5 + i]) == r.on_b[i]);
+    }
+  }
+  WARN("near a rounding midpoint: answered " << answered << ", refused " << refused);
+  CHECK(answered > 3000);
+  CHECK(refused > 0);  // (within 3/4 of an ulp would have answered every one)
+}
+
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
           "[oracle-classify][triangle][robust]") {
   // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'

@@ -103,7 +103,8 @@ namespace detail {
 inline bool same_values(const Proximity<double>& a, const Proximity<double>& b) {
   return a.distance == b.distance && a.depth == b.depth && a.on_a == b.on_a && a.on_b == b.on_b && a.closest == b.closest;
 }
-template <class Mul>
+// Correct: each value the truth correctly rounded (sphere_triangle_fast's), for the oracle.
+template <class Mul, bool Correct = false>
 bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p, Proximity<double>& best) {
   constexpr unsigned all = want_distance | want_depth | want_witnesses | want_closest;
   constexpr double u = 0x1p-53;
@@ -114,7 +115,7 @@ bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p
   const int n = p.triangles();
   for (int k = 0; k < n; ++k) {
     int f = oracle::sphere_triangle::unknown;
-    if ((sphere_triangle_fast<Mul>(s, p.triangle(k), f, all, r[k], key[k]) & all) != all) return false;
+    if ((sphere_triangle_fast<Mul, Correct>(s, p.triangle(k), f, all, r[k], key[k]) & all) != all) return false;
     meet = meet || f != 0;
     if (key[k][0] < key[b][0]) b = k;
   }

@@ -369,7 +369,10 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
 // (unknown where neither tells: nothing set). key, where given and the distance and depth are
 // set: |x - c| - rho rounded (key[0]) and a bound on its error (key[1]), for polygon.hpp to
 // order a fan's triangles.
-template <class Mul>
+// Correct: each value kept only where it is the truth correctly rounded (its interval, the
+// value before its last rounding and its bound, within the rounding interval of the double it
+// rounds to: oracle::Bounded2::try_rounded), for the oracle's every-output path.
+template <class Mul, bool Correct = false>
 unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int& cls, unsigned w,
                               Proximity<double>& res, double* key = nullptr) {
   constexpr double u = first_look_u, grow = first_look_grow;
@@ -389,15 +392,29 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
   // Eg = Elen + 2.1u^2 (|v| + rho) of the truth, so its sign is certain where Eg (1 + 4u) < |g|
   const double rho = Pow2<double>(P.scale)(sp.radius);
   const Pair<double> d = two_sum(len.hi, -rho);
-  const double g = d.hi + double(d.lo + len.lo);
+  const Pair<double> gp = two_sum(d.hi, double(d.lo + len.lo));
+  const double g = gp.hi;
   const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
   if (cls == unknown) cls = Eg * (1 + 4 * u) < std::fabs(g) ? int(g < 0) : sphere_triangle_first_stage(sp, t);
   if (cls == unknown) return 0;
+  // a value c + z whose last rounding gave v.hi (v the value before it, within err): kept where
+  // Correct says it is the truth rounded, else where v.hi lies within 3/4 of an ulp of the truth
+  // (err below u |v.hi| / 4 <= its ulp / 4); 2^-1070 for an underflowing low part
+  const auto kept = [](const Pair<double>& v, double err) {
+    if constexpr (Correct) {
+      double r;
+      return std::fabs(v.hi) >= 0x1p-960 && oracle::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
+             r == v.hi;
+    } else {
+      return std::isfinite(v.hi) && err + 0x1p-1070 <= 0.25 * u * std::fabs(v.hi);
+    }
+  };
+  const Pow2<double> up(-P.scale);
   unsigned done = 0;
   if (w & (want_distance | want_depth)) {
-    // the distance or the depth, where Eg is below u |g| / 16
-    if (16 * Eg < u * std::fabs(g) && (g > 0) == (cls == 0)) {
-      const Pow2<double> up(-P.scale);
+    // the distance or the depth, where Eg is below u |g| / 16 (Correct: where |g| rounds surely)
+    const bool sure = Correct ? kept(Pair<double>{up(gp.hi), up(gp.lo)}, up(Eg)) : 16 * Eg < u * std::fabs(g);
+    if (sure && (g > 0) == (cls == 0)) {
       const double dv = up(std::fabs(g));
       if (w & want_distance) res.distance = g > 0 ? dv : 0.0;
       if (w & want_depth) res.depth = g < 0 ? dv : 0.0;
@@ -406,11 +423,6 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
       if (key) key[0] = up(g), key[1] = up((Eg + u * std::fabs(g)) * grow) + 0x1p-1070;
     }
   }
-  // a value c + z rounded once within 3/4 of an ulp of the truth where its error before the
-  // rounding is below u |value| / 4 (u |value| <= its ulp); 2^-1070 for an underflowing low part
-  const auto kept = [](double value, double err) {
-    return std::isfinite(value) && err + 0x1p-1070 <= 0.25 * u * std::fabs(value);
-  };
   if (w & want_witnesses) {
     // the sphere's witness c + rho v / |v| (sphere_sphere.hpp, along_dw: before its rounding
     // within u^2 |value| + 3u^2 rho |n_i| of c + rho n~_i); in the face region v / |v| is
@@ -432,9 +444,12 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
       const Pair<double> n = mul_pair<Mul>(Pair<double>{dh[i], dl[i]}, inv);  // + 5u^2
       const double an = std::fabs(n.hi) * (1 + u);
       const double En = ((de[i] + an * Edlen) * rden + 16 * u * u * an) * grow;
-      const double r = along_dw(sp.center[i], rho, n);
-      ok = kept(r, (sp.radius * En + 4 * u * u * (std::fabs(r) + sp.radius * an)) * grow);
-      res.on_a[i] = r;
+      // (along_dw, its last sum kept as a pair)
+      const Pair<double> p = two_prod(rho, n.hi);
+      const Pair<double> c = two_sum(sp.center[i], p.hi);
+      const Pair<double> r = two_sum(c.hi, double(c.lo + double(p.lo + rho * n.lo)));
+      ok = kept(r, (sp.radius * En + 4 * u * u * (std::fabs(r.hi) + sp.radius * an)) * grow);
+      res.on_a[i] = r.hi;
     }
     if (ok) done |= want_witnesses;
   }
@@ -443,18 +458,20 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     // u^2 (|x_i| + |v_i|) of c + v~); a vertex exactly
     Vec3<double> x;
     bool ok = true;
-    const Pow2<double> up(-P.scale);
     for (int i = 0; i < 3 && ok; ++i) {
       // a vertex, or a coordinate that every vertex of the feature shares (an axis-aligned
       // face or edge: a floor's height, exactly)
       const int a = P.vertex >= 0 ? P.vertex : P.edge >= 0 ? P.edge : 0;
       const double same = t.vertex[a][i];
       if (P.vertex >= 0 || (t.vertex[(a + 1) % 3][i] == same && (P.edge >= 0 || t.vertex[(a + 2) % 3][i] == same))) {
-        x[i] = same;
+        x[i] = same + 0.0;  // (+0 for -0, as the exact value rounds)
         continue;
       }
-      x[i] = plus_dw(sp.center[i], Pair<double>{P.h[i], P.l[i]}, P.scale);
-      ok = kept(x[i], (up(P.err[i]) + 2 * u * u * (std::fabs(x[i]) + up(std::fabs(P.h[i])))) * grow);
+      // (plus_dw, its last sum kept as a pair)
+      const Pair<double> c = two_sum(sp.center[i], up(P.h[i]));
+      const Pair<double> r = two_sum(c.hi, double(c.lo + up(P.l[i])));
+      x[i] = r.hi;
+      ok = kept(r, (up(P.err[i]) + 2 * u * u * (std::fabs(x[i]) + up(std::fabs(P.h[i])))) * grow);
     }
     if (ok) {
       if (w & want_closest) res.closest = x, done |= want_closest;
@@ -464,6 +481,18 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     }
   }
   return done;
+}
+
+// The oracle's every-output path first (fuzz/queries/sphere_triangle.hpp): every value of the
+// book's proximity at an exact type rounded correctly, from the first look where its bounds
+// prove each rounding; false where they do not (or the inputs are refused: the caller's path
+// refuses them by name).
+template <class Mul>
+bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t, Proximity<double>& res) {
+  int cls = oracle::sphere_triangle::unknown;
+  if ((sphere_triangle_fast<Mul, true>(s, t, cls, want_proximity, res) & want_proximity) != want_proximity) return false;
+  res.intersect = cls != 0;
+  return true;
 }
 
 // proximity() at double: the first look (item F), its classification from g or the first stage;

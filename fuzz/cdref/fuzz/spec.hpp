@@ -595,6 +595,15 @@ bool outputs_on_hit_alone() {
   return all;
 }
 
+// Where the spec has `oracle_rounded(in, answer)` (at double: true where it proves every value
+// of the truth rounded correctly, the robust tier's first look on a sphere and a triangle or a
+// polygon), the every-output path at double takes it first; inputs it does not take go on to
+// the formulation, which refuses them by name.
+template <class Spec>
+constexpr bool has_oracle_rounded = requires(const Inputs& in, Answer& a) {
+  { Spec::oracle_rounded(in, a) } -> std::same_as<bool>;
+};
+
 template <class Spec>
 Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   if constexpr (is_cast<Spec>) {
@@ -615,6 +624,8 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
     }
   }
   if (exact_used) *exact_used = false;
+  if constexpr (has_oracle_rounded<Spec>)
+    if (Answer r; precision == 53 && Spec::oracle_rounded(in, r)) return r;
   try {
     return precision == 24   ? oracle_formulation_at<Spec, oracle::Bounded2, float>(in)
            : precision == 64 ? oracle_formulation_at<Spec, oracle::Bounded2, long double>(in)
