@@ -59,7 +59,9 @@ struct SphereTriangle {
   // every output correctly rounded at double, first from the robust tier's first look where its
   // bounds prove each rounding (robust/sphere_triangle.hpp, item F; spec.hpp, oracle_truth_of)
   static bool oracle_rounded(const Inputs& in, Answer& out) {
-    const auto [a, b] = make<double>(in);
+    const auto ab = make<double>(in);
+    const Sphere<double>& a = ab.first;
+    const Triangle<double>& b = ab.second;
     try {
       check(a, "sphere");
       check(b, "triangle");
