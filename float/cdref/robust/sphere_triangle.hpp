@@ -63,7 +63,10 @@
 //     coordinate that every vertex of x's edge or face shares exactly: it is x's) where
 //     each coordinate's error before its last rounding is below a quarter of u times it: then
 //     within 3/4 of an ulp of the truth.
-// Every value asked, or the path below for all of them.
+// Every value asked, or the path below for all of them. For the oracle's every-output path
+// (sphere_triangle_rounded; polygon.hpp's first look for a fan) each value is kept instead
+// where the interval of its double word before the last rounding and its bound rounds to one
+// double (oracle::Bounded2::try_rounded): then it is the truth correctly rounded.
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
