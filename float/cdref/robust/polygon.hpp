@@ -109,7 +109,7 @@ bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p
   constexpr unsigned all = want_distance | want_depth | want_witnesses | want_closest;
   constexpr double u = 0x1p-53;
   Proximity<double> r[Polygon<double>::max_vertices];
-  double key[Polygon<double>::max_vertices][2];
+  double key[Polygon<double>::max_vertices][3];
   bool meet = false;
   int b = 0;
   const int n = p.triangles();
@@ -117,12 +117,19 @@ bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p
     int f = oracle::sphere_triangle::unknown;
     if ((sphere_triangle_fast<Mul, Correct>(s, p.triangle(k), f, all, r[k], key[k]) & all) != all) return false;
     meet = meet || f != 0;
-    if (key[k][0] < key[b][0]) b = k;
+    if (key[k][0] < key[b][0] || (key[k][0] == key[b][0] && key[k][1] < key[b][1])) b = k;
   }
-  // (fl(g_k - g_b) > (e_b + e_k)(1 + 4u) proves g_k - g_b > e_b + e_k)
+  // g_k - g_b from the double words: (h_k - h_b) exactly by two_sum, the lows' difference and
+  // the sums rounded three times (u of each); it exceeds e_b + e_k where the rounded difference
+  // less those roundings does (margins 4u and 8u for the test's own roundings)
+  const auto apart = [&](int k) {
+    const Pair<double> d = two_sum(key[k][0], -key[b][0]);
+    const double r = d.lo + (key[k][1] - key[b][1]), total = d.hi + r;
+    const double slack = u * ((std::fabs(key[k][1]) + std::fabs(key[b][1])) + std::fabs(r));
+    return total * (1 - 4 * u) > ((key[b][2] + key[k][2]) + slack) * (1 + 8 * u);
+  };
   for (int k = 0; k < n; ++k)
-    if (k != b && !(key[k][0] - key[b][0] > (key[b][1] + key[k][1]) * (1 + 4 * u)) && !same_values(r[b], r[k]))
-      return false;
+    if (k != b && !apart(k) && !same_values(r[b], r[k])) return false;
   best = r[b];
   best.intersect = meet;
   return true;

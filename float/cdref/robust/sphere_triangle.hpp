@@ -370,8 +370,8 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
 // cls: the classification (1 meets, 0 apart), or oracle::sphere_triangle::unknown: then g's
 // sign where its bound makes it certain, else the first stage's, and the function sets it
 // (unknown where neither tells: nothing set). key, where given and the distance and depth are
-// set: |x - c| - rho rounded (key[0]) and a bound on its error (key[1]), for polygon.hpp to
-// order a fan's triangles.
+// set: |x - c| - rho as a double word (key[0] + key[1], before its last rounding) and a bound
+// on its error (key[2]), for polygon.hpp to order a fan's triangles.
 // Correct: each value kept only where it is the truth correctly rounded (its interval, the
 // value before its last rounding and its bound, within the rounding interval of the double it
 // rounds to: oracle::Bounded2::try_rounded), for the oracle's every-output path.
@@ -423,7 +423,7 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
       if (w & want_depth) res.depth = g < 0 ? dv : 0.0;
       done |= want_distance | want_depth;
       // (the scaling exact but for an underflow, 2^-1074 at most)
-      if (key) key[0] = up(g), key[1] = up((Eg + u * std::fabs(g)) * grow) + 0x1p-1070;
+      if (key) key[0] = up(gp.hi), key[1] = up(gp.lo), key[2] = up(Eg * grow) + 0x1p-1070;
     }
   }
   if (w & want_witnesses) {
