@@ -290,27 +290,10 @@ struct PolygonSphere {
   static bool oracle(const Sphere<double>& a, const Polygon<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
   }
-  // every output correctly rounded at double, first from the robust tier's first look on every
-  // fan triangle where its bounds prove each rounding and order the triangles
-  // (robust/polygon.hpp; spec.hpp, oracle_truth_of)
-  static bool oracle_rounded(const Inputs& in, Answer& out) {
-    Sphere<double> a;
-    Polygon<double> b;
-    try {
-      std::tie(a, b) = make<double>(in);
-      check(a, "sphere");
-      check(b);
-    } catch (const invalid_input&) {
-      return false;
-    }
-    Proximity<double> p;
-    if (!cdref::robust::with_products([&](auto mul) {
-          return cdref::robust::detail::polygon_sphere_first_look<decltype(mul), true>(a, b, p);
-        }))
-      return false;
-    spec::put<double>(out, p, true);
-    out.pred = out.cls;
-    return true;
+  // every output correctly rounded at double, first from the robust tier's first look where its
+  // bounds prove each rounding (spec.hpp, oracle_truth_of)
+  static bool oracle_rounded(const Sphere<double>& a, const Polygon<double>& b, Proximity<double>& out) {
+    return cdref::robust::proximity_rounded(a, b, out);
   }
   static int stage(cdref::oracle::Stage s, const Sphere<double>& a, const Polygon<double>& b) {
     return cdref::oracle::polygon::at_stage(s, a, b);

@@ -57,24 +57,9 @@ struct SphereTriangle {
     return cdref::oracle::classify(a, b, st);
   }
   // every output correctly rounded at double, first from the robust tier's first look where its
-  // bounds prove each rounding (robust/sphere_triangle.hpp, item F; spec.hpp, oracle_truth_of)
-  static bool oracle_rounded(const Inputs& in, Answer& out) {
-    const auto ab = make<double>(in);
-    const Sphere<double>& a = ab.first;
-    const Triangle<double>& b = ab.second;
-    try {
-      check(a, "sphere");
-      check(b, "triangle");
-    } catch (const invalid_input&) {
-      return false;
-    }
-    Proximity<double> p;
-    if (!cdref::robust::with_products(
-            [&](auto mul) { return cdref::robust::detail::sphere_triangle_rounded<decltype(mul)>(a, b, p); }))
-      return false;
-    spec::put<double>(out, p, true);
-    out.pred = out.cls;
-    return true;
+  // bounds prove each rounding (spec.hpp, oracle_truth_of)
+  static bool oracle_rounded(const Sphere<double>& a, const Triangle<double>& b, Proximity<double>& out) {
+    return cdref::robust::proximity_rounded(a, b, out);
   }
   static int stage(cdref::oracle::Stage s, const Sphere<double>& a, const Triangle<double>& b) {
     return cdref::oracle::sphere_triangle::at_stage(s, a, b);

@@ -107,7 +107,7 @@ inline bool same_values(const Proximity<double>& a, const Proximity<double>& b) 
 template <class Mul, bool Correct = false>
 bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p, Proximity<double>& best) {
   constexpr unsigned all = want_distance | want_depth | want_witnesses | want_closest;
-  constexpr double u = 0x1p-53;
+  constexpr double u = first_look_u;
   Proximity<double> r[Polygon<double>::max_vertices];
   double key[Polygon<double>::max_vertices][3];
   bool meet = false;
@@ -192,6 +192,13 @@ Proximity<F> proximity(const Sphere<F>& s0, const Polygon<F>& p0, unsigned w = w
 }
 template <class F>
 bool intersect(const Sphere<F>& s, const Polygon<F>& p) { return decide(s, p).value; }
+// The oracle's every-output path at double first, as sphere_triangle.hpp's: every value the
+// truth correctly rounded where every fan triangle's first look proves it and orders them.
+inline bool proximity_rounded(const Sphere<double>& s, const Polygon<double>& p, Proximity<double>& res) {
+  check(s, "sphere");
+  check(p);
+  return with_products([&](auto mul) { return detail::polygon_sphere_first_look<decltype(mul), true>(s, p, res); });
+}
 
 template <class F>
 Decision decide(const Polygon<F>& p, const Box<F>& b) {

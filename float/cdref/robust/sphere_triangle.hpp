@@ -249,6 +249,7 @@ struct FirstLookPoint {
   // n / |n| does not carry the error of the factor s / n.n
   int sign = 0;
   double nh[3], nl[3], nerr[3];
+  Pair<double> nn;  // |n~|^2 (norm2_dw)
 };
 
 // Item F, steps 1-3: the region certified and v there; false where a test cannot tell.
@@ -354,6 +355,7 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
   if (s.v.hi > Es * (1 + 2 * u)) out.sign = 1;
   if (s.v.hi < -Es * (1 + 2 * u)) out.sign = -1;
   for (int i = 0; i < 3; ++i) out.nh[i] = nh[i], out.nl[i] = nl[i], out.nerr[i] = En[i];
+  out.nn = nn;
   const Pair<double> kk = div_pair<Mul>(s.v, nn);
   const double ak = std::fabs(kk.hi) * (1 + u);
   const double Ek = ((Es + ak * Enn) / den + 8 * u * u * ak) * grow;
@@ -435,7 +437,7 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     Pair<double> dlen = len;
     double Edlen = Elen, dden = lden;
     if (face) {
-      dlen = sqrt_pair<Mul>(norm2_dw<Mul>(P.nh, P.nl));
+      dlen = sqrt_pair<Mul>(P.nn);
       Edlen = (18 * u * u * dlen.hi + ((P.nerr[0] + P.nerr[1]) + P.nerr[2])) * grow;
       dden = dlen.hi * (1 - 2 * u) - Edlen;
     }
@@ -524,6 +526,15 @@ Proximity<F> proximity(const Sphere<F>& s, const Triangle<F>& t, unsigned w = wa
   else
     return with_fma([&] { return detail::sphere_triangle_eval(s, t, w).first; });
 }
+// The oracle's every-output path at double first (fuzz/cdref/fuzz/spec.hpp, oracle_truth_of):
+// every value the truth correctly rounded where the first look proves it (item F), else false.
+// The inputs checked as proximity() checks them.
+inline bool proximity_rounded(const Sphere<double>& s, const Triangle<double>& t, Proximity<double>& res) {
+  check(s, "sphere");
+  check(t, "triangle");
+  return with_products([&](auto mul) { return detail::sphere_triangle_rounded<decltype(mul)>(s, t, res); });
+}
+
 template <class F>
 Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
   check(s, "sphere");

@@ -595,14 +595,28 @@ bool outputs_on_hit_alone() {
   return all;
 }
 
-// Where the spec has `oracle_rounded(in, answer)` (at double: true where it proves every value
-// of the truth rounded correctly, the robust tier's first look on a sphere and a triangle or a
-// polygon), the every-output path at double takes it first; inputs it does not take go on to
-// the formulation, which refuses them by name.
+// Where the spec has `oracle_rounded(a, b, proximity)` (at double: true where it proves every
+// value of the truth rounded correctly, the robust tier's first look on a sphere and a triangle
+// or a polygon), the every-output path at double takes it first; inputs it refuses go on to the
+// formulation, which refuses them by name.
 template <class Spec>
-constexpr bool has_oracle_rounded = requires(const Inputs& in, Answer& a) {
-  { Spec::oracle_rounded(in, a) } -> std::same_as<bool>;
+constexpr bool has_oracle_rounded = requires(const Inputs& in, Proximity<double>& p) {
+  { Spec::oracle_rounded(Spec::template make<double>(in).first, Spec::template make<double>(in).second, p) }
+      -> std::same_as<bool>;
 };
+template <class Spec>
+bool oracle_rounded_of(const Inputs& in, Answer& r) {
+  try {
+    const auto [a, b] = Spec::template make<double>(in);
+    Proximity<double> p;
+    if (!Spec::oracle_rounded(a, b, p)) return false;
+    put<double>(r, p, true);
+    r.pred = r.cls;
+    return true;
+  } catch (const invalid_input&) {
+    return false;
+  }
+}
 
 template <class Spec>
 Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
@@ -625,7 +639,7 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   }
   if (exact_used) *exact_used = false;
   if constexpr (has_oracle_rounded<Spec>)
-    if (Answer r; precision == 53 && Spec::oracle_rounded(in, r)) return r;
+    if (Answer r; precision == 53 && oracle_rounded_of<Spec>(in, r)) return r;
   try {
     return precision == 24   ? oracle_formulation_at<Spec, oracle::Bounded2, float>(in)
            : precision == 64 ? oracle_formulation_at<Spec, oracle::Bounded2, long double>(in)
