@@ -1995,6 +1995,184 @@ TEST_CASE("sphere-triangle's first look for the oracle: every value it answers t
   CHECK(refused > 0);  // (within 3/4 of an ulp would have answered every one)
 }
 
+namespace {
+// robust/sphere_obb.hpp's first look on one case: v = x - q within the bounds it derives against
+// the solid's closest point (or, inside, the nearest face's foot) at Gmpq; its classification the
+// truth's; where it answers, each value within an ulp of the correctly rounded truth, and in the
+// oracle's mode (Correct) each value it keeps the truth rounded, bit for bit. Returns whether it
+// answered every value.
+bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rounded_all = nullptr) {
+  using Spec = queries::SphereObb;
+  const Query q = query_by_name(Spec::name);
+  const auto [s, b] = Spec::make<double>(in);
+  INFO(where);
+  robust::detail::FirstLookPoint P;
+  robust::detail::ObbFeature feature;
+  if (robust::detail::sphere_obb_point<robust::SplitProduct>(s, b, P, feature)) {
+    using Q = CGAL::Gmpq;
+    const Sphere<Q> sq = oracle::rational_inputs::toq(s);
+    const OrientedBox<Q> bq = oracle::rational_inputs::toq(b);
+    const auto f = solid::detail::frame(bq);
+    const Vec3<Q> U = solid::detail::coords(f, sq.center, bq.center);
+    bool inside = true;
+    for (int i = 0; i < 3; ++i) inside = inside && (U[i] < 0 ? -U[i] : U[i]) <= f.H[i];
+    REQUIRE(inside == P.inside);
+    Vec3<Q> x;
+    if (!inside) {
+      solid::detail::closest_outside(bq, f, sq.center, U, &x);
+    } else {  // (solid::proximity's nearest face and its foot)
+      int axis = 0;
+      Q best(0);
+      for (int i = 0; i < 3; ++i) {
+        const Q gap = f.H[i] - (U[i] < 0 ? -U[i] : U[i]), d2 = gap * gap / f.n[i].squaredNorm();
+        if (i == 0 || d2 < best) axis = i, best = d2;
+      }
+      const Q sg = U[axis] < 0 ? Q(-1) : Q(1), gap = f.H[axis] - (U[axis] < 0 ? -U[axis] : U[axis]);
+      x = sq.center + (sg * gap / f.n[axis].squaredNorm()) * f.n[axis];
+    }
+    const Q down(std::ldexp(1.0, -P.scale));
+    for (int i = 0; i < 3; ++i) {
+      const Q d = Q(P.h[i]) + Q(P.l[i]) - (x[i] - sq.center[i]) * down;
+      CHECK((d < 0 ? -d : d) <= Q(P.err[i]));
+    }
+  }
+  Proximity<double> r, rc;
+  int c = oracle::sat::unknown, cc = oracle::sat::unknown;
+  const auto stage = [&] { return robust::detail::first_stage(s, b); };
+  const unsigned done = robust::detail::sphere_obb_fast<robust::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r, stage);
+  const unsigned kept =
+      robust::detail::sphere_obb_fast<robust::SplitProduct, true>(s, b, cc, oracle::sat::unknown, want_proximity, rc, stage);
+  if (rounded_all) *rounded_all = false;
+  if (c == oracle::sat::unknown) return false;
+  const Answer truth = oracle_truth(q, in, 53);
+  REQUIRE(truth.cls == (c != 0));
+  REQUIRE(cc == c);
+  if (done & want_distance) {
+    CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);
+    CHECK(ulp_distance(r.depth, truth.v[1], 53) <= 1u);
+  }
+  if (kept & want_distance) {
+    CHECK(rc.distance == double(truth.v[0]));
+    CHECK(rc.depth == double(truth.v[1]));
+  }
+  for (int i = 0; i < 3; ++i) {
+    INFO("coordinate " << i);
+    if (done & want_witnesses) CHECK(ulp_distance(r.on_a[i], truth.v[2 + i], 53) <= 1u);
+    if (done & want_witnesses) CHECK(ulp_distance(r.on_b[i], truth.v[5 + i], 53) <= 1u);
+    if (kept & want_witnesses) CHECK(rc.on_a[i] == double(truth.v[2 + i]));
+    if (kept & want_witnesses) CHECK(rc.on_b[i] == double(truth.v[5 + i]));
+    // (the closest point: the box's witness outside, the centre inside)
+    if (done & want_closest) CHECK(r.closest[i] == (P.inside ? s.center[i] + 0.0 : r.on_b[i]));
+    if (kept & want_closest) CHECK(rc.closest[i] == (P.inside ? s.center[i] + 0.0 : rc.on_b[i]));
+  }
+  if (rounded_all) *rounded_all = (kept & want_proximity) == want_proximity;
+  return (done & want_proximity) == want_proximity;
+}
+}  // namespace
+
+TEST_CASE("sphere-obb's first look: every value it answers within an ulp of the truth (the oracle's mode: the truth "
+          "rounded), on every family and near region boundaries",
+          "[oracle-classify][sat][robust]") {
+  using Spec = queries::SphereObb;
+  const Query q = query_by_name(Spec::name);
+  std::map<std::string, std::pair<int, int>> answered;  // family: (every value answered, cases)
+  std::map<std::string, int> rounded;                    // family: every value in the oracle's mode
+  for (const Family& f : families(q))
+    for (const int k : f.scales)
+      for (std::uint64_t i = 0; i < 300; ++i) {
+        const Inputs in = make_case(29, q, f, k, i);
+        const auto [s, b] = Spec::make<double>(in);
+        try {
+          check(s, "sphere");
+          check(b, "oriented box");
+        } catch (const cdref::invalid_input&) {
+          continue;
+        }
+        auto& [all, cases] = answered[f.name];
+        bool r = false;
+        all += obb_first_look_graded(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &r);
+        rounded[f.name] += r;
+        ++cases;
+      }
+  for (const auto& [name, a] : answered)
+    WARN(name << ": the first look answered every value on " << a.first << " of " << a.second << ", the oracle's mode on "
+              << rounded[name]);
+  CHECK(answered["uniform"].first * 100 >= answered["uniform"].second * 99);
+  CHECK(answered["long-range"].first * 100 >= answered["long-range"].second * 99);
+  // Centres near the boundaries between the feature regions of a rotated box (axes rounded from
+  // a rotation: not exactly orthonormal, so the outcode's feature is not always the closest; a
+  // third of the boxes sheared, and a quarter of the centres anywhere around the box),
+  // and inside near the planes where two faces are equally near: in the box's coordinates u, one
+  // coordinate at h_m + e or h_m - e (e = 0 or +-2^-20 to 2^-60 of the box's size) and another
+  // clearly outside, or inside with two gaps that differ by e. There a bound too small would take
+  // the wrong feature or the wrong face.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int near = 0, near_answered = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    // a rotation from a random unit quaternion, rounded
+    double qw = U(rng), qx = U(rng), qy = U(rng), qz = U(rng);
+    const double qn = std::sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
+    qw /= qn, qx /= qn, qy /= qn, qz /= qn;
+    const Vec3<double> a0(1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qw * qz), 2 * (qx * qz - qw * qy));
+    Vec3<double> a1(2 * (qx * qy - qw * qz), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz + qw * qx));
+    Vec3<double> a2(2 * (qx * qz + qw * qy), 2 * (qy * qz - qw * qx), 1 - 2 * (qx * qx + qy * qy));
+    if (trial % 3 == 1) {  // sheared: axes far from orthogonal, where the outcode's feature need
+                           // not be the closest (the normal cone's tests must refuse it)
+      a1 = a1 + 0.8 * U(rng) * a0;
+      a2 = a2 + 0.8 * U(rng) * a1;
+    }
+    const Vec3<double> c(U(rng), U(rng), U(rng)), h(0.5 + 0.25 * U(rng), 0.5 + 0.25 * U(rng), 0.5 + 0.25 * U(rng));
+    const double e = trial % 7 == 0 ? 0.0 : (trial % 2 ? 1 : -1) * std::ldexp(1.0, -20 - trial % 41);
+    const int m = trial % 3, m2 = (trial / 3) % 3;
+    Vec3<double> uu(0.9 * h[0] * U(rng), 0.9 * h[1] * U(rng), 0.9 * h[2] * U(rng));
+    if (trial % 4 == 3) {  // anywhere within twice the box's extents
+      for (int i = 0; i < 3; ++i) uu[i] = 2 * h[i] * U(rng);
+    } else if (trial % 4 < 2) {  // outside: coordinate m on a face's plane, give or take e; m2 out or in
+      uu[m] = (trial % 8 < 4 ? 1 : -1) * (h[m] + e);
+      if (m2 != m) uu[m2] = (trial % 5 < 2 ? 1 : -1) * (h[m2] + (trial % 5 == 0 ? e : 0.3 * (1 + U(rng))));
+    } else {  // inside: the gaps of m and m2 differ by e
+      const double gap = 0.2 * (1.1 + U(rng));
+      uu[m] = (trial % 8 < 6 ? 1 : -1) * (h[m] - gap);
+      if (m2 != m) uu[m2] = (trial % 5 < 2 ? 1 : -1) * (h[m2] - gap - e);
+    }
+    const Vec3<double> center = c + uu[0] * a0 + uu[1] * a1 + uu[2] * a2;
+    Inputs in{};
+    for (int i = 0; i < 3; ++i) {
+      in[i] = center[i], in[4 + i] = c[i], in[7 + i] = h[i];
+      in[10 + i] = a0[i], in[13 + i] = a1[i], in[16 + i] = a2[i];
+    }
+    in[3] = trial % 3 == 0 ? 0.25 * (1 + U(rng)) : 0.0;
+    ++near;
+    near_answered += obb_first_look_graded(in, "near a boundary, trial " + std::to_string(trial));
+  }
+  WARN("near region boundaries: the first look answered every value on " << near_answered << " of " << near);
+  CHECK(near_answered * 4 >= near);
+  // Spheres that touch an axis-aligned box's face exactly (axes the coordinate axes): |v| - rho
+  // is within the bound of 0 either side, and the classification must come from the first stage.
+  int touching = 0, classified = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    // (rho of 11 bits: 1 + rho exact)
+    const double rho = std::ldexp(1 + std::floor((U(rng) + 1) * 512) / 1024, -int(trial % 9));
+    Inputs in{};
+    in[0] = 0.25 * U(rng), in[1] = 0.25 * U(rng), in[2] = 1 + rho, in[3] = rho;
+    in[7] = 1, in[8] = 1, in[9] = 1;  // extents; the centre at the origin
+    in[10] = 1, in[14] = 1, in[18] = 1;
+    ++touching;
+    const auto [s, b] = Spec::make<double>(in);
+    Proximity<double> r;
+    int c = oracle::sat::unknown;
+    robust::detail::sphere_obb_fast<robust::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r,
+                                                          [&] { return robust::detail::first_stage(s, b); });
+    if (c == oracle::sat::unknown) continue;
+    ++classified;
+    INFO("touching, trial " << trial);
+    CHECK(c == 1);
+    obb_first_look_graded(in, "touching, trial " + std::to_string(trial));
+  }
+  WARN("spheres touching a box: classified " << classified << " of " << touching);
+}
+
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
           "[oracle-classify][triangle][robust]") {
   // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'

@@ -60,6 +60,11 @@ struct SphereObb {
   static bool oracle(const Sphere<double>& a, const OrientedBox<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
   }
+  // the oracle's every output at double from the robust tier's first look where it proves each
+  // rounding (robust/sphere_obb.hpp)
+  static bool oracle_rounded(const Sphere<double>& a, const OrientedBox<double>& b, Proximity<double>& out) {
+    return cdref::robust::proximity_rounded(a, b, out);
+  }
   static int stage(cdref::oracle::Stage s, const Sphere<double>& a, const OrientedBox<double>& b) {
     return cdref::oracle::sphere_obb::at_stage(s, a, b);
   }

@@ -62,6 +62,7 @@
 #include "rational.hpp"
 #include "ray_box.hpp"
 #include "sphere_box.hpp"
+#include "sphere_obb.hpp"
 #include "words.hpp"
 
 namespace cdref::robust {
@@ -568,10 +569,30 @@ CDREF_ROBUST_OBB_CAST(Segment, "segment")
 CDREF_ROBUST_OBB_CAST(Ray, "ray")
 #undef CDREF_ROBUST_OBB_CAST
 
+namespace detail {
+// proximity() at double, every value asked: the first look (sphere_obb.hpp), its classification
+// from g or the first stage; true where it proved every value asked.
+template <class Mul, bool Correct = false>
+bool sphere_obb_first_look(const Sphere<double>& s, const OrientedBox<double>& b, unsigned w, Proximity<double>& res) {
+  const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
+  if (!asked) return false;
+  int cls = oracle::sat::unknown;
+  const unsigned done =
+      sphere_obb_fast<Mul, Correct>(s, b, cls, oracle::sat::unknown, w, res, [&] { return first_stage(s, b); });
+  if (cls == oracle::sat::unknown || (done & asked) != asked) return false;
+  res.intersect = cls != 0;
+  return true;
+}
+}  // namespace detail
+
 template <class F>
 Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w = want_proximity) {
   check(s, "sphere");
   check(b, "oriented box");
+  if constexpr (std::is_same_v<F, double>) {
+    Proximity<double> res;
+    if (with_products([&](auto mul) { return detail::sphere_obb_first_look<decltype(mul)>(s, b, w, res); })) return res;
+  }
   detail::WordValues kv;
   auto [p, d] = with_fma([&] { return detail::proximity_eval(s, b, w, &kv); });
   if (!d.certain)  // (where the double words are certain they are exact already)
@@ -579,6 +600,15 @@ Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w =
   // the distance and the depth sharpened where the double words leave them loose (rational.hpp)
   detail::sharpen_gap(p, kv, s.radius, w, [&](detail::Rational& xx) { return detail::obb_xx(xx, s.center, b); });
   return p;
+}
+// The oracle's every-output path at double first (fuzz/cdref/fuzz/spec.hpp, oracle_truth_of):
+// every value the truth correctly rounded where the first look proves it (sphere_obb.hpp),
+// else false. The inputs checked as proximity() checks them.
+inline bool proximity_rounded(const Sphere<double>& s, const OrientedBox<double>& b, Proximity<double>& res) {
+  check(s, "sphere");
+  check(b, "oriented box");
+  return with_products(
+      [&](auto mul) { return detail::sphere_obb_first_look<decltype(mul), true>(s, b, want_proximity, res); });
 }
 template <class F>
 Decision decide(const Sphere<F>& s, const OrientedBox<F>& b) {

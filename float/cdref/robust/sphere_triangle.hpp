@@ -73,6 +73,7 @@
 #include <cdref/oracle/triangle_filter.hpp>
 #include <cdref/oracle/triangle_words.hpp>
 
+#include "first_look.hpp"
 #include "rational.hpp"
 #include "sphere_sphere.hpp"
 #include "words.hpp"
@@ -212,45 +213,7 @@ std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const
   return r;
 }
 
-// ---- The first look at double (item F of the header) ----------------------------------------
-
-// A dot product of two vectors of normalized pairs (x = xh + xl, |xl| <= u |xh|; y alike) as a
-// double word, with a bound on its error: the three products of the highs exact (Mul), summed
-// by a two_sum chain; their lows, the chain's errors and the six cross products xh yl, xl yh
-// summed in double; xl yl dropped. With S = sum |xh_i yh_i|: dropped <= u^2 S (1 + u); the
-// cross products total <= 2u S (1 + u) and their 6 products and 5 sums err by <= 12u^2 S; the
-// lows' eleven terms total <= 5.05u S and their sums err by <= 25.5u^2 S; the last two_sum is
-// exact. Below 39u^2 S (1 + 3u): 48u^2 S~ (S~ the computed S, >= S (1 - 2u)) plus `tiny` for
-// products whose lows fall below the normal range (each off by at most 2^-1074).
-struct WordDot {
-  Pair<double> v;
-  double err;
-};
-inline constexpr double first_look_u = 0x1p-53, first_look_tiny = 0x1p-800, first_look_grow = 1 + 64 * 0x1p-53;
-template <class Mul>
-WordDot dot_words(const double (&xh)[3], const double (&xl)[3], const double (&yh)[3], const double (&yl)[3]) {
-  constexpr double u = first_look_u;
-  const Pair<double> p0 = Mul::prod(xh[0], yh[0]), p1 = Mul::prod(xh[1], yh[1]), p2 = Mul::prod(xh[2], yh[2]);
-  const Pair<double> s1 = two_sum(p0.hi, p1.hi), s2 = two_sum(s1.hi, p2.hi);
-  const double cross = (xh[0] * yl[0] + xl[0] * yh[0]) + (xh[1] * yl[1] + xl[1] * yh[1]) + (xh[2] * yl[2] + xl[2] * yh[2]);
-  const double low = ((p0.lo + p1.lo) + (p2.lo + s1.lo)) + (s2.lo + cross);
-  const double S = (std::fabs(p0.hi) + std::fabs(p1.hi)) + std::fabs(p2.hi);
-  return {two_sum(s2.hi, low), 48 * u * u * S + first_look_tiny};
-}
-
-// The closest point's offset from the centre, v = x - c, in units of 2^scale: pairs with a
-// bound on each component's error.
-struct FirstLookPoint {
-  double h[3], l[3], err[3];
-  int scale = 0;
-  int vertex = -1;  // the closest point is this input vertex (v exact)
-  int edge = -1;    // ... on the edge from vertex edge to the next
-  // in the face region, v's direction: sign * n, n = nh + nl within nerr (sign 0 elsewhere);
-  // n / |n| does not carry the error of the factor s / n.n
-  int sign = 0;
-  double nh[3], nl[3], nerr[3];
-  Pair<double> nn;  // |n~|^2 (norm2_dw)
-};
+// ---- The first look at double (item F of the header; first_look.hpp) -----------------------
 
 // Item F, steps 1-3: the region certified and v there; false where a test cannot tell.
 template <class Mul>
@@ -310,21 +273,9 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
       return true;
     }
     if (certain_pos(al[k], Eal[k]) && certain_neg(be[k], Ebe[k]) && certain_neg(q[k], Eq[k])) {  // edge k
-      // 3. v = P_k + t e_k, t = alpha / (e.e) from double words
-      WordDot a = dot_words<Mul>(Ph[k], Pl[k], Eh[k], El[k]), d = dot_words<Mul>(Eh[k], El[k], Eh[k], El[k]);
-      a.v = {-a.v.hi, -a.v.lo};
-      const double den = d.v.hi * (1 - 2 * u) - d.err;
-      if (!(den > 0)) return false;
-      const Pair<double> tt = div_pair<Mul>(a.v, d.v);
-      const double at = std::fabs(tt.hi) * (1 + u);
-      const double Et = ((a.err + at * d.err) / den + 8 * u * u * at) * grow;
-      for (int i = 0; i < 3; ++i) {
-        const Pair<double> te = mul_pair<Mul>(tt, Pair<double>{Eh[k][i], El[k][i]});
-        const Pair<double> s = two_sum(Ph[k][i], te.hi);
-        const Pair<double> v = two_sum(s.hi, double(s.lo + double(Pl[k][i] + te.lo)));
-        out.h[i] = v.hi, out.l[i] = v.lo;
-        out.err[i] = (Et * std::fabs(Eh[k][i]) + 10 * u * u * (std::fabs(Ph[k][i]) + std::fabs(te.hi))) * grow + tiny;
-      }
+      // 3. v = P_k + t e_k, t = alpha / (e.e) (first_look.hpp, first_look_edge)
+      static constexpr double exact[3] = {0, 0, 0};
+      if (!first_look_edge<Mul>(Ph[k], Pl[k], exact, Eh[k], El[k], out)) return false;
       out.edge = k;
       return true;
     }
@@ -343,149 +294,30 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
     nh[i] = n.hi, nl[i] = n.lo;
     En[i] = 32 * u * u * (std::fabs(a.hi) + std::fabs(b.hi)) + tiny;
   }
-  const WordDot s = dot_words<Mul>(Ph[0], Pl[0], nh, nl);
-  const double Es =
-      (s.err + (1 + 2 * u) * ((std::fabs(Ph[0][0]) * En[0] + std::fabs(Ph[0][1]) * En[1]) + std::fabs(Ph[0][2]) * En[2])) * grow;
-  const Pair<double> nn = norm2_dw<Mul>(nh, nl);
-  double Enn = 28 * u * u * nn.hi;
-  for (int i = 0; i < 3; ++i) Enn += (2 * std::fabs(nh[i]) * (1 + u) + En[i]) * En[i];
-  Enn = Enn * grow + tiny;
-  const double den = nn.hi * (1 - 2 * u) - Enn;
-  if (!(den > 0)) return false;
-  if (s.v.hi > Es * (1 + 2 * u)) out.sign = 1;
-  if (s.v.hi < -Es * (1 + 2 * u)) out.sign = -1;
-  for (int i = 0; i < 3; ++i) out.nh[i] = nh[i], out.nl[i] = nl[i], out.nerr[i] = En[i];
-  out.nn = nn;
-  const Pair<double> kk = div_pair<Mul>(s.v, nn);
-  const double ak = std::fabs(kk.hi) * (1 + u);
-  const double Ek = ((Es + ak * Enn) / den + 8 * u * u * ak) * grow;
-  for (int i = 0; i < 3; ++i) {
-    const Pair<double> v = mul_pair<Mul>(Pair<double>{nh[i], nl[i]}, kk);
-    out.h[i] = v.hi, out.l[i] = v.lo;
-    out.err[i] = (5 * u * u * std::fabs(nh[i]) * ak + ak * En[i] + (std::fabs(nh[i]) * (1 + u) + En[i]) * Ek) * grow + tiny;
-  }
-  return true;
+  static constexpr double exact[3] = {0, 0, 0};
+  return first_look_face<Mul>(Ph[0], Pl[0], exact, nh, nl, En, out);
 }
-
-// Item F, steps 4-5: the values from v where its bounds certify them within an ulp; which of the
-// asked values it set (want_distance | want_depth together, want_witnesses, want_closest).
-// cls: the classification (1 meets, 0 apart), or oracle::sphere_triangle::unknown: then g's
-// sign where its bound makes it certain, else the first stage's, and the function sets it
-// (unknown where neither tells: nothing set). key, where given and the distance and depth are
-// set: |x - c| - rho as a double word (key[0] + key[1], before its last rounding) and a bound
-// on its error (key[2]), for polygon.hpp to order a fan's triangles.
-// Correct: each value kept only where it is the truth correctly rounded (its interval, the
-// value before its last rounding and its bound, within the rounding interval of the double it
-// rounds to: oracle::Bounded2::try_rounded), for the oracle's every-output path.
+// Item F, steps 4-5 (first_look.hpp, first_look_values): the values from v where its bounds
+// certify them; which of the asked values it set. cls, key and Correct as there; the
+// classification left open by g's bound is the first stage's. A vertex of the triangle is
+// exact, and so is a coordinate that every vertex of x's edge or face shares (an axis-aligned
+// face or edge: a floor's height).
 template <class Mul, bool Correct = false>
 unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int& cls, unsigned w,
                               Proximity<double>& res, double* key = nullptr) {
-  constexpr double u = first_look_u, grow = first_look_grow;
-  constexpr int unknown = oracle::sphere_triangle::unknown;
   FirstLookPoint P;
   const bool point = first_look_point<Mul>(sp, t, P);
-  // (scaled units: v far below the inputs' size, or 0, is left to the path below)
-  const bool sized = point && std::max({std::fabs(P.h[0]), std::fabs(P.h[1]), std::fabs(P.h[2])}) >= 0x1p-400;
-  const Pair<double> len = sized ? sqrt_pair<Mul>(norm2_dw<Mul>(P.h, P.l)) : Pair<double>{0, 0};  // |v~| (1 + 18u^2)
-  const double Elen = sized ? (18 * u * u * len.hi + ((P.err[0] + P.err[1]) + P.err[2])) * grow : 0.0;
-  const double lden = len.hi * (1 - 2 * u) - Elen;
-  if (!sized || !(lden > 0)) {
-    if (cls == unknown) cls = sphere_triangle_first_stage(sp, t);
-    return 0;
-  }
-  // g = |v| - rho summed once (sphere_sphere.hpp, first_look_gap): before that rounding within
-  // Eg = Elen + 2.1u^2 (|v| + rho) of the truth, so its sign is certain where Eg (1 + 4u) < |g|
-  const double rho = Pow2<double>(P.scale)(sp.radius);
-  const Pair<double> d = two_sum(len.hi, -rho);
-  const Pair<double> gp = two_sum(d.hi, double(d.lo + len.lo));
-  const double g = gp.hi;
-  const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
-  if (cls == unknown) cls = Eg * (1 + 4 * u) < std::fabs(g) ? int(g < 0) : sphere_triangle_first_stage(sp, t);
-  if (cls == unknown) return 0;
-  // a value c + z whose last rounding gave v.hi (v the value before it, within err): kept where
-  // Correct says it is the truth rounded, else where v.hi lies within 3/4 of an ulp of the truth
-  // (err below u |v.hi| / 4 <= its ulp / 4); 2^-1070 for an underflowing low part
-  const auto kept = [](const Pair<double>& v, double err) {
-    if constexpr (Correct) {
-      double r;
-      return std::fabs(v.hi) >= 0x1p-960 && oracle::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
-             r == v.hi;
-    } else {
-      return std::isfinite(v.hi) && err + 0x1p-1070 <= 0.25 * u * std::fabs(v.hi);
+  const auto exact = [&](int i, double& x) {
+    const int a = P.vertex >= 0 ? P.vertex : P.edge >= 0 ? P.edge : 0;
+    const double same = t.vertex[a][i];
+    if (P.vertex >= 0 || (t.vertex[(a + 1) % 3][i] == same && (P.edge >= 0 || t.vertex[(a + 2) % 3][i] == same))) {
+      x = same + 0.0;  // (+0 for -0, as the exact value rounds)
+      return true;
     }
+    return false;
   };
-  const Pow2<double> up(-P.scale);
-  unsigned done = 0;
-  if (w & (want_distance | want_depth)) {
-    // the distance or the depth, where Eg is below u |g| / 16 (Correct: where |g| rounds surely)
-    const bool sure = Correct ? kept(Pair<double>{up(gp.hi), up(gp.lo)}, up(Eg)) : 16 * Eg < u * std::fabs(g);
-    if (sure && (g > 0) == (cls == 0)) {
-      const double dv = up(std::fabs(g));
-      if (w & want_distance) res.distance = g > 0 ? dv : 0.0;
-      if (w & want_depth) res.depth = g < 0 ? dv : 0.0;
-      done |= want_distance | want_depth;
-      // (the scaling exact but for an underflow, 2^-1074 at most)
-      if (key) key[0] = up(gp.hi), key[1] = up(gp.lo), key[2] = up(Eg * grow) + 0x1p-1070;
-    }
-  }
-  if (w & want_witnesses) {
-    // the sphere's witness c + rho v / |v| (sphere_sphere.hpp, along_dw: before its rounding
-    // within u^2 |value| + 3u^2 rho |n_i| of c + rho n~_i); in the face region v / |v| is
-    // sign(s) n / |n|
-    const bool face = P.sign != 0;
-    const double *dh = face ? P.nh : P.h, *dl = face ? P.nl : P.l, *de = face ? P.nerr : P.err;
-    Pair<double> dlen = len;
-    double Edlen = Elen, dden = lden;
-    if (face) {
-      dlen = sqrt_pair<Mul>(P.nn);
-      Edlen = (18 * u * u * dlen.hi + ((P.nerr[0] + P.nerr[1]) + P.nerr[2])) * grow;
-      dden = dlen.hi * (1 - 2 * u) - Edlen;
-    }
-    const double rho = P.sign < 0 ? -sp.radius : sp.radius;
-    bool ok = dden > 0;
-    const Pair<double> inv = recip_pair<Mul>(dlen);  // 10u^2
-    const double rden = 1 / dden;  // (its rounding and the product's within grow)
-    for (int i = 0; i < 3 && ok; ++i) {
-      const Pair<double> n = mul_pair<Mul>(Pair<double>{dh[i], dl[i]}, inv);  // + 5u^2
-      const double an = std::fabs(n.hi) * (1 + u);
-      const double En = ((de[i] + an * Edlen) * rden + 16 * u * u * an) * grow;
-      // (along_dw, its last sum kept as a pair)
-      const Pair<double> p = two_prod(rho, n.hi);
-      const Pair<double> c = two_sum(sp.center[i], p.hi);
-      const Pair<double> r = two_sum(c.hi, double(c.lo + double(p.lo + rho * n.lo)));
-      ok = kept(r, (sp.radius * En + 4 * u * u * (std::fabs(r.hi) + sp.radius * an)) * grow);
-      res.on_a[i] = r.hi;
-    }
-    if (ok) done |= want_witnesses;
-  }
-  if (w & (want_witnesses | want_closest)) {
-    // the triangle's point x = c + v 2^scale (plus_dw: before its rounding within
-    // u^2 (|x_i| + |v_i|) of c + v~); a vertex exactly
-    Vec3<double> x;
-    bool ok = true;
-    for (int i = 0; i < 3 && ok; ++i) {
-      // a vertex, or a coordinate that every vertex of the feature shares (an axis-aligned
-      // face or edge: a floor's height, exactly)
-      const int a = P.vertex >= 0 ? P.vertex : P.edge >= 0 ? P.edge : 0;
-      const double same = t.vertex[a][i];
-      if (P.vertex >= 0 || (t.vertex[(a + 1) % 3][i] == same && (P.edge >= 0 || t.vertex[(a + 2) % 3][i] == same))) {
-        x[i] = same + 0.0;  // (+0 for -0, as the exact value rounds)
-        continue;
-      }
-      // (plus_dw, its last sum kept as a pair)
-      const Pair<double> c = two_sum(sp.center[i], up(P.h[i]));
-      const Pair<double> r = two_sum(c.hi, double(c.lo + up(P.l[i])));
-      x[i] = r.hi;
-      ok = kept(r, (up(P.err[i]) + 2 * u * u * (std::fabs(x[i]) + up(std::fabs(P.h[i])))) * grow);
-    }
-    if (ok) {
-      if (w & want_closest) res.closest = x, done |= want_closest;
-      if (w & want_witnesses) res.on_b = x;
-    } else {
-      done &= ~want_witnesses;
-    }
-  }
-  return done;
+  return first_look_values<Mul, Correct>(sp, P, point, cls, oracle::sphere_triangle::unknown, w, res, key,
+                                         [&] { return sphere_triangle_first_stage(sp, t); }, exact);
 }
 
 // The oracle's every-output path first (fuzz/queries/sphere_triangle.hpp): every value of the
