@@ -64,6 +64,7 @@
 #include <cdref/results.hpp>
 
 #include "first_look.hpp"
+#include "rational.hpp"
 
 namespace cdref::robust::detail {
 
@@ -259,16 +260,66 @@ bool sphere_obb_exact(const Sphere<double>& sp, const OrientedBox<double>& b, co
   return false;
 }
 
+// |x - q|^2 exactly for the certified feature, q outside (for rational.hpp's sharpen_gap where the
+// double words leave the distance loose, in place of obb_xx's every feature): with x0 = c + sum over the fixed
+// axes of fix[m] h_m a_m and w = q - x0, a vertex's |w|^2, an edge's |w|^2 - (a_i . w)^2 / a_i.a_i
+// (i the free axis), a face's (n_i . w)^2 / n_i.n_i (i the fixed axis).
+inline bool sphere_obb_xx(const Sphere<double>& sp, const OrientedBox<double>& b, const ObbFeature& f, Rational& xx) {
+  RVec x0, q, a, w;
+  Rational t;
+  set_vec(x0, b.center);
+  set_vec(q, sp.center);
+  int fixed = 0, one = -1, free_axis = -1;
+  for (int m = 0; m < 3; ++m) {
+    if (f.fix[m] == 0) {
+      free_axis = m;
+      continue;
+    }
+    ++fixed, one = m;
+    set_vec(a, b.axis[m]);
+    set_rational(t, f.fix[m] * b.extent[m]);
+    for (int c = 0; c < 3; ++c) {
+      mpq_mul(a[c].q, a[c].q, t.q);
+      mpq_add(x0[c].q, x0[c].q, a[c].q);
+    }
+  }
+  sub_vec(w, q, x0);
+  if (fixed == 1) {
+    RVec aj, ak, n;
+    set_vec(aj, b.axis[(one + 1) % 3]), set_vec(ak, b.axis[(one + 2) % 3]);
+    cross_vec(n, aj, ak);
+    Rational nw, nn;
+    dot_vec(nw, n, w), dot_vec(nn, n, n);
+    mpq_mul(xx.q, nw.q, nw.q);
+    mpq_div(xx.q, xx.q, nn.q);
+    return true;
+  }
+  dot_vec(xx, w, w);
+  if (fixed == 2) {
+    Rational aw, aa;
+    set_vec(a, b.axis[free_axis]);
+    dot_vec(aw, a, w), dot_vec(aa, a, a);
+    mpq_mul(aw.q, aw.q, aw.q);
+    mpq_div(aw.q, aw.q, aa.q);
+    mpq_sub(xx.q, xx.q, aw.q);
+  }
+  return true;
+}
+
 // Items 4-5: the values where their bounds prove them (first_look.hpp, first_look_values); which
 // of the asked values it set. cls as there: inside, they meet; else g's certain sign, else
 // first_stage()'s. Correct: each value the truth correctly rounded, for the oracle.
+// (feature, certified: where given, x's feature, and whether it was certified with q outside)
 template <class Mul, bool Correct = false, class Stage>
 unsigned sphere_obb_fast(const Sphere<double>& sp, const OrientedBox<double>& b, int& cls, int unknown, unsigned w,
-                         Proximity<double>& res, Stage first_stage) {
+                         Proximity<double>& res, Stage first_stage, ObbFeature* feature = nullptr,
+                         bool* certified = nullptr) {
   FirstLookPoint P;
-  ObbFeature f;
+  ObbFeature local;
+  ObbFeature& f = feature ? *feature : local;
   const bool point = sphere_obb_point<Mul>(sp, b, P, f);
   if (point && P.inside) cls = 1;
+  if (certified) *certified = point && !P.inside;
   return first_look_values<Mul, Correct>(sp, P, point, cls, unknown, w, res, nullptr, first_stage,
                                          [&](int i, double& x) { return sphere_obb_exact<Mul>(sp, b, f, i, x); });
 }

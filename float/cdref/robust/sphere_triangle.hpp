@@ -198,9 +198,11 @@ std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, cons
 // certain, else from the first stage where it decides.
 // The distance and the depth then sharpened where the double words leave them loose
 // (rational.hpp, sharpen_gap: |x - c|^2 exactly, triangle_xx).
-template <class F>
+// xx: |x - c|^2 exactly (by default triangle_xx; the first look's certified feature gives it
+// for less: sphere_triangle_proximity).
+template <class F, class XX>
 std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
-                                                       WordValues* kept = nullptr) {
+                                                       WordValues* kept, XX xx) {
   WordValues local;
   WordValues& kv = kept ? *kept : local;
   auto r = sphere_triangle_words(s, t, w, &kv);
@@ -209,8 +211,13 @@ std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const
       r.first.intersect = f != 0;
       r.second = {f != 0, true};
     }
-  sharpen_gap(r.first, kv, s.radius, w, [&](Rational& xx) { return triangle_xx(xx, s.center, t), true; });
+  sharpen_gap(r.first, kv, s.radius, w, xx);
   return r;
+}
+template <class F>
+std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
+                                                       WordValues* kept = nullptr) {
+  return sphere_triangle_eval(s, t, w, kept, [&](Rational& xx) { return triangle_xx(xx, s.center, t), true; });
 }
 
 // ---- The first look at double (item F of the header; first_look.hpp) -----------------------
@@ -302,11 +309,15 @@ bool first_look_point(const Sphere<double>& sp, const Triangle<double>& t, First
 // classification left open by g's bound is the first stage's. A vertex of the triangle is
 // exact, and so is a coordinate that every vertex of x's edge or face shares (an axis-aligned
 // face or edge: a floor's height).
+// (feature: where given, the first look's point, its feature certified where *certified)
 template <class Mul, bool Correct = false>
 unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& t, int& cls, unsigned w,
-                              Proximity<double>& res, double* key = nullptr) {
-  FirstLookPoint P;
+                              Proximity<double>& res, double* key = nullptr, FirstLookPoint* feature = nullptr,
+                              bool* certified = nullptr) {
+  FirstLookPoint local;
+  FirstLookPoint& P = feature ? *feature : local;
   const bool point = first_look_point<Mul>(sp, t, P);
+  if (certified) *certified = point;
   const auto exact = [&](int i, double& x) {
     const int a = P.vertex >= 0 ? P.vertex : P.edge >= 0 ? P.edge : 0;
     const double same = t.vertex[a][i];
@@ -318,6 +329,25 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
   };
   return first_look_values<Mul, Correct>(sp, P, point, cls, oracle::sphere_triangle::unknown, w, res, key,
                                          [&] { return sphere_triangle_first_stage(sp, t); }, exact);
+}
+
+// |x - c|^2 exactly for the first look's certified feature: a vertex's, an edge's (segment_xx),
+// the face's ((v_0 - c) . n)^2 / n.n: a fraction of triangle_xx's work, which tries every feature.
+inline void feature_xx(const Sphere<double>& sp, const Triangle<double>& t, const FirstLookPoint& P, Rational& x) {
+  RVec c, a, b, d;
+  set_vec(c, sp.center);
+  if (P.vertex >= 0 || P.edge >= 0) {
+    set_vec(a, t.vertex[P.vertex >= 0 ? P.vertex : P.edge]);
+    if (P.edge >= 0) return set_vec(b, t.vertex[(P.edge + 1) % 3]), segment_xx(x, c, a, b);
+    return sub_vec(d, a, c), dot_vec(x, d, d);
+  }
+  RVec v1, v2, n;
+  set_vec(a, t.vertex[0]), set_vec(v1, t.vertex[1]), set_vec(v2, t.vertex[2]);
+  sub_vec(b, v1, a), sub_vec(d, v2, a), cross_vec(n, b, d), sub_vec(d, a, c);
+  Rational side, nn;
+  dot_vec(side, d, n), dot_vec(nn, n, n);
+  mpq_mul(x.q, side.q, side.q);
+  mpq_div(x.q, x.q, nn.q);
 }
 
 // The oracle's every-output path first (fuzz/queries/sphere_triangle.hpp): every value of the
@@ -339,12 +369,21 @@ Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Trian
   const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
   int cls = asked ? oracle::sphere_triangle::unknown : sphere_triangle_first_stage(s, t);
   Proximity<double> res;
-  const unsigned done = asked ? sphere_triangle_fast<Mul>(s, t, cls, w, res) : 0u;
+  FirstLookPoint P;
+  bool certified = false;
+  const unsigned done = asked ? sphere_triangle_fast<Mul>(s, t, cls, w, res, nullptr, &P, &certified) : 0u;
   if (cls != oracle::sphere_triangle::unknown && (done & asked) == asked) {
     res.intersect = cls != 0;
     return res;
   }
-  return sphere_triangle_eval(s, t, w).first;
+  // the double words, their distance or depth sharpened where loose from the certified feature's
+  // |x - c|^2 (a sphere within about 2^-44 of its radius from touching: at 2^-48 and 2^-52,
+  // 12.7 and 14.8 us a case before, with triangle_xx; README)
+  return sphere_triangle_eval(s, t, w, nullptr, [&](Rational& xx) {
+           if (certified) feature_xx(s, t, P, xx);
+           else triangle_xx(xx, s.center, t);
+           return true;
+         }).first;
 }
 
 }  // namespace detail
