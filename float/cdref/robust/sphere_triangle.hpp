@@ -27,7 +27,8 @@
 // below the radius (the double words' error is about u^2 of the triangle's size: 40 ulps at
 // worst at 2^-52 of the radius from touching), so where its enclosure is wider than u/16 of it
 // the distance or depth comes from |x - c|^2 exactly (sphere_triangle_eval, triangle_xx and
-// rational.hpp's sharpen_gap: within an ulp on every family). In the face region
+// rational.hpp's sharpen_gap: within an ulp on every family; at double, where the first look of
+// item F certified x's feature, from that feature alone: feature_xx). In the face region
 // the outputs come from the triangle's normal (proximity_by_face below): the sphere's witness
 // c + rho (x - c) / |x - c| took its direction from x - c, which cancels when the centre lies
 // near the plane (2.3e4 ulps on the degenerate family; now every output within 1 ulp there).
