@@ -18,8 +18,8 @@
 //     depth k (roundings along any path, an input's rounding to the high part of its pair
 //     included) errs by at most gamma_k times that sum (Higham, Accuracy and Stability, 3.1);
 //     no quantity here is deeper than 10, so 16u of the computed sum (which is within gamma_k
-//     of the exact one) bounds it, plus tiny = 2^-800 for roundings below the normal range. A
-//     sign is certain where the value exceeds that bound.
+//     of the exact one) bounds it, plus 2^-600 for roundings below the normal range
+//     (surely_positive). A sign is certain where the value exceeds that bound.
 //     - The outcode, as solid/obb.hpp's closest_by_outcode: o_m = +1 where U_m > H_m, -1 where
 //       U_m < -H_m, 0 where |U_m| < H_m, each certain (else the path below); delta's sign
 //       certain.
@@ -78,9 +78,11 @@ inline MagnitudeValue operator*(MagnitudeValue a, MagnitudeValue b) { return {a.
 inline MagnitudeValue operator*(double s, MagnitudeValue a) { return {s * a.v, std::fabs(s) * a.m}; }
 inline MagnitudeValue abs_of(MagnitudeValue a) { return {std::fabs(a.v), a.m}; }
 // certainly positive: the value above its bound (16u of the magnitudes, with room for the
-// bound's own rounding, plus tiny)
+// bound's own rounding, plus 2^-600 for roundings below the normal range: each errs by at most
+// 2^-1074, and what multiplies it afterwards is at most 2^400, degree 10 in axes below 2^20 and
+// 2 in lengths below 2^100; a few hundred of them stay far below 2^-600)
 inline bool surely_positive(MagnitudeValue a) {
-  return a.v > 16 * first_look_u * a.m * first_look_grow + first_look_tiny;
+  return a.v > 16 * first_look_u * a.m * first_look_grow + 0x1p-600;
 }
 inline MagnitudeValue dot_of(const MagnitudeValue (&x)[3], const MagnitudeValue (&y)[3]) {
   return (x[0] * y[0] + x[1] * y[1]) + x[2] * y[2];
