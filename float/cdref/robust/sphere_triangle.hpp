@@ -363,6 +363,16 @@ bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t,
   return true;
 }
 
+// The first look's classification alone: g's certain sign, else unknown (decide()'s last step).
+inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t) {
+  return with_products([&](auto mul) {
+    int cls = oracle::sphere_triangle::unknown;
+    Proximity<double> r;
+    sphere_triangle_fast<decltype(mul)>(s, t, cls, 0u, r);
+    return cls;
+  });
+}
+
 // proximity() at double: the first look (item F), its classification from g or the first stage;
 // else the double words. The classification alone: the first stage.
 template <class Mul>
@@ -380,11 +390,18 @@ Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Trian
   // the double words, their distance or depth sharpened where loose from the certified feature's
   // |x - c|^2 (a sphere within about 2^-44 of its radius from touching: at 2^-48 and 2^-52,
   // 12.7 and 14.8 us a case before, with triangle_xx; README)
-  return sphere_triangle_eval(s, t, w, nullptr, [&](Rational& xx) {
-           if (certified) feature_xx(s, t, P, xx);
-           else triangle_xx(xx, s.center, t);
-           return true;
-         }).first;
+  auto r = sphere_triangle_eval(s, t, w, nullptr, [&](Rational& xx) {
+    if (certified) feature_xx(s, t, P, xx);
+    else triangle_xx(xx, s.center, t);
+    return true;
+  });
+  // where neither the first stage nor the double words are certain, the first look's certain
+  // classification (decide() takes it too: both classify alike)
+  if (!r.second.certain) {
+    if (!asked) cls = sphere_triangle_first_look_class(s, t);
+    if (cls != oracle::sphere_triangle::unknown) r.first.intersect = cls != 0;
+  }
+  return r.first;
 }
 
 }  // namespace detail
@@ -413,7 +430,12 @@ Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
   check(t, "triangle");
   if (const int f = detail::sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown)
     return {f != 0, true};
-  return detail::sphere_triangle_words(s, t, want_proximity).second;
+  const Decision d = detail::sphere_triangle_words(s, t, want_proximity).second;
+  if constexpr (std::is_same_v<F, double>)
+    if (!d.certain)  // (the first look's g where its sign is certain, as proximity() takes it)
+      if (const int c = detail::sphere_triangle_first_look_class(s, t); c != oracle::sphere_triangle::unknown)
+        return {c != 0, true};
+  return d;
 }
 template <class F>
 bool intersect(const Sphere<F>& s, const Triangle<F>& t) {
