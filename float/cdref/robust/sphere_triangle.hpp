@@ -15,7 +15,10 @@
 // |x - c|^2 with rho^2; each is certain when its double word's sign is. The scaling keeps the
 // degree-4 terms in range where the book in double overflows or underflows (coordinates near
 // 2^500 or 2^-500). decide() is certain when the double-word evaluation of intersect
-// completed: then the classification equals the book's at an exact type. Otherwise the book
+// completed: then the classification equals the book's at an exact type; at double, where it
+// did not, the first look's g (item F) where its sign is certain (proximity() takes the same:
+// on a triangle with a vertex at 2^210 and a subnormal coordinate the words were uncertain and
+// wrong while g was certain, and the two disagreed). Otherwise the book
 // runs in F and the answer is uncertain (a centre on a region boundary, a tangent sphere, a
 // triangle whose area is too small to call). proximity() takes its values from the double
 // words rounded to F when its own evaluation completes, else from the double words with
