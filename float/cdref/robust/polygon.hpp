@@ -170,12 +170,7 @@ Proximity<F> proximity(const Sphere<F>& s0, const Polygon<F>& p0, unsigned w = w
     detail::WordValues kept;
     const auto e = detail::sphere_triangle_eval(s, p.triangle(k), want_proximity, &kept);
     const Proximity<F>& r = e.first;
-    Decision d = e.second;
-    if constexpr (std::is_same_v<F, double>)  // (the triangle's decide() takes its first look's last)
-      if (!d.certain)
-        if (const int c = detail::sphere_triangle_first_look_class(s, p.triangle(k));
-            c != oracle::sphere_triangle::unknown)
-          d = {c != 0, true};
+    const Decision& d = e.second;
     yes = yes || (d.value && d.certain);
     u.value = u.value || d.value;
     u.certain = u.certain && d.certain;

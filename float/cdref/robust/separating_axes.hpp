@@ -135,13 +135,25 @@ int first_stage(const A& a, const B& b, unsigned* open = nullptr) {
 // on the near-touching family at 2^-52, whose rotations include the signed permutations, the
 // aligned boxes' decision took 838-851 ns a case before sphere-box's decision came first, 199 ns
 // after: standalone loop, min of 15, 2026-11-29, README.)
+inline int sphere_obb_certificates(const Sphere<double>& s, const OrientedBox<double>& b) {
+  if (const int f = oracle::sphere_obb::filter(s, b); f != oracle::sat::unknown) return f;
+  if (Box<double> box; oracle::sphere_obb::as_axis_aligned(b, box))
+    if (const Decision d = decide(s, box); d.certain) return int(d.value);
+  return oracle::sat_words::decide(s, b);
+}
+// Last, the first look's classification (sphere_obb.hpp: the centre certainly inside, or g =
+// |x - q| - rho of certain sign), so that decide() and proximity() classify alike where the
+// double words cannot tell and it can.
 template <class F>
 int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
   if constexpr (std::is_same_v<F, double>) {
-    if (const int f = oracle::sphere_obb::filter(s, b); f != oracle::sat::unknown) return f;
-    if (Box<double> box; oracle::sphere_obb::as_axis_aligned(b, box))
-      if (const Decision d = decide(s, box); d.certain) return int(d.value);
-    return oracle::sat_words::decide(s, b);
+    if (const int f = sphere_obb_certificates(s, b); f != oracle::sat::unknown) return f;
+    return with_products([&](auto mul) {
+      int cls = oracle::sat::unknown;
+      Proximity<double> r;
+      sphere_obb_fast<decltype(mul)>(s, b, cls, oracle::sat::unknown, 0u, r, [] { return oracle::sat::unknown; });
+      return cls;
+    });
   } else {
     return oracle::sat::unknown;
   }
@@ -577,16 +589,15 @@ CDREF_ROBUST_OBB_CAST(Ray, "ray")
 namespace detail {
 // proximity() at double, every value asked: the first look (sphere_obb.hpp), its classification
 // from g or the first stage; true where it proved every value asked.
-// (feature, certified: as sphere_obb_fast's; cls_out: its classification, certain, or unknown)
+// (feature, certified: as sphere_obb_fast's)
 template <class Mul, bool Correct = false>
 bool sphere_obb_first_look(const Sphere<double>& s, const OrientedBox<double>& b, unsigned w, Proximity<double>& res,
-                           ObbFeature* feature = nullptr, bool* certified = nullptr, int* cls_out = nullptr) {
+                           ObbFeature* feature = nullptr, bool* certified = nullptr) {
   const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
+  if (!asked) return false;
   int cls = oracle::sat::unknown;
   const unsigned done = sphere_obb_fast<Mul, Correct>(s, b, cls, oracle::sat::unknown, w, res,
-                                                      [&] { return first_stage(s, b); }, feature, certified);
-  if (cls_out) *cls_out = cls;
-  if (!asked) return false;
+                                                      [&] { return sphere_obb_certificates(s, b); }, feature, certified);
   if (cls == oracle::sat::unknown || (done & asked) != asked) return false;
   res.intersect = cls != 0;
   return true;
@@ -599,20 +610,17 @@ Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w =
   check(b, "oriented box");
   detail::ObbFeature feature;
   bool certified = false;  // (the first look's feature, q outside)
-  int cls = oracle::sat::unknown;  // (its classification)
   if constexpr (std::is_same_v<F, double>) {
     Proximity<double> res;
     if (with_products([&](auto mul) {
-          return detail::sphere_obb_first_look<decltype(mul)>(s, b, w, res, &feature, &certified, &cls);
+          return detail::sphere_obb_first_look<decltype(mul)>(s, b, w, res, &feature, &certified);
         }))
       return res;
   }
   detail::WordValues kv;
   auto [p, d] = with_fma([&] { return detail::proximity_eval(s, b, w, &kv); });
-  if (!d.certain) {  // (where the double words are certain they are exact already)
+  if (!d.certain)  // (where the double words are certain they are exact already)
     if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
-    else if (cls != oracle::sat::unknown) p.intersect = cls != 0;  // (the first look's, as decide() takes it)
-  }
   // the distance and the depth sharpened where the double words leave them loose (rational.hpp),
   // from the first look's certified feature where it has one, else from every feature (obb_xx:
   // at 2^-52 of the radius from touching 75.7 us a case, 6.1 us from the feature; README)
@@ -637,17 +645,7 @@ Decision decide(const Sphere<F>& s, const OrientedBox<F>& b) {
   check(s, "sphere");
   check(b, "oriented box");
   if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) return {f != 0, true};
-  const Decision d = detail::proximity_eval(s, b, want_proximity).second;
-  if constexpr (std::is_same_v<F, double>)
-    if (!d.certain) {  // (the first look's certain classification, as proximity() takes it)
-      int cls = oracle::sat::unknown;
-      Proximity<double> res;
-      with_products([&](auto mul) {
-        return detail::sphere_obb_first_look<decltype(mul)>(s, b, 0u, res, nullptr, nullptr, &cls);
-      });
-      if (cls != oracle::sat::unknown) return {cls != 0, true};
-    }
-  return d;
+  return detail::proximity_eval(s, b, want_proximity).second;
 }
 template <class F>
 bool intersect(const Sphere<F>& s, const OrientedBox<F>& b) {

@@ -15,10 +15,8 @@
 // |x - c|^2 with rho^2; each is certain when its double word's sign is. The scaling keeps the
 // degree-4 terms in range where the book in double overflows or underflows (coordinates near
 // 2^500 or 2^-500). decide() is certain when the double-word evaluation of intersect
-// completed: then the classification equals the book's at an exact type; at double, where it
-// did not, the first look's g (item F) where its sign is certain (proximity() takes the same:
-// on a triangle with a vertex at 2^210 and a subnormal coordinate the words were uncertain and
-// wrong while g was certain, and the two disagreed). Otherwise the book
+// completed: then the classification equals the book's at an exact type (at double the first
+// stage comes first, the first look's g its last step: sphere_triangle_first_stage). Otherwise the book
 // runs in F and the answer is uncertain (a centre on a region boundary, a tangent sphere, a
 // triangle whose area is too small to call). proximity() takes its values from the double
 // words rounded to F when its own evaluation completes, else from the double words with
@@ -86,17 +84,25 @@ namespace cdref::robust {
 
 namespace detail {
 
-// At double, the oracle's first stage (oracle/triangle_filter.hpp: two certificates from one
-// point of the triangle) before the double words: 1 (they meet), 0 (disjoint) or 2 (undecided;
-// always at float and long double). Where it decides, its answer is the book's at an exact
-// type, so every entry point takes it (decide(), the predicate and proximity's classification).
+// The oracle's first stage (oracle/triangle_filter.hpp: two certificates from one point of the
+// triangle, static bounds), then the same two certificates on double words
+// (oracle/triangle_words.hpp): 1 (they meet), 0 (disjoint) or 2 (undecided).
+inline int sphere_triangle_certificates(const Sphere<double>& s, const Triangle<double>& t) {
+  const int f = oracle::sphere_triangle::filter(s, t);
+  return f != oracle::sphere_triangle::unknown ? f : oracle::sphere_triangle::certificates_on_words(s, t);
+}
+inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t);
+// At double, before the double words: the certificates, then the first look's g where its sign
+// is certain (item F; on a triangle with a vertex at 2^210 and a subnormal coordinate the double
+// words were uncertain and wrong where g was certain); 2 (undecided) at float and long double.
+// Where it decides, its answer is the book's at an exact type, so every entry point takes it
+// (decide(), the predicate and proximity's classification, polygon.hpp's union), and they
+// classify alike.
 template <class F>
 int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
   if constexpr (std::is_same_v<F, double>) {
-    // (where the static bounds cannot tell, the same two certificates on double words:
-    // oracle/triangle_words.hpp)
-    const int f = oracle::sphere_triangle::filter(s, t);
-    return f != oracle::sphere_triangle::unknown ? f : oracle::sphere_triangle::certificates_on_words(s, t);
+    const int f = sphere_triangle_certificates(s, t);
+    return f != oracle::sphere_triangle::unknown ? f : sphere_triangle_first_look_class(s, t);
   } else {
     return oracle::sphere_triangle::unknown;
   }
@@ -332,7 +338,7 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     return false;
   };
   return first_look_values<Mul, Correct>(sp, P, point, cls, oracle::sphere_triangle::unknown, w, res, key,
-                                         [&] { return sphere_triangle_first_stage(sp, t); }, exact);
+                                         [&] { return sphere_triangle_certificates(sp, t); }, exact);
 }
 
 // |x - c|^2 exactly for the first look's certified feature: a vertex's, an edge's (segment_xx),
@@ -367,11 +373,16 @@ bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t,
 }
 
 // The first look's classification alone: g's certain sign, else unknown (decide()'s last step).
+// (the certificates having left it: no other stage behind g)
 inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t) {
   return with_products([&](auto mul) {
     int cls = oracle::sphere_triangle::unknown;
+    FirstLookPoint P;
+    const bool point = first_look_point<decltype(mul)>(s, t, P);
     Proximity<double> r;
-    sphere_triangle_fast<decltype(mul)>(s, t, cls, 0u, r);
+    first_look_values<decltype(mul), false>(s, P, point, cls, oracle::sphere_triangle::unknown, 0u, r, nullptr,
+                                            [] { return oracle::sphere_triangle::unknown; },
+                                            [](int, double&) { return false; });
     return cls;
   });
 }
@@ -393,18 +404,11 @@ Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Trian
   // the double words, their distance or depth sharpened where loose from the certified feature's
   // |x - c|^2 (a sphere within about 2^-44 of its radius from touching: at 2^-48 and 2^-52,
   // 12.7 and 14.8 us a case before, with triangle_xx; README)
-  auto r = sphere_triangle_eval(s, t, w, nullptr, [&](Rational& xx) {
-    if (certified) feature_xx(s, t, P, xx);
-    else triangle_xx(xx, s.center, t);
-    return true;
-  });
-  // where neither the first stage nor the double words are certain, the first look's certain
-  // classification (decide() takes it too: both classify alike)
-  if (!r.second.certain) {
-    if (!asked) cls = sphere_triangle_first_look_class(s, t);
-    if (cls != oracle::sphere_triangle::unknown) r.first.intersect = cls != 0;
-  }
-  return r.first;
+  return sphere_triangle_eval(s, t, w, nullptr, [&](Rational& xx) {
+           if (certified) feature_xx(s, t, P, xx);
+           else triangle_xx(xx, s.center, t);
+           return true;
+         }).first;
 }
 
 }  // namespace detail
@@ -433,12 +437,7 @@ Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
   check(t, "triangle");
   if (const int f = detail::sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown)
     return {f != 0, true};
-  const Decision d = detail::sphere_triangle_words(s, t, want_proximity).second;
-  if constexpr (std::is_same_v<F, double>)
-    if (!d.certain)  // (the first look's g where its sign is certain, as proximity() takes it)
-      if (const int c = detail::sphere_triangle_first_look_class(s, t); c != oracle::sphere_triangle::unknown)
-        return {c != 0, true};
-  return d;
+  return detail::sphere_triangle_words(s, t, want_proximity).second;
 }
 template <class F>
 bool intersect(const Sphere<F>& s, const Triangle<F>& t) {
