@@ -300,11 +300,11 @@ std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
   else {
     if (stage != 1) return std::nullopt;
     std::optional<double> v;
-    std::optional<oracle::enter_detail::EnteringFace> face;  // an oriented box's entering face, from its filter
+    std::optional<oracle::word_bounds::ObbFace> face;  // an oriented box's entering face, from its filter
     if constexpr (std::is_same_v<Solid, OrientedBox<double>>) {
       oracle::staged::ObbFilter filter = oracle::staged::obb_filter(x, y);
       oracle::staged::filter(filter);
-      face = ed::entering_face(filter, det3_sign(y.axis[0], y.axis[1], y.axis[2]));
+      face = ed::crossed_face(filter, det3_sign(y.axis[0], y.axis[1], y.axis[2]), false);
       v = ed::obb_double<ed::SplitProduct>(x, y, face);
       // every face, without the filter's pick: the same value wherever both answer
       const std::optional<double> all = ed::obb_double<ed::SplitProduct>(x, y, std::nullopt);
@@ -453,7 +453,7 @@ TEST_CASE("oracle::enter on an oriented box: the entering face alone outside in_
       if (!truth.hit) return;
       oracle::staged::ObbFilter f = oracle::staged::obb_filter(shot, b);
       oracle::staged::filter(f);
-      const auto face = ed::entering_face(f, det3_sign(b.axis[0], b.axis[1], b.axis[2]));
+      const auto face = ed::crossed_face(f, det3_sign(b.axis[0], b.axis[1], b.axis[2]), false);
       if (!face || face->plane < 0) return;
       ++tried;
       outside += !robust::in_certified_range(shot, b);
@@ -1849,7 +1849,7 @@ int first_look_graded(const Inputs& in, const std::string& where) {
   int c = oracle::sphere_triangle::unknown;
   const unsigned done = robust::detail::sphere_triangle_fast<robust::SplitProduct>(s, t, c, want_proximity, r);
   if (c == oracle::sphere_triangle::unknown) return 0;
-  const Answer truth = oracle_truth(q, in, 53);
+  const Answer truth = fuzz::truth(q, in, 53);
   REQUIRE(truth.cls == (c != 0));
   if (!done) return 0;
   int n = 0;
@@ -1980,7 +1980,7 @@ TEST_CASE("sphere-triangle's first look for the oracle: every value it answers t
       continue;
     }
     ++answered;
-    const Answer truth = oracle_truth(q, in, 53);
+    const Answer truth = fuzz::truth(q, in, 53);
     INFO("trial " << trial);
     REQUIRE(truth.cls == r.intersect);
     CHECK(double(truth.v[0]) == r.distance);
@@ -2044,7 +2044,7 @@ bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rou
       robust::detail::sphere_obb_fast<robust::SplitProduct, true>(s, b, cc, oracle::sat::unknown, want_proximity, rc, stage);
   if (rounded_all) *rounded_all = false;
   if (c == oracle::sat::unknown) return false;
-  const Answer truth = oracle_truth(q, in, 53);
+  const Answer truth = fuzz::truth(q, in, 53);
   REQUIRE(truth.cls == (c != 0));
   REQUIRE(cc == c);
   if (done & want_distance) {
@@ -2173,6 +2173,125 @@ TEST_CASE("sphere-obb's first look: every value it answers within an ulp of the 
   WARN("spheres touching a box: classified " << classified << " of " << touching);
 }
 
+namespace {
+// The oriented-box casts' first look (robust/obb_cast.hpp) on one case, against the exact truth
+// (fuzz::truth: the solid's cast at Gmpq, each value rounded once): where it answers, its
+// classification is the truth's and every value within an ulp of the truth; in the oracle's mode
+// (Correct) every value the truth rounded, bit for bit. Returns whether it answered (robust mode);
+// *kept_all: whether the oracle's mode did.
+template <class Spec>
+bool obb_cast_first_look_graded(const Inputs& in, const std::string& where, bool* kept_all = nullptr) {
+  const Query q = query_by_name(Spec::name);
+  const auto [a, b] = Spec::template make<double>(in);
+  INFO(where);
+  const int det = det3_sign(b.axis[0], b.axis[1], b.axis[2]);
+  Cast<double> r, rc;
+  const bool done = robust::detail::obb_cast_first_look<robust::SplitProduct, false>(a, b, det, want_cast, r);
+  const bool kept = robust::detail::obb_cast_first_look<robust::SplitProduct, true>(a, b, det, want_cast, rc);
+  if (kept_all) *kept_all = kept;
+  if (!done && !kept) return false;
+  const Answer truth = fuzz::truth(q, in, 53);
+  for (const bool correct : {false, true}) {
+    if (!(correct ? kept : done)) continue;
+    const Cast<double>& c = correct ? rc : r;
+    INFO((correct ? "the oracle's mode" : "the robust mode"));
+    REQUIRE(c.hit == truth.cls);
+    if (!c.hit) continue;
+    const double got[8] = {c.lambda_enter, c.lambda_exit, c.point[0],  c.point[1],
+                           c.point[2],     c.normal[0],   c.normal[1], c.normal[2]};
+    for (int j = 0; j < 8; ++j) {
+      INFO("value " << j << ": " << hexfloat(got[j]) << " against " << hexfloat(truth.v[j]));
+      if (correct)
+        CHECK(got[j] == double(truth.v[j]));
+      else
+        CHECK(ulp_distance(got[j], truth.v[j], 53) <= 1u);
+    }
+  }
+  return done;
+}
+}  // namespace
+
+TEST_CASE("the oriented-box casts' first look: every value it answers within an ulp of the truth (the oracle's "
+          "mode: the truth rounded), on every family and through edges and corners",
+          "[oracle-classify][sat][robust]") {
+  const auto families_of = [](auto spec) {
+    using Spec = decltype(spec);
+    const Query q = query_by_name(Spec::name);
+    std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
+    std::map<std::string, int> rounded;                    // family: answered in the oracle's mode
+    for (const Family& f : families(q))
+      for (const int k : f.scales)
+        for (std::uint64_t i = 0; i < 300; ++i) {
+          const Inputs in = make_case(31, q, f, k, i);
+          const auto [a, b] = Spec::template make<double>(in);
+          try {
+            check(a, "shot");
+            check(b, "oriented box");
+          } catch (const cdref::invalid_input&) {
+            continue;
+          }
+          bool kept = false;
+          answered[f.name].first +=
+              obb_cast_first_look_graded<Spec>(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &kept);
+          ++answered[f.name].second;
+          rounded[f.name] += kept;
+        }
+    for (const auto& [name, c] : answered)
+      WARN(Spec::name << " " << name << ": the first look answered " << c.first << " of " << c.second
+                      << ", the oracle's mode " << rounded[name]);
+    CHECK(answered["uniform"].first * 100 >= answered["uniform"].second * 99);
+    CHECK(answered["long-range"].first * 100 >= answered["long-range"].second * 99);
+  };
+  families_of(queries::ObbCast<false>{});
+  families_of(queries::ObbCast<true>{});
+  // Shots through an edge or a corner of a rotated box, give or take e (0, or +-2^-20 to 2^-60
+  // of the box's size), a third of the boxes sheared and a fifth axis-aligned (exact zeros in the
+  // normals and the points): two faces entered (or left) at nearly the same parameter, where a
+  // bound too small would take the wrong face.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int tried = 0, answered = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    double qw = U(rng), qx = U(rng), qy = U(rng), qz = U(rng);
+    const double qn = std::sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
+    qw /= qn, qx /= qn, qy /= qn, qz /= qn;
+    Vec3<double> a0(1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qw * qz), 2 * (qx * qz - qw * qy));
+    Vec3<double> a1(2 * (qx * qy - qw * qz), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz + qw * qx));
+    Vec3<double> a2(2 * (qx * qz + qw * qy), 2 * (qy * qz - qw * qx), 1 - 2 * (qx * qx + qy * qy));
+    if (trial % 5 == 4) {
+      a0 = Vec3<double>(trial % 2 ? -1 : 1, 0, 0), a1 = Vec3<double>(0, 1, 0), a2 = Vec3<double>(0, 0, trial % 3 ? 1 : -1);
+    } else if (trial % 3 == 1) {
+      a1 = a1 + 0.8 * U(rng) * a0;
+      a2 = a2 + 0.8 * U(rng) * a1;
+    }
+    const Vec3<double> c(U(rng), U(rng), U(rng)), h(0.5 + 0.25 * U(rng), 0.5 + 0.25 * U(rng), 0.5 + 0.25 * U(rng));
+    const double e = trial % 7 == 0 ? 0.0 : (trial % 2 ? 1 : -1) * std::ldexp(1.0, -20 - trial % 41);
+    // the aim, in the box's coordinates: an edge (two coordinates on a face, give or take e) or a
+    // corner (three)
+    Vec3<double> uu(0.8 * h[0] * U(rng), 0.8 * h[1] * U(rng), 0.8 * h[2] * U(rng));
+    const int m = trial % 3, corner = trial % 4 == 0;
+    for (int j = 0; j < 3; ++j)
+      if (j != m || corner) uu[j] = (U(rng) < 0 ? -1 : 1) * (h[j] + (j == (m + 1) % 3 ? e : 0.0));
+    const Vec3<double> aim = c + uu[0] * a0 + uu[1] * a1 + uu[2] * a2;
+    const Vec3<double> dir(U(rng), U(rng), U(rng));
+    const Vec3<double> src = aim - (2 + U(rng)) * dir;
+    Inputs in{};
+    for (int j = 0; j < 3; ++j) {
+      in[j] = src[j];
+      in[6 + j] = c[j], in[9 + j] = h[j];
+      in[12 + j] = a0[j], in[15 + j] = a1[j], in[18 + j] = a2[j];
+    }
+    const bool ray = trial % 2 == 0;
+    for (int j = 0; j < 3; ++j) in[3 + j] = ray ? dir[j] : (aim + (trial % 6 < 3 ? 1.5 : 0.25) * dir)[j];
+    ++tried;
+    const std::string where = "an edge or a corner, trial " + std::to_string(trial);
+    answered += ray ? obb_cast_first_look_graded<queries::ObbCast<true>>(in, where)
+                    : obb_cast_first_look_graded<queries::ObbCast<false>>(in, where);
+  }
+  WARN("through edges and corners: the first look answered " << answered << " of " << tried);
+  CHECK(answered * 4 >= tried);
+}
+
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
           "[oracle-classify][triangle][robust]") {
   // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'
@@ -2184,7 +2303,7 @@ TEST_CASE("polygon-sphere's first look: where it answers, every value within an 
     const auto [s, p] = Q::make<double>(in);
     Proximity<double> r;
     if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s, p, r)) return false;
-    const Answer truth = oracle_truth(q, in, 53);
+    const Answer truth = fuzz::truth(q, in, 53);
     INFO(where);
     REQUIRE(truth.cls == r.intersect);
     CHECK(ulp_distance(r.distance, truth.v[0], 53) <= 1u);

@@ -70,6 +70,11 @@ struct ObbCast {
   static bool oracle(const Shot<double>& a, const OrientedBox<double>& b, cdref::oracle::Stage* st) {
     return cdref::oracle::classify(a, b, st);
   }
+  // the oracle's every output at double from the robust tier's first look where it proves each
+  // rounding (robust/obb_cast.hpp)
+  static bool oracle_rounded(const Shot<double>& a, const OrientedBox<double>& b, Cast<double>& out) {
+    return cdref::robust::cast_rounded(a, b, out);
+  }
   static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const OrientedBox<double>& b, bool* exact_used) {
     return cdref::oracle::enter(a, b, exact_used);
   }

@@ -132,36 +132,18 @@
 // linear in l: plane_parameter with the offset -+H_i. Rounding is monotone, so the largest of
 // the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
 // at most 2^200 (H_i is of degree 4).
-// First, though, the entering face alone: the classification's first stage (box_cast_filter.hpp,
-// ObbFilter, kept from the classification) in double gives the outcodes with certain signs and,
-// for two entering planes a, b, the sign of lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j)
-// (on a hit each entering plane is crossed, so d has the sign of its role) against the bound it
-// derives for its pairs. Where those calls are certain, lambda_enter is that face's entry alone
-// (one_face_entry); no entering plane: the source is in the box, lambda_enter = 0. The face's
-// plane is the one through c - tau a_i (tau = h_i sign(delta) for the lower plane, -h_i
-// sign(delta) for the upper: U_i(c - tau a_i) = -tau delta = -+H_i; sign(delta) = det3_sign of
-// the axes, exact, which the input check decides: checked_orientation), so g(l) = n_i . w(l),
-// w = (s - c) + l d + tau a_i, with no H_i to form. w's components are three exact high terms
-// (s - c's pair, two exact products) and six low ones summed in double (5 additions and the
-// rounded l0 d.lo: 7u of their magnitudes); n_i is a cross product of doubles
-// (cross_of_doubles: two exact products a component, 3u of its low terms); g is one dot_words.
-// l0 = -N / D from the filter's own N = U_i(s) +- H_i and D = n_i . d (in double: l0 needs no
-// bound), and D's bound from the filter (d_bound: |D~ - D| <= eD, D_lo = |D~| - eD > 0); then
-// delta = fl(-g^ / D~) is off from -g / D by (eg + |g^| eD / |D~|) / D_lo + u |delta| (eg: g's
-// word bound and its low part), and l0 + delta as a double word (two_sum), the bound doubled,
-// Bounded2::try_rounded, as for the triangle. About 15 exact products instead of some 60 for
-// three faces. Range: every input at most 2^200 and |l0| at most 2^250 (every product below
-// 2^860, no split overflows); it needs no in_certified_range: a product or a sum that
-// underflows is off by at most 2^-1075, which the eta terms of every bound above cover (the
-// words' 4, 8 and 64 eta, the last + eta), and the filter's values hold within its own range
-// (ObbFilter::ok). Where the filter cannot tell (two faces entered at nearly the same
-// parameter, an outcode near 0) or the face's rounding is uncertain, every face as above.
+// First, though, the entering face alone (oracle/obb_face.hpp: the classification's filter,
+// kept, picks it from its certain signs, and that face's parameter alone on double words, about
+// 15 exact products instead of some 60 for three faces). Where the filter cannot tell (two
+// faces entered at nearly the same parameter, an outcode near 0) or the face's rounding is
+// uncertain, every face as above.
 //
 // Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
 #pragma once
 
 #include <cdref/oracle/bounded2.hpp>
 #include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/obb_face.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/oracle/separating_axes.hpp>
@@ -224,21 +206,6 @@ inline std::optional<double> plane_parameter(const Pair<double> (&x)[3], const P
   double v;
   if (!std::isfinite(err) || !Bounded2::within(z.hi, z.lo, err).try_rounded(v)) return std::nullopt;
   return v;
-}
-
-// s - o and the shot's direction (target - source, or the direction) as exact pairs.
-template <class Shot>
-void shot_pairs(const Shot& x, const Vec3<double>& o, Pair<double> (&so)[3], Pair<double> (&d)[3]) {
-  for (int i = 0; i < 3; ++i) {
-    so[i] = robust::two_sum(x.source[i], -o[i]);
-    if constexpr (std::is_same_v<Shot, Segment<double>>)
-      d[i] = robust::two_sum(x.target[i], -x.source[i]);
-    else
-      d[i] = {x.direction[i], 0.0};
-  }
-}
-inline double largest(const Pair<double> (&a)[3]) {
-  return std::max({std::fabs(a[0].hi), std::fabs(a[1].hi), std::fabs(a[2].hi)});
 }
 
 // The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
@@ -417,9 +384,8 @@ std::optional<double> sphere_double(const Shot& x, const Sphere<double>& sp, int
 // (the triangle's and the oriented box's double paths: below)
 template <class Mul = SplitProduct, class Shot>
 std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri);
-struct EnteringFace;
 template <class Mul = SplitProduct, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face);
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<ObbFace>& face);
 
 // The first double path of a solid, with the products of Mul (an oriented box's: with the
 // entering face, where the filter picked it).
@@ -548,52 +514,6 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
   return plane_parameter<Mul>(sv, d, n, dot_words<Mul>(sv, zero, n), Word{{0, 0}, 0});
 }
 
-// The entering face first, in double (header, "An oriented box": the filter's outcodes and its
-// comparisons of entering planes), then that face's parameter alone on double words. Only on a
-// shot that hits (the caller, obb_double, runs after the classification): the sign of each
-// entering plane's d follows from its role only there. entering_face gives the plane (2i lower,
-// 2i + 1 upper, in the filter's unturned frame), -1 for a source in the box, and nothing when
-// the filter cannot tell; with the plane, the filter's values of its offset at the source
-// (N = Y_i(s) -+ H_i), of D = n_i . d and D's bound. `f` is the classification's own filter
-// (tightened there or here where its static bounds leave a sign open).
-// `det` is the sign of det[a0 a1 a2] (checked_orientation, primitives.hpp).
-struct EnteringFace {
-  int plane;
-  double N = 0, D = 0, eD = 0;
-  int det = 0;
-};
-inline std::optional<EnteringFace> entering_face(staged::ObbFilter& f, int det) {
-  if (!f.ok) return std::nullopt;
-  for (int pass = 0; pass < 2; ++pass) {
-    int best = -1, entering = 0;
-    bool open = false;
-    for (int i = 0; i < 3 && !open; ++i) {
-      const int lo = f.src_lo(i), hi = f.src_hi(i);
-      if (lo == staged::unknown || hi == staged::unknown) {
-        open = true;
-        continue;
-      }
-      const int plane = lo < 0 ? 2 * i : hi > 0 ? 2 * i + 1 : -1;
-      if (plane < 0) continue;
-      ++entering;
-      if (best < 0) {
-        best = plane;
-        continue;
-      }
-      const int c = f.compare_entering(plane, best);
-      if (c == staged::unknown) open = true;
-      else if (c > 0) best = plane;
-    }
-    if (!open) {
-      if (entering == 0) return EnteringFace{-1};
-      const int i = best / 2;
-      return EnteringFace{best, best % 2 == 0 ? f.sL[i] : f.sU[i], f.d[i], f.d_bound(i), det};
-    }
-    if (f.tight) break;
-    f.tighten();
-  }
-  return std::nullopt;
-}
 // Face i's entry on double words (header, "An oriented box"): n_i = a_{i+1} x a_{i+2}, delta =
 // a_i . n_i (the same determinant for every i) turned so that delta > 0, H_i = delta h_i, the
 // source's coordinate U_i and its certain outcode, then the plane's parameter; 0 where the
@@ -620,61 +540,27 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
   return plane_parameter<Mul>(sc, d, n, U, lower < 0 ? H : negated(H));
 }
 
-// The entering face's parameter alone (header, "An oriented box"): the face's plane through
-// its point c -+ h_i sign(delta) a_i, g(l) = n_i . (s - c + l d + tau a_i), l0 = -N / D from
-// the filter, g(l0) on double words, the correction by the filter's D; nothing where D's sign or
+// The entering face's parameter alone (oracle/obb_face.hpp), rounded; nothing where D's sign or
 // the rounding is uncertain.
 template <class Mul>
 std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],
-                                     const OrientedBox<double>& b, const EnteringFace& e) {
-  using std::fabs;
-  const int i = e.plane / 2;
-  const double D_lo = (fabs(e.D) - e.eD) * (1 - 2 * uu);
-  if (!(D_lo > 0)) return std::nullopt;
-  const double l0 = -e.N / e.D;
-  if (!std::isfinite(l0) || fabs(l0) > 0x1p250) return std::nullopt;
-  if (e.det == 0) return std::nullopt;  // (delta = det[a0 a1 a2] != 0 once the box is checked)
-  const Vec3<double>& ai = b.axis[i];
-  const double tau = (e.plane % 2 == 0 ? e.det : -e.det) * b.extent[i];
-  Word n[3];
-  cross_of_doubles<Mul>(b.axis[(i + 1) % 3], b.axis[(i + 2) % 3], n);
-  // w = s - c + l0 d + tau a_i: three exact high terms (two exact products), six low ones in
-  // double (5 additions and l0 d.lo rounded: 7u of their magnitudes)
-  Pair<double> w[3];
-  double ew[3];
-  for (int k = 0; k < 3; ++k) {
-    const Pair<double> P = Mul::prod(l0, d[k].hi), Q = Mul::prod(tau, ai[k]);
-    const Pair<double> T1 = robust::two_sum(sc[k].hi, P.hi), T2 = robust::two_sum(T1.hi, Q.hi);
-    const double zl = l0 * d[k].lo;
-    const double lows = ((T1.lo + T2.lo) + sc[k].lo) + ((P.lo + Q.lo) + zl);
-    w[k] = robust::two_sum(T2.hi, lows);
-    ew[k] = 7 * uu * ((fabs(T1.lo) + fabs(T2.lo)) + fabs(sc[k].lo) + ((fabs(P.lo) + fabs(Q.lo)) + fabs(zl))) +
-            8 * eta;
-  }
-  const Word G = dot_words<Mul>(w, ew, n);
-  const double g = G.v.hi, eg = G.e + fabs(G.v.lo);
-  // lambda* = l0 - g_exact / D_exact; delta = fl(-g / D) is off by (eg + |g| eD / |D|) / D_lo + u |delta|
-  const double delta = -g / e.D;
-  const double err = 2 * ((eg + fabs(g) * e.eD / fabs(e.D)) / D_lo + uu * fabs(delta)) + eta;
-  const Pair<double> z = robust::two_sum(l0, delta);
+                                     const OrientedBox<double>& b, const ObbFace& e) {
+  const std::optional<FaceParameter> p = face_parameter<Mul>(sc, d, b, e);
   double v;
-  if (!std::isfinite(err) || !Bounded2::within(z.hi, z.lo, err).try_rounded(v)) return std::nullopt;
+  if (!p || !Bounded2::within(p->z.hi, p->z.lo, p->err).try_rounded(v)) return std::nullopt;
   return v;
 }
 
 // The oriented box's double path on a hit (header, "An oriented box"): the value, or nothing.
 template <class Mul, class Shot>
-std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<EnteringFace>& face) {
+std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, const std::optional<ObbFace>& face) {
   using std::fabs;
   if (face && face->plane < 0) return 0.0;  // the source in the box (the filter's certain outcodes)
   Pair<double> sc[3], d[3], a[3][3];
   shot_pairs(x, b.center, sc, d);
-  double m = std::max(largest(sc), largest(d));
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) a[k][i] = {b.axis[k][i], 0.0};
-    m = std::max({m, largest(a[k]), fabs(b.extent[k])});
-  }
-  if (!(m <= 0x1p200)) return std::nullopt;
+  if (!in_face_range(sc, d, b)) return std::nullopt;
   // most hits: the entering face picked in double, its parameter alone
   if (face)
     if (const auto v = one_face_entry<Mul>(sc, d, b, *face)) return v;
@@ -701,7 +587,7 @@ Entry obb_enter(const Shot& x, const OrientedBox<double>& b, int det, bool* exac
   staged::ObbFilter f = staged::obb_filter(x, b);
   const int r = staged::filter(f);
   const bool hit = r != staged::unknown ? r == 1 : sat::run(nullptr, x, b);
-  return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, entering_face(f, det)); });
+  return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, crossed_face(f, det, false)); });
 }
 
 }  // namespace enter_detail

@@ -134,6 +134,41 @@ bool first_look_face(const double (&Ph)[3], const double (&Pl)[3], const double 
   return true;
 }
 
+// A value whose last rounding gave v.hi (v the value before it, within err of the truth): kept
+// where Correct says it is the truth rounded, else where v.hi lies within 3/4 of an ulp of the
+// truth (err below u |v.hi| / 4 <= its ulp / 4); 2^-1070 for an underflowing low part.
+template <bool Correct>
+bool first_look_kept(const Pair<double>& v, double err) {
+  if constexpr (Correct) {
+    double r;
+    return std::fabs(v.hi) >= 0x1p-960 && oracle::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
+           r == v.hi;
+  } else {
+    return std::isfinite(v.hi) && err + 0x1p-1070 <= 0.25 * first_look_u * std::fabs(v.hi);
+  }
+}
+
+// n / |n| for n = nh + nl within ne (per component), given |n| as a pair len within Elen (e.g.
+// sqrt_pair(norm2_dw(n)): 18u^2 of it, plus the components' errors, whose l2 norm their sum
+// bounds): each component as the pair out[i] within err[i] of the exact n_i / |n|, through
+// recip_pair (10u^2) and mul_pair (5u^2), the errors of n and |n| followed through the quotient
+// by (ne_i + |n_i / |n|| Elen) / len_lo. false where len_lo = |len| - Elen is not positive.
+template <class Mul>
+bool unit_words(const double* nh, const double* nl, const double* ne, const Pair<double>& len, double Elen,
+                Pair<double> (&out)[3], double (&err)[3]) {
+  constexpr double u = first_look_u, grow = first_look_grow;
+  const double lo = len.hi * (1 - 2 * u) - Elen;
+  if (!(lo > 0)) return false;
+  const Pair<double> inv = recip_pair<Mul>(len);  // 10u^2
+  const double rlo = 1 / lo;                       // (its rounding and the product's within grow)
+  for (int i = 0; i < 3; ++i) {
+    out[i] = mul_pair<Mul>(Pair<double>{nh[i], nl[i]}, inv);  // + 5u^2
+    const double an = std::fabs(out[i].hi) * (1 + u);
+    err[i] = ((ne[i] + an * Elen) * rlo + 16 * u * u * an) * grow;
+  }
+  return true;
+}
+
 // Steps 4-5 (header): the values from v where its bounds certify them; which of the asked values
 // it set (want_distance | want_depth together, want_witnesses, want_closest). `point`: whether
 // the query's first look found v (else only the classification, from first_stage()).
@@ -169,18 +204,7 @@ unsigned first_look_values(const Sphere<double>& sp, const FirstLookPoint& P, bo
   const double Eg = (Elen + 3 * u * u * (len.hi + rho)) * grow;
   if (cls == unknown) cls = Eg * (1 + 4 * u) < std::fabs(g) ? int(g < 0) : first_stage();
   if (cls == unknown) return 0;
-  // a value c + z whose last rounding gave v.hi (v the value before it, within err): kept where
-  // Correct says it is the truth rounded, else where v.hi lies within 3/4 of an ulp of the truth
-  // (err below u |v.hi| / 4 <= its ulp / 4); 2^-1070 for an underflowing low part
-  const auto kept = [](const Pair<double>& v, double err) {
-    if constexpr (Correct) {
-      double r;
-      return std::fabs(v.hi) >= 0x1p-960 && oracle::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
-             r == v.hi;
-    } else {
-      return std::isfinite(v.hi) && err + 0x1p-1070 <= 0.25 * u * std::fabs(v.hi);
-    }
-  };
+  const auto kept = [](const Pair<double>& v, double err) { return first_look_kept<Correct>(v, err); };
   const Pow2<double> up(-P.scale);
   unsigned done = 0;
   if (w & (want_distance | want_depth)) {
@@ -202,20 +226,18 @@ unsigned first_look_values(const Sphere<double>& sp, const FirstLookPoint& P, bo
     const bool face = P.sign != 0;
     const double *dh = face ? P.nh : P.h, *dl = face ? P.nl : P.l, *de = face ? P.nerr : P.err;
     Pair<double> dlen = len;
-    double Edlen = Elen, dden = lden;
+    double Edlen = Elen;
     if (face) {
       dlen = sqrt_pair<Mul>(P.nn);
       Edlen = (18 * u * u * dlen.hi + ((P.nerr[0] + P.nerr[1]) + P.nerr[2])) * grow;
-      dden = dlen.hi * (1 - 2 * u) - Edlen;
     }
     const double rho = (P.sign < 0) != P.inside ? -sp.radius : sp.radius;
-    bool ok = dden > 0;
-    const Pair<double> inv = recip_pair<Mul>(dlen);  // 10u^2
-    const double rden = 1 / dden;  // (its rounding and the product's within grow)
+    Pair<double> unit[3];
+    double Eunit[3];
+    bool ok = unit_words<Mul>(dh, dl, de, dlen, Edlen, unit, Eunit);
     for (int i = 0; i < 3 && ok; ++i) {
-      const Pair<double> n = mul_pair<Mul>(Pair<double>{dh[i], dl[i]}, inv);  // + 5u^2
-      const double an = std::fabs(n.hi) * (1 + u);
-      const double En = ((de[i] + an * Edlen) * rden + 16 * u * u * an) * grow;
+      const Pair<double>& n = unit[i];
+      const double an = std::fabs(n.hi) * (1 + u), En = Eunit[i];
       // (along_dw, its last sum kept as a pair)
       const Pair<double> p = two_prod(rho, n.hi);
       const Pair<double> c = two_sum(sp.center[i], p.hi);

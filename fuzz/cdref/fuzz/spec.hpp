@@ -595,12 +595,17 @@ bool outputs_on_hit_alone() {
   return all;
 }
 
-// Where the spec has `oracle_rounded(a, b, proximity)` (at double: true where it proves every
-// value of the truth rounded correctly, the robust tier's first look on a sphere and a triangle
-// or a polygon), the every-output path at double takes it first; inputs it refuses go on to the
+// Where the spec has `oracle_rounded(a, b, result)` (at double: true where it proves every
+// value of the truth rounded correctly, the robust tier's first look on a sphere and a triangle,
+// a polygon or an oriented box, and on a shot and an oriented box; `result` of the robust tier's
+// type), the every-output path at double takes it first; inputs it refuses go on to the
 // formulation, which refuses them by name.
 template <class Spec>
-constexpr bool has_oracle_rounded = requires(const Inputs& in, Proximity<double>& p) {
+using RobustResult = std::decay_t<decltype(Spec::template robust<double>(
+    Spec::template make<double>(std::declval<const Inputs&>()).first,
+    Spec::template make<double>(std::declval<const Inputs&>()).second))>;
+template <class Spec>
+constexpr bool has_oracle_rounded = requires(const Inputs& in, RobustResult<Spec>& p) {
   { Spec::oracle_rounded(Spec::template make<double>(in).first, Spec::template make<double>(in).second, p) }
       -> std::same_as<bool>;
 };
@@ -608,7 +613,7 @@ template <class Spec>
 bool oracle_rounded_of(const Inputs& in, Answer& r) {
   try {
     const auto [a, b] = Spec::template make<double>(in);
-    Proximity<double> p;
+    RobustResult<Spec> p;
     if (!Spec::oracle_rounded(a, b, p)) return false;
     put<double>(r, p, true);
     r.pred = r.cls;
