@@ -2292,6 +2292,93 @@ TEST_CASE("the oriented-box casts' first look: every value it answers within an 
   CHECK(answered * 4 >= tried);
 }
 
+namespace {
+// The separating-axis queries' first look (robust/sat_first_look.hpp) on one case, against the
+// book's Theorem 3.1 on the polytopes at Gmpq (the truth of every such query): where it
+// answers, the classification and the first separating axis are the truth's, and the direction
+// within an ulp of the exact one (the oracle's mode: the exact one rounded, bit for bit).
+// Returns whether it answered; *kept_all: whether the oracle's mode did.
+template <class Spec>
+bool sat_first_look_graded(const Inputs& in, const std::string& where, bool* kept_all = nullptr) {
+  const auto [a, b] = Spec::template make<double>(in);
+  INFO(where);
+  Separation<double> r, rc;
+  const bool done = robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, r);
+  const bool kept = robust::detail::sat_first_look<robust::SplitProduct, true>(a, b, rc);
+  if (kept_all) *kept_all = kept;
+  if (!done && !kept) return false;
+  using oracle::rational_inputs::toq;
+  const auto exact = book::separate(book::polytope(toq(a)), book::polytope(toq(b)));
+  for (const bool correct : {false, true}) {
+    if (!(correct ? kept : done)) continue;
+    const Separation<double>& s = correct ? rc : r;
+    INFO((correct ? "the oracle's mode" : "the robust mode"));
+    REQUIRE(s.intersect == exact.intersect);
+    REQUIRE(s.axis == exact.axis);
+    for (int c = 0; c < 3; ++c) {
+      const double want = round_to<double>(exact.direction[c]);
+      INFO("direction " << c << ": " << hexfloat(s.direction[c]) << " against " << hexfloat(want));
+      if (correct)
+        CHECK(s.direction[c] == want);
+      else
+        CHECK(ulp_distance(s.direction[c], want, 53) <= 1u);
+    }
+  }
+  return done;
+}
+}  // namespace
+
+TEST_CASE("the separating-axis queries' first look: the classification and the first separating axis the truth's "
+          "and the direction within an ulp of it (the oracle's mode: rounded), on every family",
+          "[oracle-classify][sat][robust]") {
+  const auto families_of = [](auto spec) {
+    using Spec = decltype(spec);
+    const Query q = query_by_name(Spec::name);
+    std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
+    std::map<std::string, int> rounded, apart;             // family: answered in the oracle's mode; apart among those answered
+    for (const Family& f : families(q))
+      for (const int k : f.scales)
+        for (std::uint64_t i = 0; i < 200; ++i) {
+          const Inputs in = make_case(37, q, f, k, i);
+          const auto [a, b] = Spec::template make<double>(in);
+          try {
+            check(a, "a");
+            check(b, "b");
+          } catch (const cdref::invalid_input&) {
+            continue;
+          }
+          bool kept = false;
+          const bool done =
+              sat_first_look_graded<Spec>(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &kept);
+          answered[f.name].first += done;
+          ++answered[f.name].second;
+          rounded[f.name] += kept;
+          if (done) {
+            Separation<double> s;
+            robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
+            apart[f.name] += !s.intersect;
+          }
+        }
+    for (const auto& [name, c] : answered)
+      WARN(Spec::name << " " << name << ": the first look answered " << c.first << " of " << c.second << " ("
+                      << apart[name] << " apart), the oracle's mode " << rounded[name]);
+    CHECK(answered["uniform"].first * 100 >= answered["uniform"].second * 95);
+  };
+  families_of(queries::SegmentBox<false>{});
+  families_of(queries::SegmentBox<true>{});
+  families_of(queries::TriangleBox{});
+  families_of(queries::ShapeObb<false>{});
+  families_of(queries::ShapeObb<true>{});
+  families_of(queries::ObbObb{});
+  // A component below the double words' reach: x_1 y_2 - x_2 y_1 = (1 + 2^-54)^2 - (1 + 2^-53) =
+  // 2^-108 exactly, which the cross term's dropped product of the low parts carries alone (its
+  // double word is 0): the first look must refuse it rather than give 0.
+  const robust::detail::PairVec x{{{0.0, 0.0}, {1.0, 0x1p-54}, {1.0, 0.0}}}, y{{{0.0, 0.0}, {1.0, 0x1p-53}, {1.0, 0x1p-54}}};
+  Vec3<double> dir;
+  const bool given = robust::detail::cross_kept<robust::SplitProduct, false>(x, y, dir);
+  CHECK((!given || (dir[0] == 0x1p-108 && dir[1] == 0 && dir[2] == 0)));
+}
+
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
           "[oracle-classify][triangle][robust]") {
   // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'

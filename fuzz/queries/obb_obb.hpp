@@ -49,6 +49,11 @@ struct ObbObb {
   static auto truth(const OrientedBox<T>& a, const OrientedBox<T>& b, unsigned) { return solid::separate(a, b); }
   template <class T>
   static bool truth_pred(const OrientedBox<T>& a, const OrientedBox<T>& b) { return solid::separate(a, b).intersect; }
+  // the oracle's every output at double from the robust tier's first look where it proves the
+  // direction's rounding (robust/sat_first_look.hpp)
+  static bool oracle_rounded(const OrientedBox<double>& a, const OrientedBox<double>& b, Separation<double>& out) {
+    return cdref::robust::separate_rounded(a, b, out);
+  }
   template <class F>
   static auto robust(const OrientedBox<F>& a, const OrientedBox<F>& b) { return cdref::robust::separate(a, b); }
   template <class F>

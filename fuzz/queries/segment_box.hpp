@@ -50,6 +50,11 @@ struct SegmentBox {
   static bool bare(const Shot<T>& a, const Box<T>& b) { return cdref::book::unchecked::separate(a, b).intersect; }
   template <class T>
   static bool book_pred(const Shot<T>& a, const Box<T>& b) { return cdref::book::hit(a, b); }
+  // the oracle's every output at double from the robust tier's first look where it proves the
+  // direction's rounding (robust/sat_first_look.hpp)
+  static bool oracle_rounded(const Shot<double>& a, const Box<double>& b, Separation<double>& out) {
+    return cdref::robust::separate_rounded(a, b, out);
+  }
   template <class F>
   static auto robust(const Shot<F>& a, const Box<F>& b) { return cdref::robust::separate(a, b); }
   template <class F>

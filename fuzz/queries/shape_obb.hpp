@@ -68,6 +68,11 @@ struct ShapeObb {
   static auto truth(const Shape<T>& a, const OrientedBox<T>& b, unsigned) { return solid::separate(a, b); }
   template <class T>
   static bool truth_pred(const Shape<T>& a, const OrientedBox<T>& b) { return solid::separate(a, b).intersect; }
+  // the oracle's every output at double from the robust tier's first look where it proves the
+  // direction's rounding (robust/sat_first_look.hpp)
+  static bool oracle_rounded(const Shape<double>& a, const OrientedBox<double>& b, Separation<double>& out) {
+    return cdref::robust::separate_rounded(a, b, out);
+  }
   template <class F>
   static auto robust(const Shape<F>& a, const OrientedBox<F>& b) { return cdref::robust::separate(a, b); }
   template <class F>

@@ -48,6 +48,11 @@ struct TriangleBox {
   static bool book_pred(const Triangle<T>& a, const Box<T>& b) {
     return cdref::book::separate_polytopes(a, b, "triangle", "box").intersect;
   }
+  // the oracle's every output at double from the robust tier's first look where it proves the
+  // direction's rounding (robust/sat_first_look.hpp)
+  static bool oracle_rounded(const Triangle<double>& a, const Box<double>& b, Separation<double>& out) {
+    return cdref::robust::separate_rounded(a, b, out);
+  }
   template <class F>
   static auto robust(const Triangle<F>& a, const Box<F>& b) { return cdref::robust::separate(a, b); }
   template <class F>
