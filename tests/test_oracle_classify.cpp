@@ -2070,30 +2070,41 @@ bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rou
 }
 }  // namespace
 
+namespace {
+// Every case of every family and scale of Spec's query (n a scale, the given seed) whose inputs
+// pass the checks, as f(family name, inputs, "family/scale case i").
+template <class Spec, class Fn>
+void each_checked_case(std::uint64_t seed, std::uint64_t n, Fn f) {
+  const Query q = query_by_name(Spec::name);
+  for (const Family& fam : families(q))
+    for (const int k : fam.scales)
+      for (std::uint64_t i = 0; i < n; ++i) {
+        const Inputs in = make_case(seed, q, fam, k, i);
+        const auto [a, b] = Spec::template make<double>(in);
+        try {
+          check(a, "a");
+          check(b, "b");
+        } catch (const cdref::invalid_input&) {
+          continue;
+        }
+        f(fam.name, in, fam.name + "/" + std::to_string(k) + " case " + std::to_string(i));
+      }
+}
+}  // namespace
+
 TEST_CASE("sphere-obb's first look: every value it answers within an ulp of the truth (the oracle's mode: the truth "
           "rounded), on every family and near region boundaries",
           "[oracle-classify][sat][robust]") {
   using Spec = queries::SphereObb;
-  const Query q = query_by_name(Spec::name);
   std::map<std::string, std::pair<int, int>> answered;  // family: (every value answered, cases)
   std::map<std::string, int> rounded;                    // family: every value in the oracle's mode
-  for (const Family& f : families(q))
-    for (const int k : f.scales)
-      for (std::uint64_t i = 0; i < 300; ++i) {
-        const Inputs in = make_case(29, q, f, k, i);
-        const auto [s, b] = Spec::make<double>(in);
-        try {
-          check(s, "sphere");
-          check(b, "oriented box");
-        } catch (const cdref::invalid_input&) {
-          continue;
-        }
-        auto& [all, cases] = answered[f.name];
-        bool r = false;
-        all += obb_first_look_graded(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &r);
-        rounded[f.name] += r;
-        ++cases;
-      }
+  each_checked_case<Spec>(29, 300, [&](const std::string& fam, const Inputs& in, const std::string& where) {
+    auto& [all, cases] = answered[fam];
+    bool r = false;
+    all += obb_first_look_graded(in, where, &r);
+    rounded[fam] += r;
+    ++cases;
+  });
   for (const auto& [name, a] : answered)
     WARN(name << ": the first look answered every value on " << a.first << " of " << a.second << ", the oracle's mode on "
               << rounded[name]);
@@ -2216,26 +2227,14 @@ TEST_CASE("the oriented-box casts' first look: every value it answers within an 
           "[oracle-classify][sat][robust]") {
   const auto families_of = [](auto spec) {
     using Spec = decltype(spec);
-    const Query q = query_by_name(Spec::name);
     std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
     std::map<std::string, int> rounded;                    // family: answered in the oracle's mode
-    for (const Family& f : families(q))
-      for (const int k : f.scales)
-        for (std::uint64_t i = 0; i < 300; ++i) {
-          const Inputs in = make_case(31, q, f, k, i);
-          const auto [a, b] = Spec::template make<double>(in);
-          try {
-            check(a, "shot");
-            check(b, "oriented box");
-          } catch (const cdref::invalid_input&) {
-            continue;
-          }
-          bool kept = false;
-          answered[f.name].first +=
-              obb_cast_first_look_graded<Spec>(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &kept);
-          ++answered[f.name].second;
-          rounded[f.name] += kept;
-        }
+    each_checked_case<Spec>(31, 300, [&](const std::string& fam, const Inputs& in, const std::string& where) {
+      bool kept = false;
+      answered[fam].first += obb_cast_first_look_graded<Spec>(in, where, &kept);
+      ++answered[fam].second;
+      rounded[fam] += kept;
+    });
     for (const auto& [name, c] : answered)
       WARN(Spec::name << " " << name << ": the first look answered " << c.first << " of " << c.second
                       << ", the oracle's mode " << rounded[name]);
@@ -2333,32 +2332,21 @@ TEST_CASE("the separating-axis queries' first look: the classification and the f
           "[oracle-classify][sat][robust]") {
   const auto families_of = [](auto spec) {
     using Spec = decltype(spec);
-    const Query q = query_by_name(Spec::name);
     std::map<std::string, std::pair<int, int>> answered;  // family: (answered, cases)
     std::map<std::string, int> rounded, apart;             // family: answered in the oracle's mode; apart among those answered
-    for (const Family& f : families(q))
-      for (const int k : f.scales)
-        for (std::uint64_t i = 0; i < 200; ++i) {
-          const Inputs in = make_case(37, q, f, k, i);
-          const auto [a, b] = Spec::template make<double>(in);
-          try {
-            check(a, "a");
-            check(b, "b");
-          } catch (const cdref::invalid_input&) {
-            continue;
-          }
-          bool kept = false;
-          const bool done =
-              sat_first_look_graded<Spec>(in, f.name + "/" + std::to_string(k) + " case " + std::to_string(i), &kept);
-          answered[f.name].first += done;
-          ++answered[f.name].second;
-          rounded[f.name] += kept;
-          if (done) {
-            Separation<double> s;
-            robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
-            apart[f.name] += !s.intersect;
-          }
-        }
+    each_checked_case<Spec>(37, 200, [&](const std::string& fam, const Inputs& in, const std::string& where) {
+      bool kept = false;
+      const bool done = sat_first_look_graded<Spec>(in, where, &kept);
+      answered[fam].first += done;
+      ++answered[fam].second;
+      rounded[fam] += kept;
+      if (done) {
+        const auto [a, b] = Spec::template make<double>(in);
+        Separation<double> s;
+        robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
+        apart[fam] += !s.intersect;
+      }
+    });
     for (const auto& [name, c] : answered)
       WARN(Spec::name << " " << name << ": the first look answered " << c.first << " of " << c.second << " ("
                       << apart[name] << " apart), the oracle's mode " << rounded[name]);
