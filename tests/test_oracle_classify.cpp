@@ -2090,6 +2090,14 @@ void each_checked_case(std::uint64_t seed, std::uint64_t n, Fn f) {
         f(fam.name, in, fam.name + "/" + std::to_string(k) + " case " + std::to_string(i));
       }
 }
+// A first look's value against the truth rounded: bit for bit in the oracle's mode (correct),
+// else within an ulp.
+inline void check_first_look_value(bool correct, double got, long double want) {
+  if (correct)
+    CHECK(got == double(want));
+  else
+    CHECK(ulp_distance(got, want, 53) <= 1u);
+}
 }  // namespace
 
 TEST_CASE("sphere-obb's first look: every value it answers within an ulp of the truth (the oracle's mode: the truth "
@@ -2212,10 +2220,7 @@ bool obb_cast_first_look_graded(const Inputs& in, const std::string& where, bool
                            c.point[2],     c.normal[0],   c.normal[1], c.normal[2]};
     for (int j = 0; j < 8; ++j) {
       INFO("value " << j << ": " << hexfloat(got[j]) << " against " << hexfloat(truth.v[j]));
-      if (correct)
-        CHECK(got[j] == double(truth.v[j]));
-      else
-        CHECK(ulp_distance(got[j], truth.v[j], 53) <= 1u);
+      check_first_look_value(correct, got[j], truth.v[j]);
     }
   }
   return done;
@@ -2317,10 +2322,7 @@ bool sat_first_look_graded(const Inputs& in, const std::string& where, bool* kep
     for (int c = 0; c < 3; ++c) {
       const double want = round_to<double>(exact.direction[c]);
       INFO("direction " << c << ": " << hexfloat(s.direction[c]) << " against " << hexfloat(want));
-      if (correct)
-        CHECK(s.direction[c] == want);
-      else
-        CHECK(ulp_distance(s.direction[c], want, 53) <= 1u);
+      check_first_look_value(correct, s.direction[c], want);
     }
   }
   return done;
