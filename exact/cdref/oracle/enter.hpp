@@ -134,7 +134,7 @@
 // at most 2^200 (H_i is of degree 4).
 // First, though, the entering face alone (oracle/obb_face.hpp: the classification's filter,
 // kept, picks it from its certain signs, and that face's parameter alone on double words, about
-// 15 exact products instead of some 60 for three faces). Where the filter cannot tell (two
+// 18 exact products instead of some 60 for three faces). Where the filter cannot tell (two
 // faces entered at nearly the same parameter, an outcode near 0) or the face's rounding is
 // uncertain, every face as above.
 //
