@@ -5,12 +5,6 @@
 // place of the whole cast on double words (separating_axes.hpp, cast_eval), which took 1.2-1.4
 // us a case.
 //
-//  0. Inputs far from 1 (a length beyond 2^+-100: the magnitude families) are first scaled by a
-//     power of two, exactly, so that the largest of the source, the target, the centre and the
-//     extents lies in [1, 2) (a ray's direction by its own power): the filter's range and
-//     face_parameter's hold there. A segment's parameters do not change, a ray's are multiplied
-//     by 2^(k - j) (lengths scaled by 2^-k, its direction by 2^-j), the point by 2^k; where a
-//     value scaled back leaves the normal range, or a scaled input would, the slower path.
 //  1. The classification: the cast filter (oracle/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
 //     in the box's unturned face coordinates with static bounds, tightened once). Where it
 //     decides, it is the solid's classification at an exact type; a miss has no values (every
@@ -57,9 +51,11 @@
 
 namespace cdref::robust::detail {
 
-// Steps 1-6 (header) at double, on inputs in range; true where every value asked was kept.
+// Steps 1-6 (header) at double; true where every value asked was kept (then `out` is the whole
+// answer), false where the slower path must answer. `det`: the sign of det[a0 a1 a2]
+// (checked_orientation).
 template <class Mul, bool Correct, class Shot>
-bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
+bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
   namespace st = oracle::staged;
   namespace wb = oracle::word_bounds;
   constexpr double u = first_look_u;
@@ -160,68 +156,6 @@ bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, i
     }
   }
   return true;
-}
-
-// Step 0 (header): the shot and the box with every length scaled by 2^-k (source, target,
-// centre, extents; a ray's direction by its own 2^-j), exactly, so that the largest lies in [1,
-// 2); false where a scaled value would not be exact (it would leave the normal range).
-template <class Shot>
-bool scaled_cast_inputs(const Shot& x, const OrientedBox<double>& b, int k, int j, Shot& xs, OrientedBox<double>& bs) {
-  bool exact = true;
-  const auto sc = [&](double v, int e) {
-    const double r = std::ldexp(v, -e);
-    exact = exact && std::ldexp(r, e) == v;
-    return r;
-  };
-  for (int i = 0; i < 3; ++i) {
-    xs.source[i] = sc(x.source[i], k);
-    if constexpr (std::is_same_v<Shot, Segment<double>>)
-      xs.target[i] = sc(x.target[i], k);
-    else
-      xs.direction[i] = sc(x.direction[i], j);
-    bs.center[i] = sc(b.center[i], k);
-    bs.extent[i] = sc(b.extent[i], k);
-    bs.axis[i] = b.axis[i];
-  }
-  return exact;
-}
-
-// Steps 0-6 (header): true where every value asked was kept (then `out` is the whole answer),
-// false where the slower path must answer. `det`: the sign of det[a0 a1 a2]
-// (checked_orientation).
-template <class Mul, bool Correct, class Shot>
-bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
-  constexpr bool ray = std::is_same_v<Shot, Ray<double>>;
-  double m = 0, md = 0;
-  for (int i = 0; i < 3; ++i) {
-    m = std::max({m, std::fabs(x.source[i]), std::fabs(b.center[i]), std::fabs(b.extent[i])});
-    if constexpr (ray)
-      md = std::max(md, std::fabs(x.direction[i]));
-    else
-      m = std::max(m, std::fabs(x.target[i]));
-  }
-  const auto near_one = [](double v) { return v >= 0x1p-100 && v <= 0x1p100; };
-  if (near_one(m) && (!ray || near_one(md))) return obb_cast_first_look_in_range<Mul, Correct>(x, b, det, w, out);
-  if (!(m > 0 && std::isfinite(m)) || (ray && !(md > 0 && std::isfinite(md)))) return false;
-  const int k = std::ilogb(m), j = ray ? std::ilogb(md) : 0;
-  Shot xs = x;
-  OrientedBox<double> bs = b;
-  if (!scaled_cast_inputs(x, b, k, j, xs, bs) || !obb_cast_first_look_in_range<Mul, Correct>(xs, bs, det, w, out))
-    return false;
-  // back: the point by 2^k; a ray's parameters by 2^(k - j) (s + l d = 2^k (s' + l 2^(j - k)
-  // d')), a segment's unchanged; exact where the result stays a normal number (else a second
-  // rounding: the slower path)
-  bool ok = true;
-  const auto back = [&](double& v, int e) {
-    v = std::ldexp(v, e);
-    ok = ok && std::isfinite(v) && (v == 0 || std::fabs(v) >= 0x1p-1022);
-  };
-  if constexpr (ray) {
-    back(out.lambda_enter, k - j);
-    back(out.lambda_exit, k - j);
-  }
-  for (int i = 0; i < 3; ++i) back(out.point[i], k);
-  return ok;
 }
 
 }  // namespace cdref::robust::detail
