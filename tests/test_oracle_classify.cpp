@@ -2369,6 +2369,83 @@ TEST_CASE("the separating-axis queries' first look: the classification and the f
   CHECK((!given || (dir[0] == 0x1p-108 && dir[1] == 0 && dir[2] == 0)));
 }
 
+namespace {
+// Uniform cases with every length scaled by 2^e and a ray's direction by 2^f besides (an oriented
+// box's axes are directions and stay), exactly, or lopsided: only the first coordinate of the
+// first point (and a ray's second direction component) scaled: the first looks take them scaled back near 1
+// (robust/length_scale.hpp). Their classification must be robust::decide's too (fuzz::spec::robust_at
+// throws where the full query and decide() disagree: CI's fuzzing found a ray 2^500 from the box
+// with a direction of 2^705 where the casts' first look was certain and decide_cast(), on the
+// unscaled stages, uncertain and wrong), and a certain one the truth's.
+template <class Spec>
+void scaled_far_from_one(std::uint64_t n) {
+  const Query q = query_by_name(Spec::name);
+  const Family& fam = family_by_name(q, "uniform");
+  const std::vector<std::string> names = Spec::inputs();
+  int tried[2] = {0, 0}, certain[2] = {0, 0}, first[2] = {0, 0};  // [lopsided]
+  for (std::uint64_t i = 0; i < n; ++i)
+    for (const int e : {-1000, -700, -400, 300, 600, 900})
+      for (const int f : {0, 250, -450})
+      for (const bool lopsided : {false, true}) {
+        Inputs in = make_case(43, q, fam, fam.scales.back(), i);
+        bool exact = true, ray = false;
+        for (std::size_t c = 0; c < names.size(); ++c) {
+          if (names[c].find("axis") != std::string::npos) continue;
+          const bool dir = names[c].rfind("direction", 0) == 0;
+          ray = ray || dir;
+          if (lopsided && c != 0 && names[c] != "direction_y") continue;
+          const int by = dir ? e + f : e;
+          const double v = std::ldexp(in[c], by);
+          exact = exact && std::ldexp(v, -by) == in[c];
+          in[c] = v;
+        }
+        if (!exact || (!ray && f != 0)) continue;
+        const auto [a, b] = Spec::template make<double>(in);
+        try {
+          check(a, "a");
+          check(b, "b");
+        } catch (const cdref::invalid_input&) {
+          continue;
+        }
+        INFO(Spec::name << " uniform case " << i << (lopsided ? " lopsided," : "") << " scaled by 2^" << e
+                        << ", a direction by 2^" << f << " more");
+        ++tried[lopsided];
+        Answer r;
+        REQUIRE_NOTHROW(r = fuzz::spec::robust_at<Spec, double>(in));
+        if (r.certain) {
+          ++certain[lopsided];
+          REQUIRE(r.cls == fuzz::truth(q, in, 53).cls);
+        }
+        if constexpr (requires { robust::separate(a, b); }) {
+          Separation<double> s;
+          first[lopsided] += robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
+        } else {
+          Cast<double> c;
+          first[lopsided] += robust::detail::obb_cast_first_look<robust::SplitProduct, false>(
+              a, b, det3_sign(b.axis[0], b.axis[1], b.axis[2]), want_cast, c);
+        }
+      }
+  for (const int l : {0, 1})
+    WARN(Spec::name << (l ? " lopsided" : " scaled") << " far from 1: decide() certain on " << certain[l] << " of "
+                    << tried[l] << ", the first look answered " << first[l]);
+  CHECK(certain[0] * 100 >= tried[0] * 95);
+  CHECK(first[0] * 100 >= tried[0] * 85);
+}
+}  // namespace
+
+TEST_CASE("the oriented-box casts and the separating-axis queries far from 1: the full query's classification is "
+          "decide()'s and a certain one the truth's, the first looks answering on the inputs scaled",
+          "[oracle-classify][sat][robust]") {
+  scaled_far_from_one<queries::SegmentBox<false>>(25);
+  scaled_far_from_one<queries::SegmentBox<true>>(25);
+  scaled_far_from_one<queries::TriangleBox>(25);
+  scaled_far_from_one<queries::ShapeObb<false>>(25);
+  scaled_far_from_one<queries::ShapeObb<true>>(25);
+  scaled_far_from_one<queries::ObbObb>(25);
+  scaled_far_from_one<queries::ObbCast<false>>(25);
+  scaled_far_from_one<queries::ObbCast<true>>(25);
+}
+
 TEST_CASE("polygon-sphere's first look: where it answers, every value within an ulp of the truth, on every family",
           "[oracle-classify][triangle][robust]") {
   // robust/polygon.hpp: every fan triangle's first look, the nearest taken where the keys'

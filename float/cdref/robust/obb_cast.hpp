@@ -5,6 +5,13 @@
 // place of the whole cast on double words (separating_axes.hpp, cast_eval), which took 1.2-1.4
 // us a case.
 //
+//  0. Inputs far from 1 (a length beyond 2^+-100: the magnitude families) are first scaled by a
+//     power of two, exactly, so that the largest of the source, the target, the centre and the
+//     extents lies in [1, 2) (a ray's direction by its own power; length_scale.hpp, whose
+//     scaled filter the certified decisions take too): the filter's range and
+//     face_parameter's hold there. A segment's parameters do not change, a ray's are multiplied
+//     by 2^(k - j) (lengths scaled by 2^-k, its direction by 2^-j), the point by 2^k; where a
+//     value scaled back leaves the normal range, or a scaled input would, the slower path.
 //  1. The classification: the cast filter (oracle/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
 //     in the box's unturned face coordinates with static bounds, tightened once). Where it
 //     decides, it is the solid's classification at an exact type; a miss has no values (every
@@ -48,14 +55,13 @@
 #include <cmath>
 
 #include "first_look.hpp"
+#include "length_scale.hpp"
 
 namespace cdref::robust::detail {
 
-// Steps 1-6 (header) at double; true where every value asked was kept (then `out` is the whole
-// answer), false where the slower path must answer. `det`: the sign of det[a0 a1 a2]
-// (checked_orientation).
+// Steps 1-6 (header) at double, on inputs in range; true where every value asked was kept.
 template <class Mul, bool Correct, class Shot>
-bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
+bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
   namespace st = oracle::staged;
   namespace wb = oracle::word_bounds;
   constexpr double u = first_look_u;
@@ -156,6 +162,35 @@ bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, u
     }
   }
   return true;
+}
+
+// Steps 0-6 (header): true where every value asked was kept (then `out` is the whole answer),
+// false where the slower path must answer. `det`: the sign of det[a0 a1 a2]
+// (checked_orientation).
+template <class Mul, bool Correct, class Shot>
+bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
+  constexpr bool ray = std::is_same_v<Shot, Ray<double>>;
+  LengthScale s;
+  Shot xs;
+  OrientedBox<double> bs;
+  const Scaling sc = scale_lengths(x, b, s, xs, bs);
+  if (sc == Scaling::near_one) return obb_cast_first_look_in_range<Mul, Correct>(x, b, det, w, out);
+  if (sc == Scaling::refused || !obb_cast_first_look_in_range<Mul, Correct>(xs, bs, det, w, out)) return false;
+  const int k = s.k, j = s.j;
+  // back: the point by 2^k; a ray's parameters by 2^(k - j) (s + l d = 2^k (s' + l 2^(j - k)
+  // d')), a segment's unchanged; exact where the result stays a normal number (else a second
+  // rounding: the slower path)
+  bool ok = true;
+  const auto back = [&](double& v, int e) {
+    v = std::ldexp(v, e);
+    ok = ok && std::isfinite(v) && (v == 0 || std::fabs(v) >= 0x1p-1022);
+  };
+  if constexpr (ray) {
+    back(out.lambda_enter, k - j);
+    back(out.lambda_exit, k - j);
+  }
+  for (int i = 0; i < 3; ++i) back(out.point[i], k);
+  return ok;
 }
 
 }  // namespace cdref::robust::detail

@@ -75,6 +75,7 @@
 #include "ray_box.hpp"
 #include "sphere_box.hpp"
 #include "obb_cast.hpp"
+#include "length_scale.hpp"
 #include "sat_first_look.hpp"
 #include "sphere_obb.hpp"
 #include "words.hpp"
@@ -215,7 +216,23 @@ inline constexpr bool has_face_coordinates =
 //     world axes where those words do not decide (they recognise exact zeros: parallel edges),
 //     then their open axes on words;
 //   - otherwise the world axes, then their open axes on words.
+// After the first filter of each (so that inputs near 1 pay nothing more), where the inputs'
+// lengths lie beyond 2^+-100 (length_scale.hpp), the same filters the first looks take
+// (obb_cast.hpp, sat_first_look.hpp) on the inputs scaled exactly by a power of two: the cast
+// filter (a segment or a ray and an oriented box), then the world axes.
+// Whatever the first looks classify is then classified here too, so that the full queries and
+// the certified decisions (which both run these stages where they are uncertain) always agree.
 // At float and long double only the cast's decision on double words (the filters are double's).
+template <class A, class B>
+int scaled_filters(const A& a, const B& b) {
+  LengthScale s;
+  A as;
+  B bs;
+  if (scale_lengths(a, b, s, as, bs) != Scaling::scaled) return oracle::sat::unknown;
+  if constexpr (has_cast_decision<A, B, double>)
+    if (const int f = oracle::staged::filter(as, bs); f != oracle::sat::unknown) return f;
+  return oracle::sat::filter<A, B>(as, bs);
+}
 template <class F, class A, class B>
 int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
   constexpr int unknown = oracle::sat::unknown;
@@ -232,6 +249,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
     int r;
     if constexpr (has_cast_decision<A, B, F>) {
       if (const int f = oracle::staged::filter(a, b); f != unknown) return f;
+      if (const int f = scaled_filters(a, b); f != unknown) return f;
       if (const auto h = cast_decision_on_words(a, b)) {
         if (words) *words = true;
         return int(*h);
@@ -241,6 +259,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
       if constexpr (std::is_same_v<B, Box<double>>)
         if (oracle::sat::apart_on_box_faces(a, b)) return 0;  // the outcodes' relative bounds
       if (const int f = oracle::sat::filter_face_coordinates(a, b, &open); f != unknown) return f;
+      if (const int f = scaled_filters(a, b); f != unknown) return f;
       // (a triangle and a box) more than one axis open, or none named (a degenerate triangle
       // ties several): the exact evaluation on a grid (oracle/sat_grid.hpp), about 145 ns, where
       // the double words of each open axis took 1,000 ns a case on the degenerate family and
@@ -260,6 +279,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
       r = oracle::sat::filter<A, B>(a, b, nullptr, &open);  // the world axes
     } else {
       r = oracle::sat::filter(a, b, nullptr, &open);
+      if (r == unknown) r = scaled_filters(a, b);
     }
     if (r != unknown) return r;
     if (words) *words = true;
@@ -325,10 +345,11 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     }                                                                                       \
     if (Separation<F> g; detail::separation_on_grid(a, b, g)) return g; /* exact */       \
     auto [s, certain] = detail::separation<F>(a, b);                                        \
-    if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
-      if (!certain) s.intersect = decide(a, b).value; /* as decide_separation */            \
-    } else if (!certain) { /* where the double words are certain they are exact already */ \
-      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) s.intersect = f != 0; \
+    if (!certain) { /* where the double words are certain they are exact already */         \
+      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown)      \
+        s.intersect = f != 0;                                                               \
+      else if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>)                       \
+        s.intersect = decide(a, b).value; /* as decide_separation */                       \
     }                                                                                       \
     return s;                                                                               \
   }                                                                                         \
@@ -339,6 +360,8 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
       const Decision slab = decide(a, b); /* before the first stage: it costs less */       \
       if (slab.certain) return slab;                                                        \
+      /* the stages separate()'s first look and its uncertain fallback take */              \
+      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
       if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};    \
       const auto [s, certain] = detail::separation<F>(a, b);                                \
       return certain ? Decision{s.intersect, true} : slab;                                  \
