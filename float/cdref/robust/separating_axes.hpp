@@ -39,7 +39,11 @@
 // Otherwise decide_separation() (decide(), where the pair has no other; decide_cast() for
 // the casts, which classify as cast() does) is certain when the double-word evaluation completed, every
 // decision certain: then the classification (and the first separating axis, the entering
-// face) equals the solid's at an exact type. When a comparison is too close to call, the same
+// face) equals the solid's at an exact type. When a comparison is too close to call: for the
+// separating-axis queries (separate, decide_separation, intersect) Theorem 3.1 on exact
+// rationals (sat_exact.hpp: tens of microseconds, where every faster stage left the answer
+// open), so that their classification and first separating axis are always the book's at an
+// exact type and decide_separation() always certain; for the casts and the sphere, the same
 // formulation runs in F and the answer is marked uncertain. Values come from the double word
 // rounded to F; they are not claimed correctly rounded (that is the oracle's job). Where their
 // enclosure is wider than u/16 of the value they come from exact rationals instead: a sphere's
@@ -76,6 +80,7 @@
 #include "sphere_box.hpp"
 #include "obb_cast.hpp"
 #include "length_scale.hpp"
+#include "sat_exact.hpp"
 #include "sat_first_look.hpp"
 #include "sphere_obb.hpp"
 #include "words.hpp"
@@ -344,14 +349,9 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
         return first;                                                                       \
     }                                                                                       \
     if (Separation<F> g; detail::separation_on_grid(a, b, g)) return g; /* exact */       \
-    auto [s, certain] = detail::separation<F>(a, b);                                        \
-    if (!certain) { /* where the double words are certain they are exact already */         \
-      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown)      \
-        s.intersect = f != 0;                                                               \
-      else if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>)                       \
-        s.intersect = decide(a, b).value; /* as decide_separation */                       \
-    }                                                                                       \
-    return s;                                                                               \
+    const auto [s, certain] = detail::separation<F>(a, b);                                  \
+    /* where the double words are certain they are exact already; else on rationals */     \
+    return certain ? s : detail::separation_exact<F>(a, b);                                 \
   }                                                                                         \
   template <class F>                                                                        \
   Decision decide_separation(const A<F>& a, const B<F>& b) {                                \
@@ -362,15 +362,12 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
       if (slab.certain) return slab;                                                        \
       /* the stages separate()'s first look and its uncertain fallback take */              \
       if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
-      if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};    \
-      const auto [s, certain] = detail::separation<F>(a, b);                                \
-      return certain ? Decision{s.intersect, true} : slab;                                  \
     } else {                                                                                \
       if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
-      if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};    \
-      const auto [s, certain] = detail::separation<F>(a, b);                                \
-      return {s.intersect, certain};                                                        \
     }                                                                                       \
+    if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};      \
+    const auto [s, certain] = detail::separation<F>(a, b);                                  \
+    return {certain ? s.intersect : detail::separation_exact<F>(a, b).intersect, true};     \
   }                                                                                         \
   template <class F>                                                                        \
   bool intersect(const A<F>& a, const B<F>& b) {                                            \
