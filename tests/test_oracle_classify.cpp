@@ -2071,6 +2071,18 @@ bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rou
 }  // namespace
 
 namespace {
+// Whether Spec's inputs pass the input checks at double.
+template <class Spec>
+bool passes_checks(const Inputs& in) {
+  const auto [a, b] = Spec::template make<double>(in);
+  try {
+    check(a, "a");
+    check(b, "b");
+  } catch (const cdref::invalid_input&) {
+    return false;
+  }
+  return true;
+}
 // Every case of every family and scale of Spec's query (n a scale, the given seed) whose inputs
 // pass the checks, as f(family name, inputs, "family/scale case i").
 template <class Spec, class Fn>
@@ -2080,13 +2092,7 @@ void each_checked_case(std::uint64_t seed, std::uint64_t n, Fn f) {
     for (const int k : fam.scales)
       for (std::uint64_t i = 0; i < n; ++i) {
         const Inputs in = make_case(seed, q, fam, k, i);
-        const auto [a, b] = Spec::template make<double>(in);
-        try {
-          check(a, "a");
-          check(b, "b");
-        } catch (const cdref::invalid_input&) {
-          continue;
-        }
+        if (!passes_checks<Spec>(in)) continue;
         f(fam.name, in, fam.name + "/" + std::to_string(k) + " case " + std::to_string(i));
       }
 }
@@ -2446,14 +2452,8 @@ void scaled_far_from_one(std::uint64_t n) {
           exact = exact && std::ldexp(v, -by) == in[c];
           in[c] = v;
         }
-        if (!exact || (!ray && f != 0)) continue;
+        if (!exact || (!ray && f != 0) || !passes_checks<Spec>(in)) continue;
         const auto [a, b] = Spec::template make<double>(in);
-        try {
-          check(a, "a");
-          check(b, "b");
-        } catch (const cdref::invalid_input&) {
-          continue;
-        }
         INFO(Spec::name << " uniform case " << i << (lopsided ? " lopsided," : "") << " scaled by 2^" << e
                         << ", a direction by 2^" << f << " more");
         ++tried[lopsided];
