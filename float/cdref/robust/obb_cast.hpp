@@ -173,9 +173,11 @@ bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, u
   LengthScale s;
   Shot xs;
   OrientedBox<double> bs;
-  const Scaling sc = scale_lengths(x, b, s, xs, bs);
-  if (sc == Scaling::near_one) return obb_cast_first_look_in_range<Mul, Correct>(x, b, det, w, out);
-  if (sc == Scaling::refused || !obb_cast_first_look_in_range<Mul, Correct>(xs, bs, det, w, out)) return false;
+  // (the inputs as they are first: where they lie near 1 that is the whole first look, and the
+  // lengths' magnitudes are looked at only where it declines)
+  if (obb_cast_first_look_in_range<Mul, Correct>(x, b, det, w, out)) return true;
+  if (scale_lengths(x, b, s, xs, bs) != Scaling::scaled || !obb_cast_first_look_in_range<Mul, Correct>(xs, bs, det, w, out))
+    return false;
   const int k = s.k, j = s.j;
   // back: the point by 2^k; a ray's parameters by 2^(k - j) (s + l d = 2^k (s' + l 2^(j - k)
   // d')), a segment's unchanged; exact where the result stays a normal number (else a second

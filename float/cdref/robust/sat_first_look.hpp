@@ -159,9 +159,9 @@ bool sat_first_look(const A& a, const B& b, Separation<double>& out) {
   LengthScale s;
   A as;
   B bs;
-  const Scaling sc = scale_lengths(a, b, s, as, bs);
-  if (sc == Scaling::near_one) return sat_first_look_in_range<Mul, Correct>(a, b, out);
-  if (sc == Scaling::refused || !sat_first_look_in_range<Mul, Correct>(as, bs, out)) return false;
+  // (the inputs as they are first, as obb_cast.hpp's first look)
+  if (sat_first_look_in_range<Mul, Correct>(a, b, out)) return true;
+  if (scale_lengths(a, b, s, as, bs) != Scaling::scaled || !sat_first_look_in_range<Mul, Correct>(as, bs, out)) return false;
   if (out.intersect) return true;
   // the direction back, exactly where it stays a normal number (else a second rounding)
   const int e = sat_axis_degree<A, B>(out.axis, s.k, s.j);
