@@ -360,11 +360,8 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     if constexpr (detail::has_slab_certificate<A<F>, B<F>, F>) {                               \
       const Decision slab = decide(a, b); /* before the first stage: it costs less */       \
       if (slab.certain) return slab;                                                        \
-      /* the stages separate()'s first look and its uncertain fallback take */              \
-      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
-    } else {                                                                                \
-      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
     }                                                                                       \
+    if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
     if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};      \
     const auto [s, certain] = detail::separation<F>(a, b);                                  \
     return {certain ? s.intersect : detail::separation_exact<F>(a, b).intersect, true};     \
