@@ -5,7 +5,8 @@
 // place of the whole cast on double words (separating_axes.hpp, cast_eval), which took 1.2-1.4
 // us a case.
 //
-//  0. Inputs far from 1 (a length beyond 2^+-100: the magnitude families) are first scaled by a
+//  0. Where steps 1-6 on the inputs as they are decline and the inputs lie far from 1 (a length
+//     beyond 2^+-100: the magnitude families), they run again on the inputs scaled by a
 //     power of two, exactly, so that the largest of the source, the target, the centre and the
 //     extents lies in [1, 2) (a ray's direction by its own power; length_scale.hpp, whose
 //     scaled filter the certified decisions take too): the filter's range and
@@ -170,12 +171,12 @@ bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, i
 template <class Mul, bool Correct, class Shot>
 bool obb_cast_first_look(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
   constexpr bool ray = std::is_same_v<Shot, Ray<double>>;
-  LengthScale s;
-  Shot xs;
-  OrientedBox<double> bs;
   // (the inputs as they are first: where they lie near 1 that is the whole first look, and the
   // lengths' magnitudes are looked at only where it declines)
   if (obb_cast_first_look_in_range<Mul, Correct>(x, b, det, w, out)) return true;
+  LengthScale s;
+  Shot xs;
+  OrientedBox<double> bs;
   if (scale_lengths(x, b, s, xs, bs) != Scaling::scaled || !obb_cast_first_look_in_range<Mul, Correct>(xs, bs, det, w, out))
     return false;
   const int k = s.k, j = s.j;

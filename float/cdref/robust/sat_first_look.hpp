@@ -5,7 +5,8 @@
 // certifies them, in place of the whole formulation on double words (separating_axes.hpp,
 // detail::separation), which took 1.5-5.5 us a case on the oriented boxes.
 //
-//  0. Inputs far from 1 (a length beyond 2^+-100: the magnitude families) are first scaled by a
+//  0. Where steps 1-2 on the inputs as they are decline and the inputs lie far from 1 (a length
+//     beyond 2^+-100: the magnitude families), they run again on the inputs scaled by a
 //     power of two 2^-k, exactly (length_scale.hpp: every point, a box's centre and extents; a
 //     ray's direction by its own 2^-j): the classification and the axis do not change (a ray is the same set
 //     whatever its direction's length), and the direction comes back multiplied by 2^(k deg),
@@ -156,11 +157,11 @@ int sat_axis_degree(int axis, int k, int j) {
 // Steps 0-2 (header): true where `out` is the whole answer.
 template <class Mul, bool Correct, class A, class B>
 bool sat_first_look(const A& a, const B& b, Separation<double>& out) {
+  // (the inputs as they are first, as obb_cast.hpp's first look)
+  if (sat_first_look_in_range<Mul, Correct>(a, b, out)) return true;
   LengthScale s;
   A as;
   B bs;
-  // (the inputs as they are first, as obb_cast.hpp's first look)
-  if (sat_first_look_in_range<Mul, Correct>(a, b, out)) return true;
   if (scale_lengths(a, b, s, as, bs) != Scaling::scaled || !sat_first_look_in_range<Mul, Correct>(as, bs, out)) return false;
   if (out.intersect) return true;
   // the direction back, exactly where it stays a normal number (else a second rounding)
