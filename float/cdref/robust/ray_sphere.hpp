@@ -16,8 +16,10 @@
 //     the largest of |sh_i|, |rh_i|, rho: exact (barring underflow of components 2^(emin)
 //     below the largest: eta per value), lambda is unchanged, and no square or product can
 //     overflow (the 1e160 and 1e-160 cases). Below, quantities are in these units.
-//  2. a, b, c as double-words: the exact products sh_i rh_i (two_prod_split, eft.hpp; no
-//     library fma call) summed by a two_sum chain, and the products' low parts, the chain's
+//  2. a, b, c as double-words: the exact products sh_i rh_i (one fused multiply-add each
+//     where the CPU has it, else Dekker's two_prod_split: eft.hpp, with_products; the same
+//     pair wherever the product does not underflow; the full ray cast on 2,000 uniform
+//     cases 40.3 -> 34.2 ns against the split products, standalone loop, 2026-11-29) summed by a two_sum chain, and the products' low parts, the chain's
 //     errors and the cross terms sh_i rl_i + sl_i rh_i summed in F (sl_i rl_i <= u^2 |sh_i rh_i|
 //     is dropped).
 //  3. The discriminant from the perpendicular foot: b^2 - a c = a D, D = rho^2 - |l|^2,
@@ -244,10 +246,10 @@ struct Roots {
 
 // c = |s|^2 - rho^2 as a double-word: the exact squares of the high parts and rho^2 summed
 // by a two_sum chain, their low parts, the chain's errors and 2 sh.sl summed in F.
-template <class F>
+template <class Mul = SplitProduct, class F>
 Pair<F> c_dw(const LocalDW<F>& L) {
-  const Pair<F> p0 = two_prod_split(L.s[0].hi, L.s[0].hi), p1 = two_prod_split(L.s[1].hi, L.s[1].hi),
-                p2 = two_prod_split(L.s[2].hi, L.s[2].hi), pr = two_prod_split(L.rho, L.rho);
+  const Pair<F> p0 = Mul::prod(L.s[0].hi, L.s[0].hi), p1 = Mul::prod(L.s[1].hi, L.s[1].hi),
+                p2 = Mul::prod(L.s[2].hi, L.s[2].hi), pr = Mul::prod(L.rho, L.rho);
   const Pair<F> h1 = two_sum(p0.hi, p1.hi), h2 = two_sum(h1.hi, p2.hi), h3 = two_sum(h2.hi, F(-pr.hi));
   const F x = L.s[0].hi * L.s[0].lo + L.s[1].hi * L.s[1].lo + L.s[2].hi * L.s[2].lo;
   const F lo = F(F(p0.lo + p1.lo) + F(p2.lo - pr.lo)) + F(F(h1.lo + h2.lo) + h3.lo) + F(2) * x;
@@ -276,41 +278,39 @@ struct Quantities {
   F lh[3];
 };
 
-template <class F>
+template <class Mul = SplitProduct, class F>
 Quantities<F> quantities(const LocalDW<F>& L) {
   const auto& s = L.s;
   const auto& r = L.r;
   Quantities<F> Q;
   // a = |r|^2 (no cancellation)
-  const Pair<F> a0 = two_prod_split(r[0].hi, r[0].hi), a1 = two_prod_split(r[1].hi, r[1].hi),
-                a2 = two_prod_split(r[2].hi, r[2].hi);
+  const Pair<F> a0 = Mul::prod(r[0].hi, r[0].hi), a1 = Mul::prod(r[1].hi, r[1].hi), a2 = Mul::prod(r[2].hi, r[2].hi);
   const Pair<F> ah1 = two_sum(a0.hi, a1.hi), ah2 = two_sum(ah1.hi, a2.hi);
   const F ax = r[0].hi * r[0].lo + r[1].hi * r[1].lo + r[2].hi * r[2].lo;
   Q.a = fast_two_sum(ah2.hi, F(F(F(a0.lo + a1.lo) + F(a2.lo + ah1.lo)) + F(ah2.lo + F(2) * ax)));
   // b = s.r
-  const Pair<F> b0 = two_prod_split(s[0].hi, r[0].hi), b1 = two_prod_split(s[1].hi, r[1].hi),
-                b2 = two_prod_split(s[2].hi, r[2].hi);
+  const Pair<F> b0 = Mul::prod(s[0].hi, r[0].hi), b1 = Mul::prod(s[1].hi, r[1].hi), b2 = Mul::prod(s[2].hi, r[2].hi);
   const Pair<F> bh1 = two_sum(b0.hi, b1.hi), bh2 = two_sum(bh1.hi, b2.hi);
   const F bx = F(F(s[0].hi * r[0].lo + s[0].lo * r[0].hi) + F(s[1].hi * r[1].lo + s[1].lo * r[1].hi)) +
                F(s[2].hi * r[2].lo + s[2].lo * r[2].hi);
   Q.b = two_sum(bh2.hi, F(F(F(b0.lo + b1.lo) + F(b2.lo + bh1.lo)) + F(bh2.lo + bx)));
   // the foot of the perpendicular, l = s - f r, f = b / a, each l_i a double-word
-  Q.f = div_pair(Q.b, Q.a);
+  Q.f = div_pair<Mul>(Q.b, Q.a);
   Pair<F>(&l)[3] = Q.l;
   for (int i = 0; i < 3; ++i) {
-    const Pair<F> P = two_prod_split(Q.f.hi, r[i].hi);
+    const Pair<F> P = Mul::prod(Q.f.hi, r[i].hi);
     const Pair<F> T = two_sum(s[i].hi, F(-P.hi));
     const F lo = F(F(T.lo + s[i].lo) - P.lo) - F(Q.f.hi * r[i].lo + Q.f.lo * r[i].hi);
     l[i] = two_sum(T.hi, lo);
     Q.lh[i] = l[i].hi;
   }
-  Q.D = rho2_minus_norm2(L.rho, l);
+  Q.D = rho2_minus_norm2<F, Mul>(L.rho, l);
   return Q;
 }
 
 // The roots of a l^2 + 2 b l + c, a > 0, from the double-word quantities, each with one
 // final rounding (step 4).
-template <class F>
+template <class Mul = SplitProduct, class F>
 Roots<F> roots(const Quantities<F>& Q, const Pair<F>& c) {
   const Pair<F>& a = Q.a;
   const Pair<F>& b = Q.b;
@@ -319,7 +319,7 @@ Roots<F> roots(const Quantities<F>& Q, const Pair<F>& c) {
   if (!(D.hi >= F(0))) return out;
   out.line_hits = true;
   // q = -(b + sign(b) sqrt(a D)): a sum of two terms of one sign
-  const Pair<F> X0 = sqrt_pair(mul_pair(a, D));
+  const Pair<F> X0 = sqrt_pair<Mul>(mul_pair<Mul>(a, D));
   const Pair<F> X = std::signbit(b.hi) ? Pair<F>{-X0.hi, -X0.lo} : X0;
   const Pair<F> qs = two_sum(b.hi, X.hi);
   const Pair<F> q0s = fast_two_sum(qs.hi, F(qs.lo + F(b.lo + X.lo)));
@@ -328,7 +328,7 @@ Roots<F> roots(const Quantities<F>& Q, const Pair<F>& c) {
     out.lambda1 = out.lambda2 = F(0);
     return out;
   }
-  const Pair<F> x1p = div_pair(q, a), x2p = div_pair(c, q);
+  const Pair<F> x1p = div_pair<Mul>(q, a), x2p = div_pair<Mul>(c, q);
   const F x1 = x1p.hi + x1p.lo, x2 = x2p.hi + x2p.lo;
   out.lambda1 = std::min(x1, x2);
   out.lambda2 = std::max(x1, x2);
@@ -354,18 +354,18 @@ bool in_range(const Roots<F>& R, bool bounded) {
 }
 
 // s = source - centre (pairs), r = the direction (pairs; exact: target - source for a segment)
-template <class F>
+template <class Mul = SplitProduct, class F>
 Analysis<F> analyse(const Pair<F> (&s)[3], const Pair<F> (&r)[3], F rho, bool bounded) {
   Analysis<F> A;
   A.L = scaled_dw(s, r, rho);
   A.zero = A.L.r[0].hi == F(0) && A.L.r[1].hi == F(0) && A.L.r[2].hi == F(0);
-  A.c = c_dw(A.L);
+  A.c = c_dw<Mul>(A.L);
   if (A.zero) {  // a zero-length segment: a point test, as in the book
     A.hit = A.c.hi <= F(0);
     return A;
   }
-  A.Q = quantities(A.L);
-  A.R = roots(A.Q, A.c);
+  A.Q = quantities<Mul>(A.L);
+  A.R = roots<Mul>(A.Q, A.c);
   A.hit = in_range(A.R, bounded);
   return A;
 }
@@ -407,7 +407,7 @@ void exact_entry(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& 
 }
 
 // The same steps as analyse(), with nothing kept that the outputs do not need.
-template <class F>
+template <class Mul = SplitProduct, class F>
 Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded, unsigned w) {
   Cast<F> res;
   // the source itself, from its exact offset s to the centre
@@ -416,15 +416,15 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
   };
   const LocalDW<F> L = scaled_dw(s, r, sp.radius);
   const bool zero = L.r[0].hi == F(0) && L.r[1].hi == F(0) && L.r[2].hi == F(0);
-  const Pair<F> c = c_dw(L);
+  const Pair<F> c = c_dw<Mul>(L);
   if (zero) {  // a zero-length segment: a point test, as in the book
     res.hit = c.hi <= F(0);
     if (res.hit && (w & want_lambda_exit)) res.lambda_exit = F(1);
     if (res.hit && (w & want_point)) source_point();
     return res;
   }
-  const Quantities<F> Q = quantities(L);
-  const Roots<F> R = roots(Q, c);
+  const Quantities<F> Q = quantities<Mul>(L);
+  const Roots<F> R = roots<Mul>(Q, c);
   res.hit = in_range(R, bounded);
   if (!res.hit) return res;
   res.enters = R.lambda1 >= F(0);
@@ -438,10 +438,10 @@ Cast<F> cast_local(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>
   // step 5: the entry point relative to the centre, x = l - h r with h = sqrt(D / a) (the
   // foot minus the half chord), each x_i a double-word, then one rounding for the point
   // (centre added) and for the normal (x / rho)
-  const Pair<F> h = sqrt_pair(div_pair(Q.D, Q.a));
+  const Pair<F> h = sqrt_pair<Mul>(div_pair<Mul>(Q.D, Q.a));
   Pair<F> x[3];
   for (int i = 0; i < 3; ++i) {
-    const Pair<F> P = two_prod_split(h.hi, L.r[i].hi);
+    const Pair<F> P = Mul::prod(h.hi, L.r[i].hi);
     const Pair<F> T = two_sum(Q.l[i].hi, F(-P.hi));
     x[i] = two_sum(T.hi, F(F(T.lo + Q.l[i].lo) - P.lo) - F(h.hi * L.r[i].lo + h.lo * L.r[i].hi));
   }
@@ -576,11 +576,11 @@ Bounded<F> sum_bounded(const Pair<F>& x, const Pair<F>& y, const Pair<F>& z, F e
 
 // The certificate of the header ("Certificates"), from the cast's own double-word
 // quantities. s, r: the exact pairs cast() starts from.
-template <class F>
-Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded) {
+template <class Mul, class F>
+Decision decide_cast_with(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded) {
   using std::fabs;
   Decision out;
-  const Analysis<F> A = analyse(s, r, sp.radius, bounded);
+  const Analysis<F> A = analyse<Mul>(s, r, sp.radius, bounded);
   out.value = A.hit;
   const F u = unit_roundoff<F>();
   constexpr F E = std::numeric_limits<F>::denorm_min();
@@ -632,6 +632,13 @@ Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<
   }
   out.certain = truth != Tri::unknown && (truth == Tri::yes) == out.value;
   return out;
+}
+
+// With the products cast() takes (eft.hpp, with_products), so that both classify alike where
+// a product underflows (fused and split products differ only there).
+template <class F>
+Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded) {
+  return with_products([&](auto mul) { return decide_cast_with<decltype(mul)>(s, r, sp, bounded); });
 }
 
 // The filter of the header: +1 (hit) or -1 (miss) where the formula is decided by the stable
@@ -732,7 +739,7 @@ Cast<F> cast(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = want_cast)
   Pair<F> s[3], r[3];
   detail::diff_pairs(seg.source, sp.center, s);
   detail::diff_pairs(seg.target, seg.source, r);
-  Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, true, w); });
+  Cast<F> c = with_products([&](auto mul) { return detail::cast_local<decltype(mul)>(s, r, sp, true, w); });
   if (f > 0) c.hit = true;
   return c;
 }
@@ -747,7 +754,7 @@ Cast<F> cast(const Ray<F>& ray, const Sphere<F>& sp, unsigned w = want_cast) {
   Pair<F> s[3];
   detail::diff_pairs(ray.source, sp.center, s);
   const Pair<F> r[3] = {{ray.direction[0], F(0)}, {ray.direction[1], F(0)}, {ray.direction[2], F(0)}};
-  Cast<F> c = with_fma([&] { return detail::cast_local(s, r, sp, false, w); });
+  Cast<F> c = with_products([&](auto mul) { return detail::cast_local<decltype(mul)>(s, r, sp, false, w); });
   if (f > 0) c.hit = true;
   return c;
 }

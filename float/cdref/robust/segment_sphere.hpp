@@ -70,7 +70,9 @@
 // and the values below are those of the same branch: only the classification's work is saved
 // (it is the filter's). The full query on 2,000 uniform cases (standalone loop, 2026-11-29):
 // 514 ns a case, 348 in the FMA copy (eft.hpp, with_fma), 239 with this and the powers of two
-// written into the bits (Pow2, exp2_of); at 10^12 radii 646, 437, 311.
+// written into the bits (Pow2, exp2_of); at 10^12 radii 646, 437, 311. With every exact
+// product of the double words one fused multiply-add in that copy (with_products, where
+// Dekker's split had still run inside it): 197 ns, and 264 at 10^12 radii (2026-11-29).
 // decide_closest(), intersect() and proximity() first try the sphere casts' filter
 // (ray_sphere.hpp, cast_filter on the segment): the segment meets the closed ball exactly when Algorithm 3.1's
 // segment cast hits, so where the filter decides, its answer is this query's exact answer too
@@ -293,7 +295,7 @@ SegSphSolved<F> seg_sph_solve(const SegSphLocal<F>& L) {
 // u^2 |w_i| + 3e4 u^3 |s||r|, however near the line the centre lies), then r x w on double
 // words (no cancellation beyond u^2 |r||w|: r is perpendicular to w). Its direction is x's
 // within 27u^2 + 3e4 u^3 |s| / |x|, where the foot's 144u^2 |s| / |x| is too coarse.
-template <class F>
+template <class Mul = SplitProduct, class F>
 void perpendicular_exactly(const Pair<F> (&s)[3], const Pair<F> (&r)[3], Pair<F> (&y)[3]) {
   Pair<F> w[3];
   for (int i = 0; i < 3; ++i) {
@@ -301,7 +303,7 @@ void perpendicular_exactly(const Pair<F> (&s)[3], const Pair<F> (&r)[3], Pair<F>
     F p[17], q[17];
     int n = 0;
     const auto add = [&](F a, F b, bool minus) {
-      const Pair<F> t = two_prod_split(a, b);
+      const Pair<F> t = Mul::prod(a, b);
       p[n++] = minus ? F(-t.hi) : t.hi;
       p[n++] = minus ? F(-t.lo) : t.lo;
     };
@@ -315,16 +317,15 @@ void perpendicular_exactly(const Pair<F> (&s)[3], const Pair<F> (&r)[3], Pair<F>
   }
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const Pair<F> a = mul_pair(r[j], w[k]), b = mul_pair(r[k], w[j]);
+    const Pair<F> a = mul_pair<Mul>(r[j], w[k]), b = mul_pair<Mul>(r[k], w[j]);
     const Pair<F> t = two_sum(a.hi, F(-b.hi));
     y[i] = fast_two_sum(t.hi, F(t.lo + F(a.lo - b.lo)));
   }
 }
 
-template <class F>
+template <class Mul = SplitProduct, class F>
 Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
-  const Pair<F> a = two_prod_split(f.hi, r.hi), b = two_prod_split(f.hi, r.lo), c = two_prod_split(f.lo, r.hi),
-                d = two_prod_split(f.lo, r.lo);
+  const Pair<F> a = Mul::prod(f.hi, r.hi), b = Mul::prod(f.hi, r.lo), c = Mul::prod(f.lo, r.hi), d = Mul::prod(f.lo, r.lo);
   F p[11] = {s.hi, s.lo, F(-a.hi), F(-a.lo), F(-b.hi), F(-b.lo), F(-c.hi), F(-c.lo), F(-d.hi), F(-d.lo), F(0)};
   F q[11];
   for (int i = 0; i < 11; ++i) q[i] = p[i];
@@ -336,7 +337,7 @@ Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
 
 // The witness direction through the centre: y = r x e_i, i the axis of the smallest |r_i|
 // (exact comparison of the pairs; first on ties), e_x when r = 0.
-template <class F>
+template <class Mul = SplitProduct, class F>
 void through_centre_direction(const SegSphLocal<F>& L, Pair<F> (&n)[3]) {
   if (L.r_zero) {
     n[0] = {F(1), F(0)}, n[1] = {F(0), F(0)}, n[2] = {F(0), F(0)};
@@ -357,7 +358,7 @@ void through_centre_direction(const SegSphLocal<F>& L, Pair<F> (&n)[3]) {
   h[best] = F(0), l[best] = F(0);
   h[j] = L.r[k], l[j] = L.rl[k];
   h[k] = F(-L.r[j]), l[k] = F(-L.rl[j]);
-  unit_dw(h, l, n);
+  unit_dw<Mul>(h, l, n);
 }
 
 }  // namespace detail
@@ -448,7 +449,7 @@ void seg_sph_xx(const LocalDW<F>& D, bool interior, Rational& xx) {
 }  // namespace detail
 
 namespace detail {
-template <class F>
+template <class Mul = SplitProduct, class F>
 Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w) {
   Proximity<F> res;
   const auto L = detail::seg_sph_local(seg, sp);
@@ -474,7 +475,7 @@ Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w
   if (R.x_zero) {
     for (auto& xi : x) xi = {F(0), F(0)};
   } else if (b == detail::Branch::interior) {
-    const auto Q = detail::quantities(D);
+    const auto Q = detail::quantities<Mul>(D);
     for (int i = 0; i < 3; ++i) x[i] = Q.l[i];
     q = {F(-Q.D.hi), F(-Q.D.lo)};
     // the foot's rounding (33u^2 |s| per component) moves q by up to 66u^2 |x||s|: where
@@ -490,13 +491,13 @@ Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w
     // |x| (|x| < 2304u |s|), the sphere's witness takes its direction from r x (s x r) instead
     near_line = xn < F(F(2304) * u) * sn;
     if (F(F(3168) * u) * F(xn * sn) >= std::fabs(q.hi)) {
-      for (int i = 0; i < 3; ++i) x[i] = detail::foot_exactly(D.s[i], Q.f, D.r[i]);
-      const Pair<F> d2 = detail::rho2_minus_norm2(D.rho, x);
+      for (int i = 0; i < 3; ++i) x[i] = detail::foot_exactly<Mul>(D.s[i], Q.f, D.r[i]);
+      const Pair<F> d2 = detail::rho2_minus_norm2<F, Mul>(D.rho, x);
       q = {F(-d2.hi), F(-d2.lo)};
     }
   } else {
     for (int i = 0; i < 3; ++i) x[i] = D.s[i];
-    q = detail::c_dw(D);
+    q = detail::c_dw<Mul>(D);
   }
   Vec3<F> xw;  // the closest point, world coordinates
   if (b == detail::Branch::source)
@@ -528,12 +529,12 @@ Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w
         if (res.intersect ? g < F(0) : g > F(0))
           (res.intersect ? res.depth : res.distance) = std::ldexp(std::fabs(g), L.scale);
       } else {
-        const Pair<F> len = detail::norm_dw(xh, xl);
+        const Pair<F> len = detail::norm_dw<Mul>(xh, xl);
         const Pair<F> t = two_sum(len.hi, L.rho);
         const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
         const F num = res.intersect ? F(-q.hi) : q.hi;
         if (num > F(0)) {
-          const Pair<F> v = div_pair(res.intersect ? Pair<F>{F(-q.hi), F(-q.lo)} : q, den);
+          const Pair<F> v = div_pair<Mul>(res.intersect ? Pair<F>{F(-q.hi), F(-q.lo)} : q, den);
           (res.intersect ? res.depth : res.distance) = Pow2<F>(-L.scale)(F(v.hi + v.lo));
         }
       }
@@ -544,14 +545,14 @@ Proximity<F> proximity_dw(const Segment<F>& seg, const Sphere<F>& sp, unsigned w
   if (w & want_witnesses) {
     Pair<F> n[3];
     if (x_zero) {
-      detail::through_centre_direction(L, n);
+      detail::through_centre_direction<Mul>(L, n);
     } else if (near_line) {
       Pair<F> y[3];
-      detail::perpendicular_exactly(D.s, D.r, y);
+      detail::perpendicular_exactly<Mul>(D.s, D.r, y);
       const F yh[3] = {y[0].hi, y[1].hi, y[2].hi}, yl[3] = {y[0].lo, y[1].lo, y[2].lo};
-      detail::unit_dw(yh, yl, n);
+      detail::unit_dw<Mul>(yh, yl, n);
     } else {
-      detail::unit_dw(xh, xl, n);
+      detail::unit_dw<Mul>(xh, xl, n);
     }
     res.on_a = xw;
     for (int i = 0; i < 3; ++i) res.on_b[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
@@ -567,7 +568,7 @@ Proximity<F> proximity(const Segment<F>& seg, const Sphere<F>& sp, unsigned w = 
   if constexpr (std::is_same_v<F, float>)
     return detail::rounded(proximity(detail::widened(seg), detail::widened(sp), w));
   else
-    return with_fma([&] { return detail::proximity_dw(seg, sp, w); });
+    return with_products([&](auto mul) { return detail::proximity_dw<decltype(mul)>(seg, sp, w); });
 }
 
 }  // namespace cdref::robust

@@ -43,8 +43,16 @@
 //     rho summed once; before that rounding g is within 26u^2 (|v| + rho) of the truth, so
 //     where |g| > 520u fl(|v^| + rho) its sign is certain and g is within half an ulp plus
 //     u|g|/16 of the distance or depth (item 4's dot2 and the quotient are skipped). The
-//     sphere's witness from the same |v| (n_i = div_pair(v_i, |v|): 30u^2, along_dw). 244 -> 84
+//     sphere's witness from the same |v|: 1/|v| by recip_pair (31u^2 with |v|'s), n_i = v_i
+//     (1/|v|) by mul_pair (39u^2 with the pairs' rounding), along_dw: within half an ulp plus
+//     43u^2 max(|p_i|, rho |n_i|), one ulp unless it cancels to below 86u rho |n_i|. 244 -> 84
 //     ns a case on 2,000 uniform cases (standalone loop, 2026-11-29).
+//  8. Item 7 runs on the terms of item 3 without either scaling (e1 = e2 = 0), as
+//     sphere_sphere.hpp's item 8: where the filter decides, W + rho^2 + C <= max / 4 bounds
+//     every |v_i|^2, rho^2 and |c|^2, so nothing in item 7 overflows, and a clamped axis has
+//     h_i < |c_i| (an extent beyond that range leaves the centre inside, where item 7 declines).
+//     The clamps are exact comparisons either way. Only where item 7 declines are the scaled
+//     terms formed.
 //
 // decide() and intersect() first try a filter on the stable tier's arithmetic (at double the
 // oracle's first stage before it, oracle/sphere_filter.hpp; this one where that leaves the
@@ -98,13 +106,16 @@ struct SphBoxLocal {
   bool exact = true;
 };
 
+// (scaled = false: e1 = e2 = 0, item 8)
 template <class F>
-SphBoxLocal<F> sph_box_local(const Sphere<F>& sp, const Box<F>& box) {
+SphBoxLocal<F> sph_box_local(const Sphere<F>& sp, const Box<F>& box, bool scaled = true) {
   SphBoxLocal<F> L;
-  F m = sp.radius;
-  for (int i = 0; i < 3; ++i)
-    m = std::max({m, std::fabs(sp.center[i]), std::fabs(box.center[i]), box.extent[i]});
-  L.e1 = overflow_guard(m);
+  if (scaled) {
+    F m = sp.radius;
+    for (int i = 0; i < 3; ++i)
+      m = std::max({m, std::fabs(sp.center[i]), std::fabs(box.center[i]), box.extent[i]});
+    L.e1 = overflow_guard(m);
+  }
   L.rho1 = scale_down(sp.radius, L.e1, L.exact);
   F top = L.rho1;
   for (int i = 0; i < 3; ++i) {
@@ -127,6 +138,8 @@ SphBoxLocal<F> sph_box_local(const Sphere<F>& sp, const Box<F>& box) {
       top = std::max({top, std::fabs(q.hi), std::fabs(q.lo), std::fabs(p.lo)});
     }
   }
+  L.rho = L.rho1;
+  if (!scaled) return L;
   const int e2 = top > F(0) ? exponent_of(top) : 0;
   const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
@@ -320,8 +333,9 @@ unsigned sph_box_fast(const SphBoxLocal<F>& L, const Sphere<F>& sp, int cls, uns
   if ((w & (want_distance | want_depth)) && first_look_gap(len, L.rho, F(0), cls, L.scale, w, res))
     done |= want_distance | want_depth;
   if (w & want_witnesses) {
+    const Pair<F> r = recip_pair<Mul>(len);  // 1 / |v| (1 + 31u^2)
     for (int i = 0; i < 3; ++i)
-      res.on_a[i] = along_dw(sp.center[i], sp.radius, div_pair<Mul>(Pair<F>{vh[i], vl[i]}, len));  // v_i / |v| (1 + 30u^2)
+      res.on_a[i] = along_dw(sp.center[i], sp.radius, mul_pair<Mul>(Pair<F>{vh[i], vl[i]}, r));  // v_i / |v| (1 + 39u^2)
     done |= want_witnesses;
   }
   return done;
@@ -330,22 +344,31 @@ unsigned sph_box_fast(const SphBoxLocal<F>& L, const Sphere<F>& sp, int cls, uns
 template <class F, class Mul = SplitProduct>
 Proximity<F> proximity_dw(const Sphere<F>& sp, const Box<F>& box, unsigned w) {
   Proximity<F> res;
-  const auto L = detail::sph_box_local(sp, box);
   const int cls = detail::sphere_box_filter(sp, box);
-  Vec3<F> x = sp.center;  // the closest point of the box, world coordinates
-  for (int i = 0; i < 3; ++i)
-    if (L.clamp[i] != 0) x[i] = box.center[i] + (L.clamp[i] > 0 ? box.extent[i] : F(-box.extent[i]));
+  const auto closest_point = [&](const SphBoxLocal<F>& L) {  // the box's point closest to the centre
+    Vec3<F> x = sp.center;
+    for (int i = 0; i < 3; ++i)
+      if (L.clamp[i] != 0) x[i] = box.center[i] + (L.clamp[i] > 0 ? box.extent[i] : F(-box.extent[i]));
+    return x;
+  };
+  unsigned done = 0;
   if (cls != 0) {
+    // item 7 on the terms as they are (item 8); the clamps are the same either way
+    const auto U = detail::sph_box_local(sp, box, false);
     const unsigned asked = w & (want_distance | want_depth | want_witnesses);
-    const unsigned done = asked ? sph_box_fast<Mul>(L, sp, cls, w, res) : 0u;
-    if (done & want_witnesses) res.on_b = x;
+    done = asked ? sph_box_fast<Mul>(U, sp, cls, w, res) : 0u;
     if ((asked & ~done) == 0) {
+      const Vec3<F> x = closest_point(U);
+      if (done & want_witnesses) res.on_b = x;
       res.intersect = cls < 0;
       if (w & want_closest) res.closest = x;
       return res;
     }
     w &= ~done;
   }
+  const auto L = detail::sph_box_local(sp, box);
+  const Vec3<F> x = closest_point(L);
+  if (done & want_witnesses) res.on_b = x;
   const detail::Bounded<F> qb = L.outside ? detail::sph_box_q(L) : detail::Bounded<F>{F(0), F(0)};
   const F q = qb.value;
   bool q_certain = false;  // Q's sign as decide() takes it (exact where dot2 cannot tell it)
@@ -366,11 +389,11 @@ Proximity<F> proximity_dw(const Sphere<F>& sp, const Box<F>& box, unsigned w) {
       // summed as if in triple precision; |v| + rho as a double word (norm_dw: 18u^2), the
       // quotient by div_pair, one rounding (as sphere_sphere.hpp)
       const F Q = qb.err <= F(2.125) * detail::unit_roundoff<F>() * std::fabs(q) ? q : detail::sph_box_q3(L);
-      const Pair<F> len = detail::norm_dw(vh, vl);
+      const Pair<F> len = detail::norm_dw<Mul>(vh, vl);
       const Pair<F> t = two_sum(len.hi, L.rho);
       const Pair<F> den = fast_two_sum(t.hi, F(t.lo + len.lo));
       if (den.hi > F(0) && (Q > F(0)) == (qs > 0)) {
-        const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
+        const Pair<F> d = div_pair<Mul>(Pair<F>{std::fabs(Q), F(0)}, den);
         const F dv = std::ldexp(F(d.hi + d.lo), L.scale);
         if ((w & want_distance) && qs > 0) res.distance = dv;
         if ((w & want_depth) && qs < 0) res.depth = dv;
@@ -378,7 +401,7 @@ Proximity<F> proximity_dw(const Sphere<F>& sp, const Box<F>& box, unsigned w) {
     }
     if (w & want_witnesses) {
       Pair<F> n[3];
-      detail::unit_dw(vh, vl, n);
+      detail::unit_dw<Mul>(vh, vl, n);
       for (int i = 0; i < 3; ++i) res.on_a[i] = detail::along_dw(sp.center[i], sp.radius, n[i]);
       res.on_b = x;
     }

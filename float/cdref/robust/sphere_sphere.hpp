@@ -43,12 +43,25 @@
 //     below u of its high) + 3.01u^2 (|v| + s) (t.lo plus it) < 32u^2 (|v^| + s) of |v| - s.
 //     Where |g| > 520u fl(|v^| + s) that is below u|g|/16, so g's sign is Q's (the filter's)
 //     and g rounded once is within half an ulp plus u|g|/16 of the distance or the depth:
-//     items 2-4 are skipped. The witnesses from the same |v|: n_i = div_pair(v_i, |v|)
-//     (27u^2), then along_dw as in item 5, with its bound. Where the CPU has fused
+//     items 2-4 are skipped. The witnesses from the same |v|: 1/|v| by recip_pair (its 10u^2
+//     and |v|'s 18u^2: 28u^2), n_i = v_i (1/|v|) by mul_pair (4u^2 more, 33u^2 with the
+//     rounding), then along_dw as in item 5: within half an ulp plus 37u^2 max(|p_i|, rho
+//     |n_i|), one ulp unless the witness cancels to below 74u rho |n_i| (one division where
+//     three div_pairs took six). Where the CPU has fused
 //     multiply-adds the exact products here are fma's (eft.hpp, with_products), else
 //     Dekker's: the same pairs. On 2,000 uniform cases this first look took the full query
 //     from 210 to 76 ns a case (standalone loop, 2026-11-29); near touching (the filter
 //     undecided, or |g| within 520u of |v| + s) items 2-5 run as before.
+//  8. Item 7 runs on the pairs of item 1 without either scaling (e1 = e2 = 0): where the
+//     filter below decides, m = fl(|v^|^2 + s^2) <= max / 4, so no difference, square or sum
+//     in item 7 overflows (nor Dekker's split, |v_i| <= 2^(emax/2)); the other purpose of the
+//     scaling, squares clear of the subnormal range, is item 7's own test, now on |v|'s
+//     largest component as it is (>= 2^-401 at double: every square and product of a high
+//     and a low part is normal, and a component whose square underflows errs by eta against
+//     |v|^2 >= 2^-802). Every bound of item 7 is relative, so it holds as it is. Only where
+//     item 7 declines are the scaled pairs formed. 2,000 uniform cases (standalone loop,
+//     2026-11-30, g++ 12.2 -O3): distance and depth 50.7 -> 26.1 ns, every output 78.5 ->
+//     54 ns a case.
 //
 // decide() and intersect() first try a filter on the stable tier's arithmetic (Box2D's, in F):
 // v_i = fl(cA_i - cB_i), s = fl(rhoA + rhoB), vv = fl(v.v), ss = fl(s s), q = fl(vv - ss). With
@@ -95,9 +108,23 @@ struct SphereSphereLocal {
   bool zero_v = false, all_zero = false;
 };
 
+// (scaled = false: the pairs as they are, e1 = e2 = 0; item 8)
 template <class F>
-SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b) {
+SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b, bool scaled = true) {
   SphereSphereLocal<F> L;
+  if (!scaled) {
+    for (int i = 0; i < 3; ++i) {
+      const Pair<F> p = two_sum(a.center[i], F(-b.center[i]));
+      L.v[i] = p.hi;
+      L.vl[i] = p.lo;
+    }
+    const Pair<F> sp = two_sum(a.radius, b.radius);
+    L.s = sp.hi;
+    L.sl = sp.lo;
+    L.zero_v = L.v[0] == F(0) && L.v[1] == F(0) && L.v[2] == F(0);
+    L.all_zero = L.zero_v && L.s == F(0);
+    return L;
+  }
   F m = std::max(a.radius, b.radius);
   for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(a.center[i]), std::fabs(b.center[i])});
   const int e1 = overflow_guard(m);
@@ -192,26 +219,26 @@ int scale_to_top(const F (&h)[3], const F (&l)[3], F (&hs)[3], F (&ls)[3]) {
   }
   return e;
 }
-template <class F>
+template <class Mul = SplitProduct, class F>
 void unit_dw(const F (&h)[3], const F (&l)[3], Pair<F> (&n)[3]) {
   F hs[3], ls[3];
   scale_to_top(h, l, hs, ls);
-  const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
-  for (int i = 0; i < 3; ++i) n[i] = len.hi > F(0) ? div_pair(Pair<F>{hs[i], ls[i]}, len) : Pair<F>{F(0), F(0)};
+  const Pair<F> len = sqrt_pair<Mul>(norm2_dw<Mul>(hs, ls));
+  for (int i = 0; i < 3; ++i) n[i] = len.hi > F(0) ? div_pair<Mul>(Pair<F>{hs[i], ls[i]}, len) : Pair<F>{F(0), F(0)};
 }
-template <class F>
+template <class Mul = SplitProduct, class F>
 void unit_dw(const Pair<F> (&x)[3], Pair<F> (&n)[3]) {
   const F h[3] = {x[0].hi, x[1].hi, x[2].hi}, l[3] = {x[0].lo, x[1].lo, x[2].lo};
-  unit_dw(h, l, n);
+  unit_dw<Mul>(h, l, n);
 }
 
 // |x| for a nonzero x = h + l (normalized pairs) as a double word, scaled as in unit_dw and
 // back: relative error <= 18u^2 (14u^2 from norm2_dw, 4u^2 sqrt_pair).
-template <class F>
+template <class Mul = SplitProduct, class F>
 Pair<F> norm_dw(const F (&h)[3], const F (&l)[3]) {
   F hs[3], ls[3];
   const Pow2<F> up(-scale_to_top(h, l, hs, ls));
-  const Pair<F> len = sqrt_pair(norm2_dw(hs, ls));
+  const Pair<F> len = sqrt_pair<Mul>(norm2_dw<Mul>(hs, ls));
   return {up(len.hi), up(len.lo)};
 }
 
@@ -356,8 +383,9 @@ unsigned sphere_sphere_fast(const SphereSphereLocal<F>& L, const Sphere<F>& a, c
   if ((w & (want_distance | want_depth)) && first_look_gap(len, L.s, L.sl, cls, L.scale, w, res))
     done |= want_distance | want_depth;
   if (w & want_witnesses) {
+    const Pair<F> r = recip_pair<Mul>(len);  // 1 / |v| (1 + 28u^2)
     for (int i = 0; i < 3; ++i) {
-      const Pair<F> n = div_pair<Mul>(Pair<F>{L.v[i], L.vl[i]}, len);  // v_i / |v| (1 + 27u^2)
+      const Pair<F> n = mul_pair<Mul>(Pair<F>{L.v[i], L.vl[i]}, r);  // v_i / |v| (1 + 33u^2)
       res.on_a[i] = along_dw(a.center[i], F(-a.radius), n);
       res.on_b[i] = along_dw(b.center[i], b.radius, n);
     }
@@ -369,12 +397,16 @@ unsigned sphere_sphere_fast(const SphereSphereLocal<F>& L, const Sphere<F>& a, c
 template <class F, class Mul = SplitProduct>
 Proximity<F> proximity_dw(const Sphere<F>& a, const Sphere<F>& b, unsigned w) {
   Proximity<F> res;
-  const auto L = detail::sphere_sphere_local(a, b);
   const int cls = detail::sphere_sphere_filter(a, b);
   if (cls != 0) res.intersect = cls < 0;
   const unsigned asked = w & (want_distance | want_depth | want_witnesses);
-  const unsigned done = asked ? sphere_sphere_fast<Mul>(L, a, b, cls, w, res) : 0u;
-  if (cls != 0 && (asked & ~done) == 0) return res;
+  unsigned done = 0;
+  if (cls != 0) {
+    // item 7 on the pairs as they are (item 8)
+    if (asked) done = sphere_sphere_fast<Mul>(sphere_sphere_local(a, b, false), a, b, cls, w, res);
+    if ((asked & ~done) == 0) return res;
+  }
+  const auto L = detail::sphere_sphere_local(a, b);
   w &= ~done;
   const detail::Bounded<F> qb = L.all_zero ? detail::Bounded<F>{F(0), F(0)} : detail::sphere_sphere_q(L);
   const F q = qb.value;
@@ -390,11 +422,11 @@ Proximity<F> proximity_dw(const Sphere<F>& a, const Sphere<F>& b, unsigned w) {
     const F Q = qb.err <= F(2.125) * detail::unit_roundoff<F>() * aq ? q : detail::sphere_sphere_q3(L);
     // |v| + s as a double word (norm_dw: 18u^2), the quotient by div_pair, one rounding
     Pair<F> len{F(0), F(0)};
-    if (!L.zero_v) len = detail::norm_dw(L.v, L.vl);
+    if (!L.zero_v) len = detail::norm_dw<Mul>(L.v, L.vl);
     const Pair<F> t = two_sum(len.hi, L.s);
     const Pair<F> den = fast_two_sum(t.hi, F(t.lo + F(len.lo + L.sl)));
     if (den.hi > F(0) && (Q > F(0)) == (q > F(0))) {
-      const Pair<F> d = div_pair(Pair<F>{std::fabs(Q), F(0)}, den);
+      const Pair<F> d = div_pair<Mul>(Pair<F>{std::fabs(Q), F(0)}, den);
       const F dv = Pow2<F>(-L.scale)(F(d.hi + d.lo));
       if ((w & want_distance) && q > F(0)) res.distance = dv;
       if ((w & want_depth) && q < F(0)) res.depth = dv;
@@ -402,7 +434,7 @@ Proximity<F> proximity_dw(const Sphere<F>& a, const Sphere<F>& b, unsigned w) {
   }
   if (w & want_witnesses) {
     Pair<F> n[3] = {{F(1), F(0)}, {F(0), F(0)}, {F(0), F(0)}};
-    if (!L.zero_v) detail::unit_dw(L.v, L.vl, n);
+    if (!L.zero_v) detail::unit_dw<Mul>(L.v, L.vl, n);
     for (int i = 0; i < 3; ++i) {
       res.on_a[i] = detail::along_dw(a.center[i], F(-a.radius), n[i]);
       res.on_b[i] = detail::along_dw(b.center[i], b.radius, n[i]);
