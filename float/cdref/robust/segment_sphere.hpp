@@ -323,18 +323,6 @@ void perpendicular_exactly(const Pair<F> (&s)[3], const Pair<F> (&r)[3], Pair<F>
   }
 }
 
-template <class Mul = SplitProduct, class F>
-Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
-  const Pair<F> a = Mul::prod(f.hi, r.hi), b = Mul::prod(f.hi, r.lo), c = Mul::prod(f.lo, r.hi), d = Mul::prod(f.lo, r.lo);
-  F p[11] = {s.hi, s.lo, F(-a.hi), F(-a.lo), F(-b.hi), F(-b.lo), F(-c.hi), F(-c.lo), F(-d.hi), F(-d.lo), F(0)};
-  F q[11];
-  for (int i = 0; i < 11; ++i) q[i] = p[i];
-  const F hi = sum_k(p, 3);
-  q[10] = -hi;
-  const F lo = sum_k(q, 3);
-  return two_sum(hi, lo);
-}
-
 // The witness direction through the centre: y = r x e_i, i the axis of the smallest |r_i|
 // (exact comparison of the pairs; first on ties), e_x when r = 0.
 template <class Mul = SplitProduct, class F>
