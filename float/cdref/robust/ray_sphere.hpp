@@ -19,7 +19,8 @@
 //  2. a, b, c as double-words: the exact products sh_i rh_i (one fused multiply-add each
 //     where the CPU has it, else Dekker's two_prod_split: eft.hpp, with_products; the same
 //     pair wherever the product does not underflow; the full ray cast on 2,000 uniform
-//     cases 40.3 -> 34.2 ns against the split products, standalone loop, 2026-11-29) summed by a two_sum chain, and the products' low parts, the chain's
+//     cases 40.3 -> 34.2 ns against the split products, standalone loop, 2026-11-29)
+//     summed by a two_sum chain, and the products' low parts, the chain's
 //     errors and the cross terms sh_i rl_i + sl_i rh_i summed in F (sl_i rl_i <= u^2 |sh_i rh_i|
 //     is dropped).
 //  3. The discriminant from the perpendicular foot: b^2 - a c = a D, D = rho^2 - |l|^2,
@@ -425,20 +426,51 @@ void exact_entry(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& 
   }
 }
 
-// s - f r for pairs s, r and a double-word f, as a double word from the exact products: the
-// ten parts summed as if in triple precision (sum_k, K = 3), then the residual against that sum
-// likewise: within u^2 |s - f r| + 3.2e4 u^3 (|s| + |f r|) (twice sum_k's gamma_20^3 of the
-// parts, (1 + u) (|s| + |f r|) each time), plus 10 eta where a product underflows.
+// The sum S of the first N - 1 floats of p (p[N - 1] a free slot) as a double word: summed as
+// if in triple precision (sum_k, K = 3), then the residual S - hi likewise, then one exact
+// two_sum: within u^2 |S| + 3 gamma_{2N-2}^3 sum |p_i| of S.
+template <class F, std::size_t N>
+Pair<F> expansion_dw(const F (&p)[N]) {
+  F a[N], q[N];
+  for (std::size_t i = 0; i + 1 < N; ++i) a[i] = q[i] = p[i];
+  a[N - 1] = F(0);
+  const F hi = sum_k(a, 3);
+  q[N - 1] = -hi;
+  return two_sum(hi, sum_k(q, 3));
+}
+
+// s - f r for pairs s, r and a double-word f, as a double word from its ten exact parts
+// (expansion_dw): within u^2 |s - f r| + 3.2e4 u^3 (|s| + |f r|) (3 gamma_20^3 of the parts,
+// (1 + u) (|s| + |f r|)), plus 10 eta where a product underflows.
 template <class Mul = SplitProduct, class F>
 Pair<F> foot_exactly(const Pair<F>& s, const Pair<F>& f, const Pair<F>& r) {
   const Pair<F> a = Mul::prod(f.hi, r.hi), b = Mul::prod(f.hi, r.lo), c = Mul::prod(f.lo, r.hi), d = Mul::prod(f.lo, r.lo);
-  F p[11] = {s.hi, s.lo, F(-a.hi), F(-a.lo), F(-b.hi), F(-b.lo), F(-c.hi), F(-c.lo), F(-d.hi), F(-d.lo), F(0)};
-  F q[11];
-  for (int i = 0; i < 11; ++i) q[i] = p[i];
-  const F hi = sum_k(p, 3);
-  q[10] = -hi;
-  const F lo = sum_k(q, 3);
-  return two_sum(hi, lo);
+  return expansion_dw({s.hi, s.lo, F(-a.hi), F(-a.lo), F(-b.hi), F(-b.lo), F(-c.hi), F(-c.lo), F(-d.hi), F(-d.lo), F(0)});
+}
+
+// Item A's bounds (header) on a = |r|^2, b = s.r and f = b / a, from the high parts (scaled
+// units): S2, R2 upper bounds of |s|^2 and |r|^2, ns and nr of |s| and |r|, err_a and err_b,
+// a_lo a lower bound of a (not positive: no bound), delta = |f^ - f|'s.
+template <class F>
+struct FootBounds {
+  F S2, R2, ns, nr, err_a, err_b, a_lo, delta;
+};
+template <class F>
+FootBounds<F> foot_bounds(const LocalDW<F>& L, const Quantities<F>& Q) {
+  const F u = std::numeric_limits<F>::epsilon() / F(2);
+  constexpr F E = std::numeric_limits<F>::denorm_min();
+  FootBounds<F> B;
+  // (|s_i| <= (1 + u) |sh_i|)
+  B.S2 = F(L.s[0].hi * L.s[0].hi + L.s[1].hi * L.s[1].hi + L.s[2].hi * L.s[2].hi) * F(1 + 8 * u);
+  B.R2 = F(Q.a.hi * F(1 + 8 * u)) + F(64) * E;
+  B.ns = std::sqrt(B.S2) * F(1 + 2 * u);
+  B.nr = std::sqrt(B.R2) * F(1 + 2 * u);
+  B.err_a = F(52) * u * u * B.R2 + F(32) * E;
+  B.err_b = F(51) * u * u * F(B.ns * B.nr) + F(32) * E;
+  B.a_lo = Q.a.hi * F(1 - 4 * u) - B.err_a;
+  B.delta = B.a_lo > F(0) ? B.err_b / B.a_lo + F(std::fabs(Q.f.hi) * F(1 + 4 * u)) * F(B.err_a / B.a_lo + F(8) * u * u)
+                          : std::numeric_limits<F>::infinity();
+  return B;
 }
 
 // Step 6 (header): the entry point relative to the centre after one Newton step on lambda, each
@@ -459,18 +491,12 @@ NewtonEntry<F> newton_entry(const LocalDW<F>& L, const Quantities<F>& Q, const P
   if (!(L.rho >= exp2_of<F>(-400)) || !(h.hi > F(0)) || !std::isfinite(errD_over_uD)) return out;
   // the prior bound on lambda_0 - lambda (item A's delta for f, step 5's relative error for h,
   // lambda_0's own rounding to a double word)
-  F S2 = 0;
-  for (int i = 0; i < 3; ++i) S2 += L.s[i].hi * L.s[i].hi;
-  S2 *= F(1 + 8 * u);
-  const F R2 = F(Q.a.hi * F(1 + 8 * u)) + F(64) * E;
-  const F ns = std::sqrt(S2) * F(1 + 2 * u), nr = std::sqrt(R2) * F(1 + 2 * u);
-  const F err_a = F(52) * u * u * R2 + F(32) * E, err_b = F(51) * u * u * F(ns * nr) + F(32) * E;
-  const F a_lo = Q.a.hi * F(1 - 4 * u) - err_a;
+  const FootBounds<F> B = foot_bounds(L, Q);
   // h's relative error (step 5), at most 1/4 here, so that the true h is below 4/3 of h^
   const F rel_h = F(u * errD_over_uD) / F(2) + F(40) * u * u;
-  if (!(a_lo > F(0)) || !(rel_h <= F(0.25))) return out;
+  if (!(B.a_lo > F(0)) || !(rel_h <= F(0.25))) return out;
   const F fa = fabs(Q.f.hi) * F(1 + 4 * u), ha = h.hi * F(1.34);
-  const F d_prior = err_b / a_lo + fa * F(err_a / a_lo + F(8) * u * u) + ha * rel_h + F(4) * u * u * F(fa + ha);
+  const F d_prior = B.delta + ha * rel_h + F(4) * u * u * F(fa + ha);
   // lambda_0 = -(f + h) as a double word; x_0 = s + lambda_0 r exactly on the line, formed
   // from the exact products (foot_exactly with -lambda_0): X_i within eps_i of it
   const Pair<F> t0 = two_sum(F(-Q.f.hi), F(-h.hi));
@@ -504,15 +530,10 @@ NewtonEntry<F> newton_entry(const LocalDW<F>& L, const Quantities<F>& Q, const P
   const F E_lam = F(F(F(Q.a.hi * F(1 + 8 * u)) * F(d_prior * d_prior) + E_G) + Da * E_gp) / gp_lo + F(F(2.01) * u) * Da;
   if (!std::isfinite(E_lam)) return out;
   for (int i = 0; i < 3; ++i) {
-    // y_i = X_i - Delta r_i: six exact parts, as foot_exactly sums them (u^2 |y_i| + 3
-    // gamma_12^3 of the parts)
+    // y_i = X_i - Delta r_i from its six exact parts (expansion_dw: u^2 |y_i| + 3 gamma_12^3
+    // of the parts)
     const Pair<F> P = Mul::prod(Dl, L.r[i].hi), Pl = Mul::prod(Dl, L.r[i].lo);
-    F p[7] = {X[i].hi, X[i].lo, F(-P.hi), F(-P.lo), F(-Pl.hi), F(-Pl.lo), F(0)};
-    F q[7];
-    for (int k = 0; k < 7; ++k) q[k] = p[k];
-    const F hi = sum_k(p, 3);
-    q[6] = -hi;
-    out.y[i] = two_sum(hi, sum_k(q, 3));
+    out.y[i] = expansion_dw({X[i].hi, X[i].lo, F(-P.hi), F(-P.lo), F(-Pl.hi), F(-Pl.lo), F(0)});
     const F ri = fabs(L.r[i].hi) * F(1 + 2 * u);
     const F parts = fabs(X[i].hi) * F(1 + 2 * u) + Da * ri;
     out.err[i] = F(F(eps[i] + ri * E_lam) + F(F(u * u) * F(fabs(out.y[i].hi) * F(1 + 2 * u)) + F(F(6e3) * u * u * u) * parts)) +
@@ -748,17 +769,13 @@ Decision decide_cast_with(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sp
     return out;
   }
   const Quantities<F>& Q = A.Q;
-  const F R2 = F(Q.a.hi * F(1 + 8 * u)) + F(64) * E;
-  const F ns = std::sqrt(S2) * F(1 + 2 * u), nr = std::sqrt(R2) * F(1 + 2 * u);
-  const F err_a = F(52) * u * u * R2 + F(32) * E;
-  const F err_b = F(51) * u * u * F(ns * nr) + F(32) * E;
-  const F a_lo = Q.a.hi * F(1 - 4 * u) - err_a;  // a lower bound of a
-  if (!(a_lo > F(0))) return out;
+  const FootBounds<F> B = foot_bounds(L, Q);  // item A: a, b, f (S2 as above)
+  const F R2 = B.R2, ns = B.ns, err_a = B.err_a, err_b = B.err_b, delta = B.delta;
+  if (!(B.a_lo > F(0))) return out;
   // D: its own sum, the foot's rounding e and the quotient's error delta (header)
   const F L2 = F(Q.lh[0] * Q.lh[0] + Q.lh[1] * Q.lh[1] + Q.lh[2] * Q.lh[2]) * F(1 + 8 * u);
   const F nl = std::sqrt(L2) * F(1 + 2 * u);
   const F e = F(33) * u * u * ns;
-  const F delta = err_b / a_lo + F(fabs(Q.f.hi) * F(1 + 4 * u)) * F(err_a / a_lo + F(8) * u * u);
   const F err_D = F(F(F(56) * u * u * F(rho2 + L2) + F(2) * F(nl + e) * e) + F(e * e + F(delta * delta) * R2)) + F(64) * E;
   const Bounded<F> D{Q.D.hi, g * err_D};
   const Bounded<F> b{Q.b.hi, g * err_b};

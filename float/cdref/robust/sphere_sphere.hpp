@@ -60,7 +60,7 @@
 //     and a low part is normal, and a component whose square underflows errs by eta against
 //     |v|^2 >= 2^-802). Every bound of item 7 is relative, so it holds as it is. Only where
 //     item 7 declines are the scaled pairs formed. 2,000 uniform cases (standalone loop,
-//     2026-11-30, g++ 12.2 -O3): distance and depth 50.7 -> 26.1 ns, every output 78.5 ->
+//     2026-11-29, g++ 12.2 -O3): distance and depth 50.7 -> 26.1 ns, every output 78.5 ->
 //     54 ns a case.
 //
 // decide() and intersect() first try a filter on the stable tier's arithmetic (Box2D's, in F):
@@ -112,22 +112,12 @@ struct SphereSphereLocal {
 template <class F>
 SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b, bool scaled = true) {
   SphereSphereLocal<F> L;
-  if (!scaled) {
-    for (int i = 0; i < 3; ++i) {
-      const Pair<F> p = two_sum(a.center[i], F(-b.center[i]));
-      L.v[i] = p.hi;
-      L.vl[i] = p.lo;
-    }
-    const Pair<F> sp = two_sum(a.radius, b.radius);
-    L.s = sp.hi;
-    L.sl = sp.lo;
-    L.zero_v = L.v[0] == F(0) && L.v[1] == F(0) && L.v[2] == F(0);
-    L.all_zero = L.zero_v && L.s == F(0);
-    return L;
+  int e1 = 0;
+  if (scaled) {
+    F m = std::max(a.radius, b.radius);
+    for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(a.center[i]), std::fabs(b.center[i])});
+    e1 = overflow_guard(m);
   }
-  F m = std::max(a.radius, b.radius);
-  for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(a.center[i]), std::fabs(b.center[i])});
-  const int e1 = overflow_guard(m);
   F vh[3], vlo[3];
   F top = 0, vtop = 0;
   for (int i = 0; i < 3; ++i) {
@@ -140,7 +130,7 @@ SphereSphereLocal<F> sphere_sphere_local(const Sphere<F>& a, const Sphere<F>& b,
   top = std::max(vtop, sp.hi);
   L.zero_v = vtop == F(0);
   L.all_zero = top == F(0);
-  const int e2 = top > F(0) ? exponent_of(top) : 0;
+  const int e2 = scaled && top > F(0) ? exponent_of(top) : 0;
   const Pow2<F> down(e2);  // x 2^-e2, as ldexp gives it
   for (int i = 0; i < 3; ++i) {
     L.v[i] = down(vh[i]);
