@@ -141,6 +141,36 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
   }
 }
 
+TEST_CASE("the sphere filter's sign of sigma at range near tangency equals the exact one", "[oracle-classify]") {
+  // Shots tangent to the sphere from 10^4 to 10^12 radii away, 10,000 a scale: there the crude
+  // bound on sigma's error (|s|^2 |r|^2) declines and the Cauchy-Schwarz bound or the finer one
+  // decides (float/cdref/oracle/sphere_filter.hpp). Every sign the filter gives is the rational
+  // stage's. Both bounds decide most cases at 10^4 and 10^5 radii and few beyond 10^7 (the band
+  // they leave is about u |s| wide), so the cells hold decisions in both regimes; a bound left
+  // six times too small decided some of them wrongly.
+  std::uint64_t decided = 0, cells = 0;
+  for (const char* name : {"ray-sphere-cast", "segment-sphere-cast", "segment-sphere"}) {
+    const Query q = query_by_name(name);
+    const QueryInfo& qi = info(q);
+    REQUIRE(qi.oracle_stage);
+    const Family& f = family_by_name(q, "tangent-at-range");
+    for (int k : f.scales) {
+      if (k < 4) continue;
+      ++cells;
+      for (std::uint64_t i = 0; i < 10000; ++i) {
+        const Inputs in = make_case(23, q, f, k, i);
+        const int fil = qi.oracle_stage(0, in);
+        if (fil < 0) continue;
+        INFO(name << " tangent-at-range/" << k << " case " << i);
+        REQUIRE(fil == qi.oracle_stage(2, in));
+        ++decided;
+      }
+    }
+  }
+  CHECK(cells >= 24);
+  CHECK(decided > 20000);  // the filter decides in these cells, and is checked there
+}
+
 namespace {
 // Checks one hand-made case: the oracle and each applicable stage equal the book at Gmpq,
 // and returns the oracle's answer and stage.
