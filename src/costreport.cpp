@@ -19,9 +19,9 @@
 //   engines ship, the book at an exact type), timed through the campaign's interface (the
 //   columns' conversion included in their time).
 // Columns: nanoseconds per query (median of interleaved repetitions over the same inputs, one
-// thread; a row under 2 us a query runs once untimed before each timed run, a slower one is
-// timed on the first 2,000 cases), ratio to bare and
-// to the book at double (all outputs), and for the rows the campaign engine runs: the share
+// thread; a row under 2 us a query runs untimed eight times (or for 5 ms) before each timed
+// run, a slower one is timed on the first 2,000 cases), ratio to bare and to
+// the book at double (all outputs), and for the rows the campaign engine runs: the share
 // misclassified on the uniform family and on the query's hard families (every other family),
 // and the p99 and max error in ulps of the row's type of every output group (lambda_enter,
 // lambda_exit, point, normal; distance, depth, witnesses; ...) over all families, graded where
@@ -92,6 +92,15 @@ const Row* find_row(const QueryReport& r, const std::string& name) {
   return nullptr;
 }
 
+// Untimed passes of a fast row: eight, or as many as 5 ms allow.
+void warm_up(const TimedRow::Batch& run, std::size_t count, char* out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int pass = 0; pass < 8; ++pass) {
+    run(count, out);
+    if (std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(5)) return;
+  }
+}
+
 QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int threads) {
   const Family& uni = family_by_name(q, "uniform");
   std::vector<Inputs> cases;
@@ -154,9 +163,15 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     for (std::size_t j = 0; j < rows.size(); ++j) {
       std::size_t disagree = 0;
       const std::size_t count = counts[j];
-      // a row under 2 us a query runs once untimed first, so that every row is timed warm
-      // (its inputs in cache, its branches trained), whichever heavy row ran before it
-      if (r == 0 || times[j].back() < 2000) rows[j].run(count, got.data());
+      // a row under 2 us a query runs untimed first, so that every row is timed warm (its
+      // inputs in cache, its branches trained as a loop over the same pairs frame after frame
+      // trains them), whichever heavy row ran before it: eight passes, or 5 ms of them. One
+      // pass was not enough: the ray cast's rows, timed pass by pass over the same 16,384 cases
+      // after other rows had run, took (ns a query) bare 5.77, 3.44, 2.94, 2.91, 2.85, 2.79,
+      // 2.74, 2.74 and the stable tier's unchecked classification 9.31, 5.88, 5.11, 5.02, 4.97,
+      // 4.93, 4.91, 4.90, and the report had them at 3.3 and 9.3 ns where `cdref_bench` (the
+      // same rows, 50 ms of passes) had 2.6 and 4.8 (2026-11-30, 2-core AMD EPYC).
+      if (r == 0 || times[j].back() < 2000) warm_up(rows[j].run, count, got.data());
       const auto t0 = std::chrono::steady_clock::now();
       rows[j].run(count, got.data());
       const auto t1 = std::chrono::steady_clock::now();
