@@ -93,7 +93,7 @@ void book_double_classification(benchmark::State& st) {
     if (r.name == "book double, classification") row = std::move(r);
   std::vector<char> out(cases.size());
   for (auto _ : st) {
-    row.run(out.size(), out.data());
+    row.run(0, out.size(), out.data());
     benchmark::DoNotOptimize(out.data());
   }
   st.SetItemsProcessed(st.iterations() * std::int64_t(out.size()));

@@ -3,7 +3,10 @@
 // descriptor, fuzz/cdref/fuzz/describe.hpp, as `cdref report` takes them), on 16,384 prepared
 // cases per family (--cases=N): the uniform family, the long-range family at its farthest scale and the
 // query's near-boundary family at its hardest scale (where they exist). Each benchmark runs the
-// row's loop over all those cases per iteration and reports ns per query. After the run, one
+// row's loop over those cases per iteration and reports ns per query; a row prepares
+// timing_windows such sets (campaign.hpp) and each iteration runs the next, so that no pass
+// runs on cases the branch predictor has just seen (README, "Fresh cases for every timed
+// pass"); the exact types' rows run on the first slow_row_cases of the first set. After the run, one
 // table per query and family gives every row's time as a ratio to `bare` (the book's
 // classification at double without input checks) taken in the same run.
 //
@@ -26,9 +29,10 @@ using namespace cdref::fuzz;
 
 namespace {
 
-// Cases per family (--cases=N). The default is far more than a branch predictor can learn: over
-// the same 1024 cases repeated, the book's box and slab tests ran in a third of the time they
-// take on 16,384 (README, "How many cases").
+// Cases per family and set (--cases=N): over the same 1024 cases repeated, the book's box and
+// slab tests ran in a third of the time they take on 16,384 (README, "How many cases"), and
+// over the same 16,384 repeated this machine's predictor still learned the ray cast's (hence
+// the sets).
 std::size_t cases_per_family = 16384;
 
 // "book double, classification" -> "book-double-classification"
@@ -68,7 +72,8 @@ std::vector<TimedRow>& rows_of(CaseSet& s) {
   if (alive != &s) {
     if (alive) std::vector<TimedRow>().swap(alive->rows);
     std::vector<Inputs> cases;
-    for (std::uint64_t i = 0; i < cases_per_family; ++i) cases.push_back(make_case(1, s.q, *s.f, s.scale, i));
+    for (std::uint64_t i = 0; i < cases_per_family * timing_windows; ++i)
+      cases.push_back(make_case(1, s.q, *s.f, s.scale, i));
     s.rows = info(s.q).timed_rows(cases, cases, "");
     alive = &s;
   }
@@ -76,14 +81,19 @@ std::vector<TimedRow>& rows_of(CaseSet& s) {
 }
 
 void run_row(benchmark::State& st, CaseSet* set, std::size_t row) {
-  const TimedRow::Batch& run = rows_of(*set)[row].run;
-  std::vector<char> out(cases_per_family);
+  const TimedRow& r = rows_of(*set)[row];
+  const std::size_t n = std::min(cases_per_family, r.cases);
+  const bool windowed = r.cases >= cases_per_family * timing_windows;
+  std::vector<char> out(n);
+  std::size_t w = 0;
   for (auto _ : st) {
-    run(out.size(), out.data());
+    r.run(w * n, n, out.data());
+    if (windowed) w = (w + 1) % timing_windows;
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
-  st.SetItemsProcessed(st.iterations() * std::int64_t(out.size()));
+  st.SetItemsProcessed(st.iterations() * std::int64_t(n));
+  st.counters["cases"] = double(n);  // queries per iteration (the Reporter's divisor)
 }
 
 const Family* family_named(Query q, std::initializer_list<const char*> names) {
@@ -128,9 +138,12 @@ class Reporter : public benchmark::ConsoleReporter {
     for (const Run& r : runs) {
       if (r.error_occurred || r.iterations == 0) continue;
       const std::string base = r.run_name.function_name;  // as registered (no /min_time: suffix)
-      // seconds per iteration (iterations and aggregates alike), over cases_per_family queries
+      // seconds per iteration (iterations and aggregates alike), over the row's queries per iteration
+      const auto c = r.counters.find("cases");
+      const double per_iteration = c != r.counters.end() && c->second.value > 0 ? double(c->second.value)
+                                                                                 : double(cases_per_family);
       const double per_query =
-          1e9 * r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) / double(cases_per_family);
+          1e9 * r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) / per_iteration;
       if (r.run_type == Run::RT_Aggregate) {
         if (r.aggregate_name == "median") ns[base] = per_query;
       } else if (!ns.count(base) || r.repetitions <= 1) {
@@ -172,8 +185,9 @@ int main(int argc, char** argv) {
     if (a.rfind("--cases=", 0) == 0) {
       char* end = nullptr;
       const unsigned long long n = std::strtoull(a.c_str() + 8, &end, 10);
-      if (a.size() == 8 || *end != '\0' || n == 0 || n > (1ull << 24)) {
-        std::fprintf(stderr, "cdref_bench: --cases needs a whole number from 1 to 16777216, got '%s'\n", a.c_str() + 8);
+      // (every row prepares timing_windows sets of N: as `cdref report --n`, at most 65,536)
+      if (a.size() == 8 || *end != '\0' || n == 0 || n > 65536) {
+        std::fprintf(stderr, "cdref_bench: --cases needs a whole number from 1 to 65536, got '%s'\n", a.c_str() + 8);
         return 2;
       }
       cases_per_family = std::size_t(n);

@@ -53,8 +53,9 @@ using namespace cdref::fuzz;
 
 namespace {
 
-// Rows slower than 2 us a query are timed on this many of the cases (measure(), below).
-constexpr std::size_t slow_cases = 2000;
+// Rows slower than 2 us a query are timed on this many of the cases (measure(), below; the
+// exact types' rows have prepared no more, campaign.hpp).
+constexpr std::size_t slow_cases = slow_row_cases;
 
 struct Row : TimedRow {
   double ns = 0;
@@ -92,19 +93,21 @@ const Row* find_row(const QueryReport& r, const std::string& name) {
   return nullptr;
 }
 
-// Untimed passes of a fast row: eight, or as many as 5 ms allow.
-void warm_up(const TimedRow::Batch& run, std::size_t count, char* out) {
+// Untimed passes of a fast row over its cases from `first` on: eight, or as many as 5 ms allow.
+void warm_up(const TimedRow::Batch& run, std::size_t first, std::size_t count, char* out) {
   const auto t0 = std::chrono::steady_clock::now();
   for (int pass = 0; pass < 8; ++pass) {
-    run(count, out);
+    run(first, count, out);
     if (std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(5)) return;
   }
 }
 
 QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int threads) {
   const Family& uni = family_by_name(q, "uniform");
+  // timing_windows sets of n cases (campaign.hpp), one after another: a fast row's timed pass
+  // r runs on set r (mod timing_windows), never on the set its warm-up ran on
   std::vector<Inputs> cases;
-  for (std::uint64_t i = 0; i < n; ++i) cases.push_back(make_case(1, q, uni, uni.scales.front(), i));
+  for (std::uint64_t i = 0; i < n * timing_windows; ++i) cases.push_back(make_case(1, q, uni, uni.scales.front(), i));
 
   // the oracle where its filters fail by nature: the query's near-boundary family at its
   // hardest scale (2^-52 from tangency or touching, grazing edges and corners, or shots through
@@ -115,8 +118,9 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
       if (!hp && f.name == name) hp = &f;
   if (!hp) throw std::logic_error(std::string("no near-boundary family for ") + info(q).name);
   const Family& hard = *hp;
+  const std::uint64_t n_hard = std::max<std::uint64_t>(1, n / 4);
   std::vector<Inputs> hard_cases;
-  for (std::uint64_t i = 0; i < std::max<std::uint64_t>(1, n / 4); ++i)
+  for (std::uint64_t i = 0; i < n_hard * timing_windows; ++i)
     hard_cases.push_back(make_case(1, q, hard, hard.scales.back(), i));
   const std::string hard_name = " (" + hard.name + " " + std::to_string(hard.scales.back()) + ")";
   QueryReport rep{q, {}, 0, 0};
@@ -131,9 +135,11 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     rows.emplace_back();
     rows.back().name = v.name + " (campaign interface)";
     rows.back().campaign_impl = v.name;
-    rows.back().run = [run = v.run, q, &cases](std::size_t n, char* out) {
-      for (std::size_t k = 0; k < n; ++k) out[k] = run(q, cases[k]).cls;
+    rows.back().run = [run = v.run, q, &cases](std::size_t first, std::size_t n, char* out) {
+      if (!out) return touch(cases.data() + first, n);
+      for (std::size_t k = 0; k < n; ++k) out[k] = run(q, cases[first + k]).cls;
     };
+    rows.back().cases = cases.size();
   }
 
   // timing: every row over the same inputs, `reps` times, interleaved; the median per row.
@@ -142,49 +148,56 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
   std::vector<char> want(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) want[k] = oracle_classify(q, cases[k]).cls;
   std::vector<std::vector<double>> times(rows.size());
-  std::vector<char> got(std::max(cases.size(), hard_cases.size()));
+  std::vector<char> got(std::max<std::size_t>(n, n_hard));
   std::size_t sink = 0;
   // A row slower than 2 us a query (the exact types, the oracle's outputs; one untimed pass
   // over 64 cases tells) is timed on the first `slow_cases` of them: its time goes to
   // arithmetic on long numbers, and a mispredicted branch (what the many cases are for, in the
   // fast rows) costs it a few nanoseconds of its microseconds; on all of them it would take
-  // most of the run.
-  std::vector<std::size_t> counts(rows.size());
+  // most of the run. A fast row is timed on a fresh set each pass (`windowed`).
+  std::vector<std::size_t> counts(rows.size()), set_size(rows.size());
+  std::vector<char> windowed(rows.size());
   for (std::size_t j = 0; j < rows.size(); ++j) {
-    const std::size_t all = rows[j].hard ? hard_cases.size() : cases.size();
-    const std::size_t probe = std::min<std::size_t>(all, 64);
+    const std::size_t set = rows[j].hard ? n_hard : n;
+    const std::size_t probe = std::min<std::size_t>({set, 64, rows[j].cases});
     const auto t0 = std::chrono::steady_clock::now();
-    rows[j].run(probe, got.data());
+    rows[j].run(0, probe, got.data());
     const auto t1 = std::chrono::steady_clock::now();
     const bool slow = std::chrono::duration<double, std::nano>(t1 - t0).count() > 2000.0 * double(probe);
-    counts[j] = slow ? std::min(all, slow_cases) : all;
+    counts[j] = std::min({set, rows[j].cases, slow ? slow_cases : set});
+    set_size[j] = set;
+    windowed[j] = !slow && rows[j].cases >= set * timing_windows;
   }
   for (int r = 0; r < reps; ++r)
     for (std::size_t j = 0; j < rows.size(); ++j) {
       std::size_t disagree = 0;
       const std::size_t count = counts[j];
-      // a row under 2 us a query runs untimed first, so that every row is timed warm (its
-      // inputs in cache, its branches trained as a loop over the same pairs frame after frame
-      // trains them), whichever heavy row ran before it: eight passes, or 5 ms of them. One
-      // pass was not enough: the ray cast's rows, timed pass by pass over the same 16,384 cases
-      // after other rows had run, took (ns a query) bare 5.77, 3.44, 2.94, 2.91, 2.85, 2.79,
-      // 2.74, 2.74 and the stable tier's unchecked classification 9.31, 5.88, 5.11, 5.02, 4.97,
-      // 4.93, 4.91, 4.90, and the report had them at 3.3 and 9.3 ns where `cdref_bench` (the
-      // same rows, 50 ms of passes) had 2.6 and 4.8 (2026-11-30, 2-core AMD EPYC).
-      if (r == 0 || times[j].back() < 2000) warm_up(rows[j].run, count, got.data());
+      // A fast row is timed warm but on cases it has not just run: its warm-up (eight passes,
+      // or 5 ms of them: one pass left the code and the caches cold whichever heavy row ran
+      // before it) runs on another set, then the timed set's inputs are read into cache
+      // (run(first, n, nullptr)) and the timed pass answers them. Warmed up on the cases it was
+      // then timed on, as until 37ecae8, a row whose branches depend on the data was timed
+      // after the branch predictor had learned their outcomes: the ray cast's `bare` in 2.0 ns
+      // a query where on fresh cases it takes 4.1 (README, "Fresh cases for every timed pass").
+      const std::size_t w = windowed[j] ? std::size_t(r) % timing_windows : 0, first = w * set_size[j];
+      const std::size_t warm = windowed[j] ? ((w + timing_windows / 2) % timing_windows) * set_size[j] : 0;
+      if (r == 0 || times[j].back() < 2000) warm_up(rows[j].run, warm, count, got.data());
+      if (windowed[j]) rows[j].run(first, count, nullptr);
       const auto t0 = std::chrono::steady_clock::now();
-      rows[j].run(count, got.data());
+      rows[j].run(first, count, got.data());
       const auto t1 = std::chrono::steady_clock::now();
       if (rows[j].hard)
         for (std::size_t k = 0; k < count; ++k) disagree += got[k];  // (a count, not checked)
       else
-        for (std::size_t k = 0; k < count; ++k) disagree += bool(got[k]) != bool(want[k]);
+        for (std::size_t k = 0; k < count; ++k) disagree += bool(got[k]) != bool(want[first + k]);
       if (disagree && !rows[j].hard && rows[j].campaign_impl.empty() && rows[j].error_note == "exact")
         throw std::logic_error(rows[j].name + " disagrees with the oracle on " + std::to_string(disagree) + " of " +
                                std::to_string(count) + " " + info(q).name + " cases");
       times[j].push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / double(count));
       if (rows[j].hard) sink += disagree;
     }
+  // the prepared inputs go now (every row holds its own copy): one query's at a time in memory
+  for (Row& row : rows) row.run = nullptr;
   for (std::size_t j = 0; j < rows.size(); ++j) {
     std::sort(times[j].begin(), times[j].end());
     rows[j].ns = times[j][times[j].size() / 2];
@@ -410,8 +423,9 @@ void write_svg(const std::string& out, const std::vector<QueryReport>& reps) {
 }  // namespace
 
 int report_command(std::vector<std::string> args) {
-  // 16,384 cases: over 2,000 repeated, a branch predictor learns enough of their sequence that
-  // the book's box tests ran in a third of their time (README, "How many cases")
+  // 16,384 cases a set: over 2,000 repeated, a branch predictor learns enough of their sequence
+  // that the book's box tests ran in a third of their time (README, "How many cases"); and each
+  // timed pass on a fresh set (measure())
   std::uint64_t n = 16384, err_n = 1000;
   int reps = 5;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -433,12 +447,16 @@ int report_command(std::vector<std::string> args) {
     else throw std::invalid_argument("unknown option '" + args[i] + "'");
   }
   if (n == 0 || reps < 1 || err_n == 0) throw std::invalid_argument("report needs --n, --reps and --error-n of at least 1");
-  // every row keeps its own copy of the timed cases: past this the copies outgrow memory
-  if (n > (1u << 24)) throw std::invalid_argument("report takes --n up to 16777216, not " + std::to_string(n));
+  // every row keeps its own copy of the timed_windows sets of cases (one query's at a time):
+  // polygon-polygon's rows took 2.2 GB at 16,384 (maximum resident size, 2026-11-30), so 65,536
+  // keeps them near 9 GB
+  if (n > 65536)
+    throw std::invalid_argument("report takes --n up to 65536 (its rows prepare 8 sets of n cases each), not " +
+                                std::to_string(n));
   if (threads < 1) throw std::invalid_argument("report needs --threads of at least 1, not " + std::to_string(threads));
   if (queries.empty()) queries = all_queries();
-  std::cout << "cdref report: " << n << " uniform cases timed per query, median of " << reps
-            << " interleaved repetitions, one thread; errors from " << err_n
+  std::cout << "cdref report: " << n << " uniform cases a timed pass, each pass of a fast row on a fresh set of "
+            << timing_windows << ", median of " << reps << " interleaved repetitions, one thread; errors from " << err_n
             << " cases per cell of every family (every output, ulps of the row's type).\n\n";
   std::vector<QueryReport> out;
   for (Query q : queries) {

@@ -146,7 +146,7 @@ grep -q "<svg" report.svg || fail "report SVG"
 "$cdref" report --query box-box --n 10 --reps 1 --error-n 5 > one.txt
 grep -q "^box-box" one.txt && ! grep -q "^sphere-box" one.txt || fail "report --query"
 # a malformed count is refused by name with exit status 2 (not read as its prefix, not wrapped)
-for bad in "--n abc" "--n 1e400" "--n -5" "--n 99999999999" "--threads 0" "--reps x"; do
+for bad in "--n abc" "--n 1e400" "--n -5" "--n 99999999999" "--n 65537" "--threads 0" "--reps x"; do
   set +e; "$cdref" report $bad --query box-box > /dev/null 2> err.txt; status=$?; set -e
   [ $status = 2 ] && grep -q "cdref: .*\(--n\|--threads\|--reps\)" err.txt || fail "report $bad: status $status, $(cat err.txt)"
 done

@@ -629,6 +629,51 @@ TEST_CASE("robust segment-sphere decides near tangency on the casts' double word
   CHECK(graded >= 1500);
 }
 
+TEST_CASE("the cost report's rows answer the cases from `first` on; the exact types' rows prepare only the first 2000",
+          "[campaign][report]") {
+  // A timed pass runs on one of timing_windows sets (campaign.hpp): run(first, n, out) must
+  // answer cases first .. first + n - 1, which a row ignoring `first` (answering the first set
+  // every time) would not; every row that is exact (the oracle, the exact types, CGAL) must give
+  // the oracle's classification there.
+  const Query q = query_by_name("segment-sphere-cast");
+  const Family& uni = family_by_name(q, "uniform");
+  std::vector<Inputs> cases;
+  for (std::uint64_t i = 0; i < 48; ++i) cases.push_back(make_case(7, q, uni, 0, i));
+  std::vector<TimedRow> rows = info(q).timed_rows(cases, cases, "");
+  REQUIRE(rows.size() > 20);
+  int exact = 0, hits = 0;
+  for (const TimedRow& r : rows) {
+    INFO(r.name);
+    CHECK(r.cases == cases.size());
+    char out[16];
+    r.run(24, 16, out);
+    r.run(24, 16, nullptr);  // reads the inputs, answers nothing
+    if (r.hard || r.error_note != "exact") continue;
+    ++exact;
+    for (int k = 0; k < 16; ++k) {
+      const bool want = oracle_classify(q, cases[24 + k]).cls != 0;
+      hits += want;
+      CHECK(bool(out[k]) == want);
+    }
+  }
+  CHECK(exact >= 5);
+  CHECK(hits > 0);
+  CHECK(hits < exact * 16);  // both answers among the cases: a row cannot pass by a constant
+  // given more than slow_row_cases cases, the exact and multiprecision rows keep that many
+  std::vector<Inputs> many;
+  const Query ss = query_by_name("sphere-sphere");
+  for (std::uint64_t i = 0; i < slow_row_cases + 40; ++i) many.push_back(make_case(7, ss, family_by_name(ss, "uniform"), 0, i));
+  int limited = 0;
+  for (const TimedRow& r : info(ss).timed_rows(many, many, "")) {
+    INFO(r.name);
+    const bool slow_type = r.name.find("Gmpq") != std::string::npos || r.name.find("Epeck::FT") != std::string::npos ||
+                           r.name.find("CORE::Expr") != std::string::npos || r.name.find("MPFR") != std::string::npos;
+    CHECK(r.cases == (slow_type ? slow_row_cases : many.size()));
+    limited += slow_type;
+  }
+  CHECK(limited == 5);
+}
+
 TEST_CASE("histogram quantiles are exact below 16 ulps and within an eighth of a power of two above",
           "[campaign]") {
   Histogram h;
