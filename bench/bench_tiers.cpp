@@ -2,9 +2,10 @@
 // benchmark per query, family and row of the cost report (the rows come from the query's
 // descriptor, fuzz/cdref/fuzz/describe.hpp, as `cdref report` takes them), on 16,384 prepared
 // cases per family (--cases=N): the uniform family, the long-range family at its farthest scale and the
-// query's near-boundary family at its hardest scale (where they exist). Each benchmark runs the
+// query's near-boundary family at 2^-32 (where it has that scale) and at its hardest scale
+// (where they exist). Each benchmark runs the
 // row's loop over those cases per iteration and reports ns per query; a row prepares
-// timing_windows such sets (campaign.hpp) and each iteration runs the next, so that no pass
+// timing_windows such sets (campaign.hpp; --sets=N fewer) and each iteration runs the next, so that no pass
 // runs on cases the branch predictor has just seen (README, "Fresh cases for every timed
 // pass"); the exact types' rows run on the first slow_row_cases of the first set. After the run, one
 // table per query and family gives every row's time as a ratio to `bare` (the book's
@@ -13,11 +14,13 @@
 //   cdref_bench --benchmark_filter='ray-sphere-cast/'      one query
 //   cdref_bench --benchmark_filter='/uniform-0/(bare|stable|robust-double)'   (names end in /min_time:0.050)
 //   cdref_bench --benchmark_repetitions=3                  medians of three
+//   cdref_bench --sets=1                                   the same cases every iteration (the branch predictor learns them)
 // Each benchmark runs at least 0.05 s by default (--benchmark_min_time changes it). Debian's
 // libbenchmark is a debug build: its own overhead is per iteration (16,384 queries), small here.
 #include <benchmark/benchmark.h>
 
 #include <cdref/fuzz/campaign.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -34,6 +37,9 @@ namespace {
 // over the same 16,384 repeated this machine's predictor still learned the ray cast's (hence
 // the sets).
 std::size_t cases_per_family = 16384;
+// Sets of those cases each row prepares and runs in turn (--sets=N, 1 to timing_windows; 1: the
+// same cases every iteration, as before the sets, for comparison).
+std::size_t sets = timing_windows;
 
 // "book double, classification" -> "book-double-classification"
 std::string slug(const std::string& s) {
@@ -72,7 +78,7 @@ std::vector<TimedRow>& rows_of(CaseSet& s) {
   if (alive != &s) {
     if (alive) std::vector<TimedRow>().swap(alive->rows);
     std::vector<Inputs> cases;
-    for (std::uint64_t i = 0; i < cases_per_family * timing_windows; ++i)
+    for (std::uint64_t i = 0; i < cases_per_family * sets; ++i)
       cases.push_back(make_case(1, s.q, *s.f, s.scale, i));
     s.rows = info(s.q).timed_rows(cases, cases, "");
     alive = &s;
@@ -83,12 +89,12 @@ std::vector<TimedRow>& rows_of(CaseSet& s) {
 void run_row(benchmark::State& st, CaseSet* set, std::size_t row) {
   const TimedRow& r = rows_of(*set)[row];
   const std::size_t n = std::min(cases_per_family, r.cases);
-  const bool windowed = r.cases >= cases_per_family * timing_windows;
+  const bool windowed = r.cases >= cases_per_family * sets;
   std::vector<char> out(n);
   std::size_t w = 0;
   for (auto _ : st) {
     r.run(w * n, n, out.data());
-    if (windowed) w = (w + 1) % timing_windows;
+    if (windowed) w = (w + 1) % sets;
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
@@ -111,8 +117,13 @@ void reg(Query q) {
   };
   std::vector<Set> sets{{&family_by_name(q, "uniform"), family_by_name(q, "uniform").scales.front()}};
   if (const Family* lr = family_named(q, {"long-range"})) sets.push_back({lr, lr->scales.back()});
-  if (const Family* h = family_named(q, {"near-tangent", "near-touching", "grazing", "watertight", "near-edge"}))
+  if (const Family* h = family_named(q, {"near-tangent", "near-touching", "grazing", "watertight", "near-edge"})) {
+    // 2^-32 from the boundary, where the filters are to decide (near-tangent, near-touching),
+    // then the hardest scale, where they cannot
+    if (h->scales.back() != 32 && std::find(h->scales.begin(), h->scales.end(), 32) != h->scales.end())
+      sets.push_back({h, 32});
     sets.push_back({h, h->scales.back()});
+  }
   for (const Set& set : sets) {
     auto* cs = new CaseSet{q, set.f, set.scale, {}};  // lives as long as the benchmarks
     // the rows' names from one case (the rows themselves are prepared when first run)
@@ -178,7 +189,8 @@ void ratio_tables(const std::map<std::string, double>& ns) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --cases=N (ours; Google Benchmark refuses flags it does not know, so it is taken out first)
+  // --cases=N and --sets=N (ours; Google Benchmark refuses flags it does not know, so they are
+  // taken out first)
   int kept = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -191,6 +203,15 @@ int main(int argc, char** argv) {
         return 2;
       }
       cases_per_family = std::size_t(n);
+    } else if (a.rfind("--sets=", 0) == 0) {
+      char* end = nullptr;
+      const unsigned long long n = std::strtoull(a.c_str() + 7, &end, 10);
+      if (a.size() == 7 || *end != '\0' || n == 0 || n > timing_windows) {
+        std::fprintf(stderr, "cdref_bench: --sets needs a whole number from 1 to %zu, got '%s'\n", timing_windows,
+                     a.c_str() + 7);
+        return 2;
+      }
+      sets = std::size_t(n);
     } else {
       argv[kept++] = argv[i];
     }
