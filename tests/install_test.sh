@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# tests/install_test.sh BUILD SOURCE - cdref as an installed CMake package: installs the build
-# into a temporary prefix, then configures, builds and runs the README's validation example
-# (examples/validate) against it with find_package(cdref), as a user's project would.
+# tests/install_test.sh BUILD SOURCE [PYTHON] - cdref as an installed CMake package: installs the
+# build into a temporary prefix, then configures, builds and runs the README's examples against it
+# with find_package(cdref), as a user's project would: the validation example (examples/validate)
+# and the truth API's Catch2, GoogleTest and exact-value examples (examples/truth); with PYTHON,
+# also the installed Python module on examples/truth.py.
 set -euo pipefail
 build="$1"
 src="$2"
@@ -16,4 +18,15 @@ cmake -S "$src/examples/validate" -B "$dir/example" -G Ninja \
   -DCMAKE_PREFIX_PATH="$dir/prefix" > "$dir/configure.log" || { cat "$dir/configure.log" >&2; exit 1; }
 cmake --build "$dir/example" > "$dir/build.log" || { cat "$dir/build.log" >&2; exit 1; }
 ctest --test-dir "$dir/example" --output-on-failure
-echo "install: the example built and passed against the installed package"
+cmake -S "$src/examples/truth" -B "$dir/truth" -G Ninja \
+  -DCMAKE_PREFIX_PATH="$dir/prefix" > "$dir/configure-truth.log" || { cat "$dir/configure-truth.log" >&2; exit 1; }
+cmake --build "$dir/truth" > "$dir/build-truth.log" || { cat "$dir/build-truth.log" >&2; exit 1; }
+ctest --test-dir "$dir/truth" --output-on-failure
+if [ $# -ge 3 ] && [ -n "$3" ]; then
+  site=$(find "$dir/prefix" -path '*dist-packages/cdref/__init__.py' -printf '%h\n' | head -1)
+  [ -n "$site" ] || { echo "FAIL: the Python package was not installed" >&2; exit 1; }
+  (cd "$dir" && PYTHONPATH="$(dirname "$site")" "$3" "$src/examples/truth.py" > "$dir/python.log") \
+    || { cat "$dir/python.log" >&2; exit 1; }
+  echo "install: the installed Python module ran examples/truth.py"
+fi
+echo "install: the examples built and passed against the installed package"

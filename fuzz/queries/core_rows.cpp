@@ -33,7 +33,7 @@ TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases, Mode m) {
   return exact_row<Spec, CORE::Expr>(cases, m);
 }
 
-#define CDREF_CORE_ROW(S) \
+#define CDREF_CORE_ROW(S, ...) \
   template TimedRow::Batch core_expr_row<queries::S>(const std::vector<Inputs>&, Mode);
 CDREF_SPHERE_QUERIES(CDREF_CORE_ROW)
 CDREF_BOX_QUERIES(CDREF_CORE_ROW)

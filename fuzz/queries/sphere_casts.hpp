@@ -75,10 +75,10 @@ struct SphereCast {
   // 734 / 914; at 10^7 133 / 400, 1924 / 954; at 10^12 80 / 396, 2371 / 1192; tangent-at-range
   // at 10^4 373 / 400, 700 / 866; at 10^5 202 / 400, 1662 / 735; at 10^12 193 / 283, 1426 / 1250.
   // The segment's alike.
-  static bool oracle_formulation_first(const Inputs& in) {
+  static bool oracle_formulation_first(const Shot<double>& a, const Sphere<double>& b) {
     double ss = 0;
-    for (int k = 0; k < 3; ++k) ss += (in[k] - in[6 + k]) * (in[k] - in[6 + k]);
-    return ss > 0x1p34 * (in[9] * in[9]);
+    for (int k = 0; k < 3; ++k) ss += (a.source[k] - b.center[k]) * (a.source[k] - b.center[k]);
+    return ss > 0x1p34 * (b.radius * b.radius);
   }
   static cdref::oracle::Entry oracle_enter(const Shot<double>& a, const Sphere<double>& b, bool* exact_used) {
     return cdref::oracle::enter(a, b, exact_used);

@@ -21,6 +21,8 @@
 #include "book/polygon.hpp"
 #include "book/triangle_box.hpp"
 #include "error.hpp"
+#include "fan.hpp"
+#include "fields.hpp"
 #include "number_traits.hpp"
 #include "primitives.hpp"
 #include "results.hpp"

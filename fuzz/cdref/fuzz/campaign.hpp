@@ -225,6 +225,10 @@ struct QueryInfo {
   // Inputs the book at double may refuse although the exact types take them (a documented
   // limit of a conversion, e.g. min-max corners that overflow). May be empty.
   std::function<bool(const Inputs&)> double_may_refuse;
+  // The query's function of <cdref/truth.hpp> (cdref/fuzz/truth_api.hpp): at precision 24 or
+  // 53, every field of its oracle answer on a case's columns against its exact path's, "" when
+  // equal bit for bit (else the first field that differs).
+  std::function<std::string(const Inputs&, int precision)> truth_api_check;
   // Implementations of this query alone (a campaign may name them like the built-in ones):
   // the patched float variants engines ship, the book at an exact type where it is not the
   // truth. Each has `queries` = {q}; variants of several queries may share a name.

@@ -32,6 +32,7 @@
 
 #include <cdref/exact/rationals.hpp>
 #include <cdref/exact/long_double.hpp>
+#include <cdref/fan.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/bounded2.hpp>
 #include <cdref/oracle/stage.hpp>
@@ -121,22 +122,9 @@ inline std::vector<std::string> concat(std::vector<std::string> a, const std::ve
 // A fan of triangles around a shared vertex (the mesh-level queries): triangles
 // (center, ring[k], ring[k + 1]) for k < n - 1, and (center, ring[n - 1], ring[0]) when closed.
 // Its columns: n (2 to 8 ring vertices), closed (0 or 1, closed needs n >= 3), center, r0..r7.
-template <class T>
-struct Fan {
-  static constexpr int max_ring = 8;
-  Vec3<T> center = zero_vec<T>();
-  std::array<Vec3<T>, max_ring> ring{};
-  int n = 0;
-  bool closed = false;
-  int triangles() const { return closed ? n : n - 1; }
-  Triangle<T> triangle(int k) const { return {{center, ring[k], ring[(k + 1) % n]}}; }
-  template <class Fn>
-  bool any(Fn f) const {
-    for (int k = 0; k < triangles(); ++k)
-      if (f(triangle(k))) return true;
-    return false;
-  }
-};
+// (the fan and its cast: cdref/fan.hpp)
+using cdref::Fan;
+using cdref::FanCast;
 inline std::string shown(double x) {
   char b[40];
   std::snprintf(b, sizeof b, "%.17g", x);
@@ -170,11 +158,6 @@ Fan<T> fan(const Inputs& in, int k) {
 }
 // The first hit over a fan (smallest lambda_enter; the first triangle on ties) and the number
 // of triangles hit.
-template <class S>
-struct FanCast {
-  TriangleCast<S> first;
-  int hits = 0;
-};
 // (before(k, j, lk, lj): whether triangle k, entered at lk, comes before triangle j, entered at
 // lj; the robust casts order near-ties exactly: robust::enters_before.)
 template <class T, class Cast1, class Before>
@@ -490,18 +473,20 @@ Answer formulation_at(const Inputs& in) {
   r.pred = r.cls;
   return r;
 }
-// Where the spec also has `oracle_formulation_first(in)`, the cases it names try the other
+// Where the spec also has `oracle_formulation_first(a, b)` (at double), the cases it names try the other
 // formulation first: those where the truth's own is seldom certain, whose failed attempt (an
 // evaluation, then the `uncertain` it throws) costs more than the other formulation's.
 template <class Spec>
 constexpr bool has_formulation_first = requires(const Inputs& in) {
-  { Spec::oracle_formulation_first(in) } -> std::same_as<bool>;
+  { Spec::oracle_formulation_first(Spec::template make<double>(in).first, Spec::template make<double>(in).second) }
+      -> std::same_as<bool>;
 };
 template <class Spec, class T, class F>
 Answer oracle_formulation_at(const Inputs& in) {
   if constexpr (has_oracle_formulation<Spec>) {
     if constexpr (has_formulation_first<Spec>) {
-      if (Spec::oracle_formulation_first(in)) {
+      const auto [a, b] = Spec::template make<double>(in);
+      if (Spec::oracle_formulation_first(a, b)) {
         try {
           return formulation_at<Spec, T, F>(in);
         } catch (const oracle::uncertain&) {
