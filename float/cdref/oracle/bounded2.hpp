@@ -25,7 +25,12 @@
 //          (|ah| + |al|) eb + (|bh| + |bl|) ea + ea eb (plus 3 eta: these three products of
 //          the bound may underflow, and a bound that underflows to 0 would claim exactness), so
 //          e' = that + |al| |bl| + u (|c1| + |c2| + |w1| + |w|) + 3 eta (c1, c2, al bl
-//          may underflow), plus eta for pe when |p| < 2^-968.
+//          may underflow), plus eta for pe when |p| < 2^-968. When exactly one of al, bl is
+//          nonzero (a double word times a double y, the low part x): c = fl(x y) and its
+//          error ce = fma(x, y, -c) (exact when |c| >= 2^-968, else off by at most eta), and
+//          (w, we) = two_sum(pe, c), so that e' = that + |ce| + |we| (+ eta): 0 where both are
+//          exact (a difference of doubles on a rounding midpoint, times 1, stays exact and
+//          rounds to even rather than being left uncertain).
 //   a / b: q = fl(fl(ah / bh) + correction) (one step of long division), then bounded
 //          a posteriori: the residual R = a - q b is computed with the operations above
 //          (q is an exact double), and with X, Y the exact values,
@@ -107,7 +112,19 @@ class Bounded2 {
     const double pe = std::fma(a.hi_, b.hi_, -p);
     double err = (std::fabs(p) >= exact_product || (p == 0 && (a.hi_ == 0 || b.hi_ == 0))) ? 0 : eta;
     double w = pe;
-    if (a.lo_ != 0 || b.lo_ != 0) {
+    if ((a.lo_ == 0) != (b.lo_ == 0)) {
+      // one factor is a double y, the other's low part x: x y = c + ce exactly (fma, above
+      // the underflow of the error term) and pe + c = w + we exactly (two_sum), so only what
+      // those leave is error: none where they are exact (a double word times 1 or 2^k, a
+      // difference of doubles on a rounding midpoint times a unit axis)
+      const double x = a.lo_ != 0 ? a.lo_ : b.lo_;
+      const double y = a.lo_ != 0 ? b.hi_ : a.hi_;
+      const double c = x * y;
+      const double ce = std::fma(x, y, -c);
+      double we;
+      two_sum(pe, c, w, we);
+      err += std::fabs(ce) + std::fabs(we) + (std::fabs(c) >= exact_product ? 0 : eta);
+    } else if (a.lo_ != 0) {
       const double c1 = a.hi_ * b.lo_, c2 = a.lo_ * b.hi_;
       const double w1 = pe + c1;
       w = w1 + c2;

@@ -5,8 +5,9 @@
 // on primitives instead of a case's columns, and rounds the whole result struct, not only the
 // answer columns (so also Cast::enters and unbounded_exit, Proximity::closest, Separation's
 // direction):
-//   1. a cast whose outputs all exist on a hit alone: the classification oracle first; a miss is
-//      the default result (no hit, every value 0), as the book's at an exact type;
+//   1. a query whose answer is a classification alone: the classification oracle; a cast whose
+//      outputs all exist on a hit alone: the classification oracle first, and a miss is the
+//      default result (no hit, every value 0), as the book's at an exact type;
 //   2. at double, the robust tier's first look where the spec has it (oracle_rounded) and it
 //      proves every rounding;
 //   3. the truth's formulation (or the spec's oracle_formulation) on oracle::Bounded2, accepted
@@ -74,6 +75,9 @@ template <class Spec, class F, class A, class B>
 TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_used = nullptr) {
   using R = TruthResult<Spec, F, A, B>;
   if (exact_used) *exact_used = false;
+  if constexpr (std::is_same_v<R, bool>) {
+    return Spec::oracle(a, b, nullptr);  // a classification alone: the classification oracle
+  }
   if constexpr (is_cast<Spec>) {
     if (outputs_on_hit_alone<Spec>() && !Spec::oracle(a, b, nullptr)) return R{};
   }
