@@ -130,15 +130,21 @@ CDREF_ARG_NAME(Fan, "fan")
 #undef CDREF_ARG_NAME
 
 // The public entry: F-typed primitives (F = float or double), checked by name, then answered
-// at double (a float is exact in double) with every value rounded to F.
-template <class Spec, class F, template <class> class PA, template <class> class PB>
-auto truth_call(const PA<F>& a_in, const PB<F>& b_in, truth::Path path) {
-  const PA<double> a = rebind<double>(a_in);
-  const PB<double> b = rebind<double>(b_in);
-  constexpr bool same = std::is_same_v<PA<double>, PB<double>>;
-  cdref::check(a, same ? ArgName<PA<double>>::a : ArgName<PA<double>>::one);
-  cdref::check(b, same ? ArgName<PB<double>>::b : ArgName<PB<double>>::one);
+// at double (a float is exact in double; a double is taken as it is) with every value rounded
+// to F.
+template <class Spec, class F, class A, class B>
+auto truth_call_at_double(const A& a, const B& b, truth::Path path) {
+  constexpr bool same = std::is_same_v<A, B>;
+  cdref::check(a, same ? ArgName<A>::a : ArgName<A>::one);
+  cdref::check(b, same ? ArgName<B>::b : ArgName<B>::one);
   return path == truth::Path::exact ? exact_result<Spec, F>(a, b) : oracle_result<Spec, F>(a, b);
+}
+template <class Spec, class F, template <class> class PA, template <class> class PB>
+auto truth_call(const PA<F>& a, const PB<F>& b, truth::Path path) {
+  if constexpr (std::is_same_v<F, double>)
+    return truth_call_at_double<Spec, F>(a, b, path);
+  else
+    return truth_call_at_double<Spec, F>(rebind<double>(a), rebind<double>(b), path);
 }
 
 // Every field of the oracle's answer against the exact path's, for the query's typed call at F
@@ -195,8 +201,9 @@ QueryInfo describe_with_truth_api() {
 
 // Defines, for one spec, the public double and float functions of <cdref/truth.hpp>, the check
 // of them the tests reach through the query's descriptor (QueryInfo::truth_api_check), and two
-// rows of the cost report and cdref_bench that time the public call ("truth API, every output",
-// on the uniform and the near-boundary cases, beside the oracle's rows): CDREF_TRUTH_FUNCTIONS(Spec, Result,
+// rows of the cost report and cdref_bench that time the public call on prepared primitives
+// ("truth API, every output", on the uniform and the near-boundary cases, beside the oracle's
+// rows): CDREF_TRUTH_FUNCTIONS(Spec, Result,
 // name, A, B), Result the result template (Cast, Proximity, ..., or detail::Bool), `name` the
 // book's function (cast, proximity, separate, intersect), A and B the primitives' templates.
 #define CDREF_TRUTH_FUNCTIONS(Spec, Result, fn, A, B)                                                         \
@@ -219,14 +226,13 @@ QueryInfo describe_with_truth_api() {
     qi.timed_rows = [base = qi.timed_rows](const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,   \
                                            const std::string& hard_name) {                                    \
       std::vector<TimedRow> rows = base(cases, hard, hard_name);                                              \
-      const auto call = [](const Inputs& in) {                                                                \
-        const auto [a, b] = queries::Spec::make<double>(in);                                                  \
-        return classification_of(truth::fn(a, b, truth::Path::oracle));                                       \
+      const auto call = [](const auto& ab) {                                                                  \
+        return classification_of(truth::fn(ab.first, ab.second, truth::Path::oracle));                         \
       };                                                                                                      \
       rows.push_back({"truth API, every output", "", "exact",                                                 \
-                      batch_over(std::make_shared<std::vector<Inputs>>(cases), call), false, cases.size()}); \
+                      batch_over(prepare<queries::Spec, double>(cases), call), false, cases.size()});         \
       rows.push_back({"truth API, every output" + hard_name, "", "exact",                                     \
-                      batch_over(std::make_shared<std::vector<Inputs>>(hard), call), true, hard.size()});  \
+                      batch_over(prepare<queries::Spec, double>(hard), call), true, hard.size()});            \
       return rows;                                                                                            \
     };                                                                                                        \
   }                                                                                                           \
