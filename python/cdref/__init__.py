@@ -21,6 +21,7 @@ and reports where it goes wrong (in ulps, absolutely and relative to the inputs'
 """
 
 import inspect as _inspect
+import numbers as _numbers
 
 import numpy as _np
 
@@ -83,17 +84,15 @@ def _arguments(columns):
     return args
 
 
+_ARGS = {name: _arguments(q["inputs"]) for name, q in _QUERIES.items()}
+
+
 def _rows(query, kwargs):
     """The (N, columns) float64 matrix of a call's arguments, and whether it was one case."""
     q = _QUERIES[query]
-    args = _arguments(q["inputs"])
-    missing = [a for a, _, _ in args if a not in kwargs]
-    if missing:
-        raise TypeError("%s() missing argument(s): %s" % (_fname(query), ", ".join(missing)))
-    extra = [a for a in kwargs if a not in {n for n, _, _ in args}]
-    if extra:
-        raise TypeError("%s() got unexpected argument(s): %s (its arguments: %s)"
-                        % (_fname(query), ", ".join(extra), ", ".join(n for n, _, _ in args)))
+    args = _ARGS[query]
+    if len(kwargs) != len(args) or any(a not in kwargs for a, _, _ in args):
+        _name_arguments(query, args, kwargs)
     values, batch = {}, None
     for name, kind, _ in args:
         try:
@@ -122,9 +121,9 @@ def _rows(query, kwargs):
         if kind == "scalar":
             out[:, cols[0]] = v
         elif kind == "vector":
-            out[:, cols] = _np.broadcast_to(v, (n, 3))
+            out[:, cols] = v if single else _np.broadcast_to(v, (n, 3))
         else:
-            pts = _np.broadcast_to(v, (n,) + v.shape[-2:])
+            pts = v[None] if single else _np.broadcast_to(v, (n,) + v.shape[-2:])
             k = pts.shape[1]
             # a row's points end at its first NaN point (arrays of several sizes padded with NaN)
             finite_rows = ~_np.isnan(pts).all(axis=2)
@@ -133,6 +132,16 @@ def _rows(query, kwargs):
             flat = _np.where(_np.arange(k)[None, :, None] < count[:, None, None], pts, 0.0).reshape(n, 3 * k)
             out[:, cols[1 : 1 + 3 * k]] = flat
     return out, single
+
+
+def _name_arguments(query, args, kwargs):
+    """Raises the TypeError that names the missing or unexpected arguments of a call."""
+    missing = [a for a, _, _ in args if a not in kwargs]
+    if missing:
+        raise TypeError("%s() missing argument(s): %s" % (_fname(query), ", ".join(missing)))
+    extra = [a for a in kwargs if a not in {n for n, _, _ in args}]
+    raise TypeError("%s() got unexpected argument(s): %s (its arguments: %s)"
+                    % (_fname(query), ", ".join(extra), ", ".join(n for n, _, _ in args)))
 
 
 def _fname(query):
@@ -183,7 +192,7 @@ def _precision(dtype):
 
 def _make_function(query):
     q = _QUERIES[query]
-    args = _arguments(q["inputs"])
+    args = _ARGS[query]
     names = [n for n, _, _ in args]
 
     def f(*positional, dtype=_np.float64, threads=1, path="oracle", **named):
@@ -293,14 +302,18 @@ def cases(query, family, scale, n, seed=1, first=0, columns=False):
     padded with NaN points), or with columns=True the (n, columns) matrix of the case-file
     columns."""
     _check_query(query)
-    if not isinstance(n, int) or n < 0:
+    if not isinstance(n, _numbers.Integral) or isinstance(n, bool) or n < 0:
         raise ValueError("n must be a whole number >= 0, not %r" % (n,))
-    if not isinstance(seed, int) or seed < 0 or seed >= 2 ** 64:
+    if not isinstance(first, _numbers.Integral) or isinstance(first, bool) or first < 0 or first >= 2 ** 64:
+        raise ValueError("first must be a whole number from 0 to 2^64 - 1, not %r" % (first,))
+    if not isinstance(scale, _numbers.Integral) or isinstance(scale, bool):
+        raise ValueError("scale must be a whole number, not %r" % (scale,))
+    if not isinstance(seed, _numbers.Integral) or isinstance(seed, bool) or seed < 0 or seed >= 2 ** 64:
         raise ValueError("seed must be a whole number from 0 to 2^64 - 1, not %r" % (seed,))
     fams = families(query)
     if family not in fams:
         raise ValueError("%s has no family %r (its families: %s)" % (query, family, ", ".join(fams)))
-    rows = _cdref.cases(query, family, scale, n, seed, first)
+    rows = _cdref.cases(query, family, int(scale), int(n), int(seed), int(first))
     return rows if columns else _split(query, rows)
 
 
@@ -361,8 +374,9 @@ class Report:
             t.append("%-14s %8d %8s %12d %12.3g %12.3g" % (name, f.graded, f.wrong if f.label else "-", f.max_ulps,
                                                           f.max_abs, f.max_rel))
         for e in self.examples:
-            t.append("worst %s: row %d, given %s, exact %s, inputs %s" % (e["what"], e["row"], e["given"], e["exact"],
-                                                                         e["inputs"]))
+            t.append("worst %s%s: row %d%s, given %s, exact %s%s, inputs %s" % (
+                e["what"], "" if "cell" not in e else " (" + e["cell"] + ")", e["row"], "", e["given"], e["exact"],
+                "" if "ulps" not in e else " (%d ulps)" % e["ulps"], e["inputs"]))
         return "\n".join(t)
 
     def __repr__(self):
@@ -380,7 +394,13 @@ class Report:
                 self.fields[k] = f
             else:
                 self.fields[k]._merge(f)
-        self.examples += other.examples
+        # the worst example of each kind across cells (the classification's: the first)
+        for e in other.examples:
+            same = [i for i, x in enumerate(self.examples) if x["what"] == e["what"]]
+            if not same:
+                self.examples.append(e)
+            elif e.get("ulps", 0) > self.examples[same[0]].get("ulps", 0):
+                self.examples[same[0]] = e
 
 
 class FieldReport:

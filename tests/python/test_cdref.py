@@ -107,6 +107,31 @@ def test_bad_input_is_named():
         cdref.cases("ray-sphere-cast", "uniform", 0, -1)
 
 
+def test_bad_options_are_named():
+    one = ((0, 0, -5), (0, 0, 1), (0, 0, 0), 1)
+    with pytest.raises(ValueError, match="threads must be 1 to 1024"):
+        cdref.ray_sphere_cast(*one, threads=0)
+    with pytest.raises(ValueError, match="dtype must be float64 or float32"):
+        cdref.ray_sphere_cast(*one, dtype=np.int32)
+    with pytest.raises(ValueError, match="path must be 'oracle' or 'exact'"):
+        cdref.ray_sphere_cast(*one, path="fast")
+    with pytest.raises(TypeError, match="argument radius is not a number"):
+        cdref.ray_sphere_cast((0, 0, -5), (0, 0, 1), (0, 0, 0), "one")
+    with pytest.raises(TypeError, match="takes 4 arguments"):
+        cdref.ray_sphere_cast(*one, 5)
+    with pytest.raises(ValueError, match="rows where another has"):
+        cdref.ray_sphere_cast(np.zeros((3, 3)), np.ones((4, 3)), (0, 0, 0), 1)
+    with pytest.raises(ValueError, match="at most 2\\^28"):
+        cdref.cases("ray-sphere-cast", "uniform", 0, 2 ** 29)
+    with pytest.raises(ValueError, match="seed must be"):
+        cdref.cases("ray-sphere-cast", "uniform", 0, 3, seed=-1)
+    # numpy integers are whole numbers too
+    assert cdref.cases("ray-sphere-cast", "uniform", np.int64(0), np.int64(3))["radius"].shape == (3,)
+    # an infinity or an overflowing value in a batch: that row refused by name, the others answered
+    out = cdref.sphere_sphere(np.array([[0, 0, 0], [np.inf, 0, 0]]), 1, (3, 0, 0), 1)
+    assert list(out["status"]) == [0, 1] and "not finite" in out["errors"][1] and out["distance"][0] == 1
+
+
 def test_batched_rows_refused_one_by_one():
     src = np.array([[0, 0, -5], [0, 0, -5], [0, np.nan, -5], [0, 0, -5]], dtype=float)
     d = np.array([[0, 0, 1], [0, 0, 0], [0, 0, 1], [0, 0, 1]], dtype=float)
