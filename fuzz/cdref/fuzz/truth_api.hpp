@@ -85,28 +85,29 @@ TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_use
     RobustResult<Spec> p;
     if (Spec::oracle_rounded(a, b, p)) return rounded<F>(p);
   }
-  const auto words = [&]<bool Other>(std::bool_constant<Other>) {
-    const auto x = rebind<oracle::Bounded2>(a);
-    const auto y = rebind<oracle::Bounded2>(b);
-    if constexpr (Other)
-      return rounded<F>(Spec::oracle_formulation(x, y, unsigned(want_all)));
-    else
-      return rounded<F>(truth_formulation<Spec>(x, y));
+  // (two lambdas, the other formulation's named only where the spec has it: clang instantiates
+  // the parts of a generic lambda that do not depend on its own parameters)
+  const auto own = [&] {
+    return rounded<F>(truth_formulation<Spec>(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b)));
   };
   if constexpr (has_oracle_formulation<Spec>) {
+    const auto other = [&] {
+      return rounded<F>(
+          Spec::oracle_formulation(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b), unsigned(want_all)));
+    };
     bool other_first = false;
     if constexpr (has_formulation_first<Spec>) other_first = Spec::oracle_formulation_first(a, b);
     try {
-      return other_first ? R(words(std::true_type{})) : R(words(std::false_type{}));
+      return other_first ? R(other()) : R(own());
     } catch (const oracle::uncertain&) {
     }
     try {
-      return other_first ? R(words(std::false_type{})) : R(words(std::true_type{}));
+      return other_first ? R(own()) : R(other());
     } catch (const oracle::uncertain&) {
     }
   } else {
     try {
-      return words(std::false_type{});
+      return own();
     } catch (const oracle::uncertain&) {
     }
   }
