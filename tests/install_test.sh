@@ -12,6 +12,12 @@ trap 'rm -rf "$dir"' EXIT
 cmake --install "$build" --prefix "$dir/prefix" > "$dir/install.log"
 [ -f "$dir/prefix/lib/cmake/cdref/cdrefConfig.cmake" ] || { echo "FAIL: no cdrefConfig.cmake" >&2; exit 1; }
 [ -f "$dir/prefix/include/cdref/validate.hpp" ] || { echo "FAIL: no cdref/validate.hpp" >&2; exit 1; }
+[ -f "$dir/prefix/include/cdref/truth.hpp" ] || { echo "FAIL: no cdref/truth.hpp" >&2; exit 1; }
+# the command line runs from the prefix: a case file written and answered
+"$dir/prefix/bin/cdref" cases --query ray-sphere-cast --n 3 --out "$dir/cases.csv" ||
+  { echo "FAIL: the installed cdref did not run" >&2; exit 1; }
+"$dir/prefix/bin/cdref" oracle --query ray-sphere-cast --cases "$dir/cases.csv" | grep -q "^case,hit," ||
+  { echo "FAIL: the installed cdref oracle gave no answers" >&2; exit 1; }
 # (no build type: the example's own code is compiled without optimisation, which is quicker;
 # cdref's libraries are the optimised ones installed)
 cmake -S "$src/examples/validate" -B "$dir/example" -G Ninja \
