@@ -5,6 +5,7 @@
 #include <bit>
 #include <cdref/error.hpp>
 #include <charconv>
+#include <limits>
 #include <chrono>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/work.hpp>
@@ -112,6 +113,26 @@ bool Results::operator==(const Results& o) const {
         return false;
   }
   return true;
+}
+
+double natural_scale(Query q, int group, const Inputs& in) {
+  const QueryInfo& qi = info(q);
+  const std::string& name = qi.outputs[std::size_t(group)].name;
+  auto has = [](const std::string& s, const char* part) { return s.find(part) != std::string::npos; };
+  double scene = 0, dir = 0;
+  for (std::size_t k = 0; k < qi.inputs.size(); ++k) {
+    const std::string& c = qi.inputs[k];
+    const double m = std::fabs(in[k]);
+    if (has(c, "direction")) dir = std::fmax(dir, m);
+    else if (!(c == "n" || (c.size() > 2 && c.compare(c.size() - 2, 2, "_n") == 0)) && !has(c, "axis"))
+      scene = std::fmax(scene, m);
+  }
+  const double tiny = std::numeric_limits<double>::min();
+  double s = scene;
+  if (name == "normal" || name == "u" || name == "v" || has(name, "axis") || has(name, "direction")) s = 1;
+  else if (has(name, "lambda")) s = dir > 0 ? scene / dir : 1;
+  else if (has(name, "squared")) s = scene * scene;
+  return std::fmax(s, tiny);
 }
 
 std::uint64_t ulp_distance(long double a, long double b, int precision) {
@@ -404,11 +425,13 @@ struct Item {
   std::uint64_t first;  // first case index of the block
 };
 
-std::vector<Item> items_of(const Spec& spec, const std::vector<Cell>& cells) {
-  std::vector<Item> items;
-  for (std::size_t c = 0; c < cells.size(); ++c)
-    for (std::uint64_t first = 0; first < spec.n; first += block) items.push_back({c, first});
-  return items;
+// Work items are numbered cell by cell, ceil(n / block) of them per cell: item k is block
+// k % per_cell of cell k / per_cell. Computed, not stored: a campaign's memory does not grow
+// with the n it is asked for.
+std::uint64_t items_per_cell(const Spec& spec) { return (spec.n + block - 1) / block; }
+Item item_at(const Spec& spec, std::uint64_t k) {
+  const std::uint64_t per = items_per_cell(spec);
+  return {std::size_t(k / per), (k % per) * block};
 }
 
 }  // namespace
@@ -431,13 +454,58 @@ std::string Spec::fingerprint() const {
   return o.str();
 }
 
-std::uint64_t total_items(const Spec& spec) { return items_of(spec, cells_of(spec)).size(); }
+std::uint64_t total_items(const Spec& spec) {
+  const std::uint64_t cells = cells_of(spec).size(), per = items_per_cell(spec);
+  if (per && cells > UINT64_MAX / per) throw std::invalid_argument("the campaign has more than 2^64 work items");
+  return cells * per;
+}
+
+Spec spec_of_fingerprint(const std::string& fp) {
+  Spec spec;
+  auto list = [](const std::string& v) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (v[i] == ',') out.push_back(v.substr(start, i - start)), start = i + 1;
+    if (start != v.size()) throw std::runtime_error("malformed fingerprint list '" + v + "'");
+    return out;
+  };
+  auto whole = [&](const std::string& v) {
+    std::uint64_t x = 0;
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec != std::errc() || end != v.data() + v.size() || v.empty())
+      throw std::runtime_error("malformed fingerprint number '" + v + "'");
+    return x;
+  };
+  std::size_t start = 0;
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i <= fp.size(); ++i)
+    if (i == fp.size() || fp[i] == ';') parts.push_back(fp.substr(start, i - start)), start = i + 1;
+  for (const std::string& part : parts) {
+    const auto eq = part.find('=');
+    if (eq == std::string::npos) throw std::runtime_error("malformed fingerprint '" + fp + "'");
+    const std::string k = part.substr(0, eq), v = part.substr(eq + 1);
+    if (k == "seed") spec.seed = whole(v);
+    else if (k == "n") spec.n = whole(v);
+    else if (k == "outputs" && v == "cls") spec.classification_only = true;
+    else if (k == "outputs" && v == "certain") spec.certain_outputs = true;
+    else if (k == "queries")
+      for (const auto& q : list(v)) spec.queries.push_back(query_by_name(q));
+    else if (k == "impls") spec.impls = list(v);
+    else if (k == "families") spec.families = list(v);
+    else if (k == "scales")
+      for (const auto& x : list(v)) spec.scales.push_back(int(whole(x)));
+    else throw std::runtime_error("malformed fingerprint '" + fp + "'");
+  }
+  if (spec.fingerprint() != fp) throw std::runtime_error("malformed fingerprint '" + fp + "'");
+  return spec;
+}
 
 // ---- work items ----
 struct Work::State {
   Spec spec;
   std::vector<Cell> cells;
-  std::vector<Item> items;
+  std::uint64_t items = 0;
   std::vector<const Implementation*> impls;
 };
 
@@ -448,7 +516,7 @@ Work::Work(const Spec& spec) {
   s->spec = spec;
   s->spec.progress = nullptr;
   s->cells = cells_of(spec);
-  s->items = items_of(spec, s->cells);
+  s->items = total_items(spec);
   for (const auto& name : spec.impls) {
     const Implementation* found = nullptr;
     for (const Implementation& c : s->spec.custom)
@@ -460,27 +528,74 @@ Work::Work(const Spec& spec) {
 }
 
 const Spec& Work::spec() const { return s_->spec; }
-std::uint64_t Work::items() const { return s_->items.size(); }
+std::uint64_t Work::items() const { return s_->items; }
 
-std::uint64_t Work::cases(std::uint64_t begin, std::uint64_t end) const {
+// The cases of this shard among the first `r` items of a cell.
+std::uint64_t Work::cell_cases(std::uint64_t r) const {
   const Spec& spec = s_->spec;
   // the cases i < x of this shard (i % shards == shard)
   const std::uint64_t shards = std::uint64_t(spec.shards), shard = std::uint64_t(spec.shard);
   const auto below = [&](std::uint64_t x) { return x / shards + std::uint64_t(x % shards > shard); };
-  std::uint64_t c = 0;
-  for (std::uint64_t k = begin; k < end && k < s_->items.size(); ++k) {
-    const std::uint64_t first = s_->items[k].first, last = std::min(spec.n, first + block);
-    c += below(last) - below(first);
+  const std::uint64_t per = items_per_cell(spec);
+  return below(r >= per ? spec.n : r * block);
+}
+
+std::uint64_t Work::cases(std::uint64_t begin, std::uint64_t end) const {
+  end = std::min(end, s_->items);
+  if (begin >= end) return 0;
+  // the cases of items [0, x): whole cells, then the first items of the next
+  const std::uint64_t per = items_per_cell(s_->spec);
+  const auto upto = [&](std::uint64_t x) { return (x / per) * cell_cases(per) + cell_cases(x % per); };
+  return upto(end) - upto(begin);
+}
+
+void Work::check(const Results& r, const std::vector<std::pair<std::uint64_t, std::uint64_t>>& done,
+                 const std::string& source) const {
+  const Spec& spec = s_->spec;
+  const std::uint64_t per = items_per_cell(spec);
+  // the cases each cell must have counted, from the items said to be done
+  std::vector<std::uint64_t> expected(s_->cells.size(), 0);
+  for (auto [b, e] : done) {
+    if (b > e || e > s_->items)
+      throw std::runtime_error(source + ": items " + std::to_string(b) + "-" + std::to_string(e) +
+                               " are not items of this campaign (it has " + std::to_string(s_->items) + ")");
+    for (std::uint64_t c = b / per; c < s_->cells.size() && c * per < e; ++c) {
+      const std::uint64_t lo = std::max(b, c * per) - c * per, hi = std::min(e, (c + 1) * per) - c * per;
+      expected[c] += cell_cases(hi) - cell_cases(lo);
+    }
   }
-  return c;
+  std::map<CellKey, std::uint64_t> want;
+  for (std::size_t c = 0; c < s_->cells.size(); ++c)
+    for (const Implementation* im : s_->impls)
+      if (im->supports(s_->cells[c].q) && expected[c])
+        want[{s_->cells[c].q, im->name, s_->cells[c].family->name, s_->cells[c].scale}] = expected[c];
+  auto name = [](const CellKey& k) {
+    return std::string(info(k.query).name) + " " + k.impl + " " + k.family + " " + std::to_string(k.scale);
+  };
+  for (const auto& [k, st] : r.cells) {
+    const auto it = want.find(k);
+    if (it == want.end())
+      throw std::runtime_error(source + ": cell " + name(k) + " has statistics but none of its items is done");
+    if (st.n != it->second)
+      throw std::runtime_error(source + ": cell " + name(k) + " counts " + std::to_string(st.n) + " cases; its done items hold " +
+                               std::to_string(it->second));
+    const std::uint64_t graded = st.n - std::min(st.n, st.refused);
+    bool ok = st.refused <= st.n && st.cls_fp + st.cls_fn <= graded && st.pred_fp + st.pred_fn <= graded &&
+              st.certified <= st.n && st.uncertain <= st.certified && st.certain_wrong <= st.certified;
+    for (std::size_t g = 0; g < info(k.query).outputs.size(); ++g)
+      ok = ok && st.out[g].hist.total() + st.out[g].nonfinite <= st.n;
+    if (!ok) throw std::runtime_error(source + ": cell " + name(k) + " has counts that do not add up");
+  }
+  for (const auto& [k, n] : want)
+    if (!r.cells.count(k))
+      throw std::runtime_error(source + ": cell " + name(k) + " is missing (" + std::to_string(n) + " cases done)");
 }
 
 void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
   const Spec& spec = s_->spec;
   const std::vector<Cell>& cells = s_->cells;
-  const std::vector<Item>& items = s_->items;
   const std::vector<const Implementation*>& impls = s_->impls;
-  end = std::min<std::uint64_t>(end, items.size());
+  end = std::min<std::uint64_t>(end, s_->items);
   if (begin >= end) return;
   const int threads = int(std::min<std::uint64_t>(std::max(1, spec.threads), end - begin));
   std::atomic<std::uint64_t> next{begin};
@@ -493,7 +608,7 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
       std::vector<std::uint64_t> index(by_block ? block : 0);
       thread_local BlockScratch scratch;  // (kept: a new one per round was a tenth of the time in page faults)
       for (std::uint64_t k; (k = next++) < end;) {
-        const Item& it = items[k];
+        const Item it = item_at(spec, k);
         const Cell& cell = cells[it.cell];
         std::vector<CellStats*> stats;  // looked up once per block, at its first case of this shard
         const std::uint64_t last = std::min(spec.n, it.first + block);
@@ -536,6 +651,11 @@ Results run(const Spec& spec) {
     if (saved.fingerprint != spec.fingerprint() || saved.shard != spec.shard || saved.shards != spec.shards)
       throw std::runtime_error("checkpoint " + spec.checkpoint + " belongs to another campaign (" + saved.fingerprint +
                                ", shard " + std::to_string(saved.shard) + "/" + std::to_string(saved.shards) + ")");
+    if (saved.items_total != n_items || saved.items_done > n_items)
+      throw std::runtime_error("checkpoint " + spec.checkpoint + " says " + std::to_string(saved.items_done) + " of " +
+                               std::to_string(saved.items_total) + " items are done; this campaign has " +
+                               std::to_string(n_items));
+    work.check(saved.results, {{0, saved.items_done}}, "checkpoint " + spec.checkpoint);
     total = saved.results;
     done = saved.items_done;
   }
@@ -642,6 +762,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
   };
   while (std::getline(in, line)) {
     ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a file that passed through CRLF line ends
     std::istringstream ls(line);
     std::string tag;
     ls >> tag;
@@ -673,7 +794,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
       // bins: a copy through a local doubled the cost of reading a large file)
       const auto [at, fresh] = s.results.cells.try_emplace(CellKey{query, impl, fam, scale});
       cur = &at->second;
-      if (!fresh) *cur = CellStats{};  // a cell given twice: its last record holds
+      if (!fresh) fail("cell " + q + " " + impl + " " + fam + " " + std::to_string(scale) + " is given twice");
       CellStats& st = *cur;
       if (!(ls >> st.n >> st.refused >> st.cls_fp >> st.cls_fn >> st.pred_fp >> st.pred_fn))
         fail("malformed cell record");
@@ -734,6 +855,17 @@ Results merge_shards(const std::vector<Saved>& shards) {
   }
   for (int k = 0; k < n; ++k)
     if (!seen[k]) throw std::runtime_error("shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+  // each shard's counts against the campaign its fingerprint describes
+  for (const Saved& s : shards) {
+    Spec spec = spec_of_fingerprint(s.fingerprint);
+    spec.shard = s.shard;
+    spec.shards = s.shards;
+    const Work work(spec);
+    if (s.items_total != work.items())
+      throw std::runtime_error("shard " + std::to_string(s.shard) + " says the campaign has " +
+                               std::to_string(s.items_total) + " items; its fingerprint gives " + std::to_string(work.items()));
+    work.check(s.results, {{0, s.items_done}}, "shard " + std::to_string(s.shard));
+  }
   return total;
 }
 

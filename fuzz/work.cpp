@@ -109,10 +109,12 @@ PartCheckpoint deserialize_part(const std::string& text, const std::string& sour
   PartCheckpoint c;
   std::istringstream in(text);
   std::string line[3];
-  if (!std::getline(in, line[0]) || line[0] != "cdref-part 1")
+  if (!std::getline(in, line[0]) || (line[0] != "cdref-part 1" && line[0] != "cdref-part 1\r"))
     throw std::runtime_error(source + ":1: not a cdref part checkpoint");
   for (int k = 1; k < 3; ++k)
     if (!std::getline(in, line[k])) throw std::runtime_error(source + ": truncated (no " + (k == 1 ? "part" : "done") + " record)");
+  for (std::string& l : line)
+    if (!l.empty() && l.back() == '\r') l.pop_back();  // a file that passed through CRLF line ends
   {
     std::istringstream ls(line[1]);
     std::string tag;
@@ -142,21 +144,22 @@ void write_file_atomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
+  // a failure leaves no temporary file behind (and the checkpoint as it was)
+  auto fail = [&](const char* doing, int e, bool open) {
+    if (open) ::close(fd);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(std::string("cannot ") + doing + " checkpoint " + path + ": " + std::strerror(e ? e : EIO));
+  };
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
     if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) {
-      const int e = errno;
-      ::close(fd);
-      throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(e));
-    }
+    if (k <= 0) fail("write", errno, true);
     done += std::size_t(k);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0)
-    throw std::runtime_error("cannot write checkpoint " + tmp + ": " + std::strerror(errno));
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("cannot replace checkpoint " + path + ": " + std::strerror(errno));
+  if (::fsync(fd) != 0) fail("write", errno, true);
+  if (::close(fd) != 0) fail("write", errno, false);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("replace", errno, false);
   const auto slash = path.rfind('/');
   const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
   const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

@@ -1,126 +1,102 @@
 // src/campaign_cli.cpp - the options of `cdref campaign` and its outputs.
 #include "campaign_cli.hpp"
 
-#include <cmath>
-#include <fstream>
-#include <iostream>
+#include <algorithm>
+#include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
-#include "casefiles.hpp"
 #include "report.hpp"
 
 namespace cdref::cli {
 
 using namespace cdref::fuzz;
 
-std::uint64_t to_u64(const std::string& s, const std::string& opt) {
-  std::size_t pos = 0;
-  unsigned long long x = 0;
-  try {
-    x = std::stoull(s, &pos);
-  } catch (const std::exception&) {
-    pos = 0;
-  }
-  if (pos != s.size() || s.empty() || s.find('-') != std::string::npos)
-    throw std::invalid_argument(opt + " wants a nonnegative whole number, not '" + s + "'");
-  return x;
+namespace {
+
+std::string family_names() {
+  std::set<std::string> names;
+  for (Query q : all_queries())
+    for (const Family& f : families(q)) names.insert(f.name);
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
 }
 
-int to_int(const std::string& s, const std::string& opt) {
-  std::size_t pos = 0;
-  int x = 0;
-  try {
-    x = std::stoi(s, &pos);
-  } catch (const std::exception&) {
-    pos = 0;
-  }
-  if (pos != s.size() || s.empty()) throw std::invalid_argument(opt + " wants a whole number, not '" + s + "'");
-  return x;
+std::string query_names() {
+  std::string s;
+  for (Query q : all_queries()) s += (s.empty() ? "" : ", ") + std::string(info(q).name);
+  return s;
 }
 
-void write_to(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f) throw std::runtime_error("cannot write " + path);
-}
+}  // namespace
 
-CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaults, bool mpi) {
-  CampaignCommand c;
+void add_campaign_options(CLI::App& app, CampaignCommand& c, bool mpi) {
   Spec& spec = c.spec;
-  spec.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  app.add_option("--query", c.query_names, "a query (repeatable; default: all): " + query_names())
+      ->check(query_name())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--family", spec.families, "a family (repeatable; default: every family of each query): " + family_names())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--scale", spec.scales, "a scale of the families (repeatable; default: all; see cdref describe)")
+      ->check(whole_number(0, 999999999))
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--impl", spec.impls,
+                 "an implementation (repeatable; default: all): book-float, book-double, book-long-double, "
+                 "stable-float, stable-double, robust-float, robust-double, robust-long-double, and a query's own "
+                 "variants (book-exact, book-double-eps, ...: see cdref describe)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--n", spec.n, "cases per (query, family, scale) cell (default 1000)")
+      ->check(whole_number(1, std::uint64_t(1) << 40));
+  app.add_option("--seed", spec.seed, "the campaign seed (default 1)")->check(whole_number(0, UINT64_MAX));
+  app.add_option_function<int>(
+         "--threads", [&c](const int& t) { c.spec.threads = t, c.threads_given = true; },
+         "worker threads (default: the hardware's)")
+      ->check(whole_number(1, 4096));
+  app.add_option("--shard", c.shard, "run only the cases with index % N == k, written k/N");
+  app.add_option("--checkpoint", spec.checkpoint, "write the results so far to this file as the campaign goes");
+  app.add_option("--checkpoint-every", spec.checkpoint_every,
+                 "seconds between checkpoints (default 10; 0: after every round of work)")
+      ->check(real_number(0, 1e6));
+  app.add_flag("--resume", spec.resume, "continue the campaign saved in --checkpoint");
+  app.add_option("--out", c.out, "write the results (the mergeable text form) to this file");
+  app.add_option("--json", c.json, "write the results as JSON to this file (- for standard output)");
+  app.add_option("--csv", c.csv, "write the results as CSV to this file (- for standard output)");
+  app.add_option("--outputs", c.outputs,
+                 "all (default): grade every output against the correctly rounded truth; cls: the "
+                 "classification alone (fast); certain: every output, but an implementation with a certificate "
+                 "(robust-*) only where it calls its classification certain")
+      ->check(one_of({"all", "cls", "certain"}));
+  app.add_flag("--quiet", c.quiet, "no table on standard output");
+  c.mpi = mpi;
+  app.add_flag("--mpi", c.mpi_flag,
+               mpi ? "accepted for symmetry: cdref-mpi always runs across the ranks"
+                   : "(campaigns across MPI ranks run as cdref-mpi: see cdref-mpi --help)");
+}
+
+void finish_campaign(CampaignCommand& c, bool defaults) {
+  Spec& spec = c.spec;
+  if (!c.threads_given) spec.threads = default_threads();
   if (defaults) spec.n = 1000;  // a minute and a quarter on 2 cores
-  std::size_t i = 0;
-  auto next = [&](const std::string& opt) -> std::string {
-    if (i >= args.size()) throw std::invalid_argument(opt + " needs a value");
-    return args[i++];
-  };
-  while (i < args.size()) {
-    const std::string opt = args[i++];
-    if (opt == "--query")
-      spec.queries.push_back(query_by_name(next(opt)));
-    else if (opt == "--family")
-      spec.families.push_back(next(opt));
-    else if (opt == "--scale")
-      spec.scales.push_back(to_int(next(opt), opt));
-    else if (opt == "--impl") {
-      spec.impls.push_back(next(opt));
-      implementation_by_name(spec.impls.back());
-    } else if (opt == "--n")
-      spec.n = to_u64(next(opt), opt);
-    else if (opt == "--seed")
-      spec.seed = to_u64(next(opt), opt);
-    else if (opt == "--threads") {
-      const std::uint64_t t = to_u64(next(opt), opt);
-      if (t < 1 || t > 4096) throw std::invalid_argument("--threads wants 1 to 4096, not " + std::to_string(t));
-      spec.threads = int(t);
-    } else if (opt == "--shard") {
-      const std::string s = next(opt);
-      const auto slash = s.find('/');
-      if (slash == std::string::npos) throw std::invalid_argument("--shard wants k/N, not '" + s + "'");
-      spec.shard = to_int(s.substr(0, slash), opt);
-      spec.shards = to_int(s.substr(slash + 1), opt);
-    } else if (opt == "--checkpoint")
-      spec.checkpoint = next(opt);
-    else if (opt == "--resume")
-      spec.resume = true;
-    else if (opt == "--out")
-      c.out = next(opt);
-    else if (opt == "--json")
-      c.json = next(opt);
-    else if (opt == "--csv")
-      c.csv = next(opt);
-    else if (opt == "--quiet")
-      c.quiet = true;
-    else if (opt == "--outputs") {
-      const std::string o = next(opt);
-      if (o != "all" && o != "cls" && o != "certain")
-        throw std::invalid_argument(
-            "--outputs is all (every output), cls (the classification alone) or certain (every output where "
-            "a certificate says certain), not '" + o + "'");
-      spec.classification_only = o == "cls";
-      spec.certain_outputs = o == "certain";
-    }
-    else if (opt == "--mpi") {  // (cdref-mpi runs across the ranks whether or not it is given)
-      if (!mpi)
-        throw std::invalid_argument(
-            "--mpi: campaigns across MPI ranks run as `mpirun --bind-to none -np R cdref-mpi campaign ...` (built "
-            "beside cdref when OpenMPI is installed)");
-    } else if (opt == "--checkpoint-every") {
-      const std::string s = next(opt);
-      char* end = nullptr;
-      const double x = std::strtod(s.c_str(), &end);
-      if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(x) || x < 0 || x > 1e6)
-        throw std::invalid_argument("--checkpoint-every wants seconds from 0 to 1e6, not '" + s + "'");
-      spec.checkpoint_every = x;
-    } else
-      throw std::invalid_argument("unknown option '" + opt + "' (see `" + (mpi ? "cdref-mpi" : "cdref") + " help`)");
+  for (const auto& name : c.query_names) spec.queries.push_back(query_by_name(name));
+  for (const auto& im : spec.impls) implementation_by_name(im);  // throws naming the choices
+  spec.classification_only = c.outputs == "cls";
+  spec.certain_outputs = c.outputs == "certain";
+  if (!c.shard.empty()) {
+    const auto slash = c.shard.find('/');
+    const std::string k = c.shard.substr(0, slash), n = slash == std::string::npos ? "" : c.shard.substr(slash + 1);
+    auto digits = [](const std::string& s) {
+      return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (!digits(k) || !digits(n) || std::stoi(k) >= std::stoi(n))
+      throw std::invalid_argument("--shard wants k/N with 0 <= k < N, not '" + c.shard + "'");
+    spec.shard = std::stoi(k);
+    spec.shards = std::stoi(n);
   }
+  if (c.mpi_flag && !c.mpi)
+    throw std::invalid_argument(
+        "--mpi: campaigns across MPI ranks run as `mpirun --bind-to none -np R cdref-mpi campaign ...` (built beside "
+        "cdref when OpenMPI is installed)");
   if (spec.resume && spec.checkpoint.empty()) throw std::invalid_argument("--resume needs --checkpoint FILE");
   // a name given twice would run its cells twice and count every case of them twice
   auto once = [](const auto& v, const std::string& opt, auto name) {
@@ -132,9 +108,25 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
   once(spec.families, "--family", [](const std::string& f) { return f; });
   once(spec.impls, "--impl", [](const std::string& i) { return i; });
   once(spec.scales, "--scale", [](int k) { return std::to_string(k); });
-  if (spec.shards < 1 || spec.shard < 0 || spec.shard >= spec.shards)
-    throw std::invalid_argument("--shard wants k/N with 0 <= k < N");
   if (spec.queries.empty()) spec.queries = all_queries();
+  // a family or a scale that no chosen query has would select nothing
+  for (const std::string& f : spec.families) {
+    if (spec.queries.size() == 1) family_by_name(spec.queries.front(), f);  // names the query's families
+    bool found = false;
+    for (Query q : spec.queries)
+      for (const Family& fam : families(q)) found = found || fam.name == f;
+    if (!found) throw std::invalid_argument("--family " + f + ": no chosen query has this family (see cdref describe)");
+  }
+  for (int k : spec.scales) {
+    bool found = false;
+    for (Query q : spec.queries)
+      for (const Family& fam : families(q))
+        if (spec.families.empty() || std::find(spec.families.begin(), spec.families.end(), fam.name) != spec.families.end())
+          found = found || std::find(fam.scales.begin(), fam.scales.end(), k) != fam.scales.end();
+    if (!found)
+      throw std::invalid_argument("--scale " + std::to_string(k) +
+                                  ": no chosen family has this scale (see cdref describe)");
+  }
   if (spec.impls.empty())  // every implementation of the chosen queries
     for (const Implementation& im : builtin_implementations())
       for (Query q : spec.queries)
@@ -142,7 +134,6 @@ CampaignCommand parse_campaign(const std::vector<std::string>& args, bool defaul
           spec.impls.push_back(im.name);
           break;
         }
-  return c;
 }
 
 std::string default_campaign_banner(const Spec& spec) {
@@ -153,19 +144,33 @@ std::string default_campaign_banner(const Spec& spec) {
          ".\n\n";
 }
 
-void emit_campaign(const CampaignCommand& c, const Results& r) {
-  if (!c.out.empty()) write_to(c.out, serialize(c.spec, r, total_items(c.spec)));
-  if (!c.json.empty()) {
-    std::ostringstream s;
-    write_json(s, r, c.spec.seed);
-    write_to(c.json, s.str());
+CampaignOutputs open_campaign_outputs(const CampaignCommand& c) {
+  CampaignOutputs o;
+  if (!c.out.empty()) {
+    if (c.out == "-") throw std::invalid_argument("--out wants a file (the text form is for merge and resume)");
+    o.out.emplace(c.out, "--out");
   }
-  if (!c.csv.empty()) {
-    std::ostringstream s;
-    write_csv(s, r);
-    write_to(c.csv, s.str());
-  }
+  if (!c.json.empty()) o.json.emplace(c.json, "--json");
+  if (!c.csv.empty()) o.csv.emplace(c.csv, "--csv");
+  return o;
+}
+
+void emit_campaign(const CampaignCommand& c, CampaignOutputs& o, const Results& r) {
+  io::Outputs all;
+  if (o.out) all.attempt([&] {
+      o.out->stream() << serialize(c.spec, r, total_items(c.spec));
+      o.out->commit();
+    });
+  if (o.json) all.attempt([&] {
+      write_json(o.json->stream(), r, c.spec.seed);
+      o.json->commit();
+    });
+  if (o.csv) all.attempt([&] {
+      write_csv(o.csv->stream(), r);
+      o.csv->commit();
+    });
   if (!c.quiet) print_table(std::cout, r, c.spec.seed);
+  all.finish();
 }
 
 }  // namespace cdref::cli

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "options.hpp"
+
 namespace cdref::cli {
 
 struct CaseRow {
@@ -17,9 +19,12 @@ struct CaseRow {
   std::string refusal;  // why no exact answer exists (a non-finite input, by column), or ""
 };
 
-// Reads a case file of query q. Malformed lines are reported on standard error with
-// `source` and their line number, counted in `bad`, and skipped; a header without the
-// query's columns throws std::runtime_error. A well-formed line whose numbers are not finite
+// Reads a case file of query q. Malformed lines (a field count that differs from the header's,
+// a case id that is not a whole number below 2^64 or that an earlier line has, a number with a
+// blank inside or one that underflows to 0, a NUL byte) are reported on standard error with
+// `source` and their line number, counted in `bad`, and skipped; a header without the query's
+// columns, or naming a column twice, throws std::runtime_error. A UTF-8 byte-order mark is
+// skipped. A well-formed line whose numbers are not finite
 // (nan, inf, or a literal beyond double's range such as 1e400) is kept with its `refusal`:
 // `oracle` and `score` refuse that case by name and answer the rest.
 std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::string& source, int& bad);
@@ -35,10 +40,10 @@ fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision, bool va
 // anything else throws std::invalid_argument naming the choices.
 bool classification_only(const std::string& outputs);
 
-int cases_command(std::vector<std::string> args);
-int oracle_command(std::vector<std::string> args);
-int score_command(std::vector<std::string> args);
-int plot_command(std::vector<std::string> args);
-int report_command(std::vector<std::string> args);
+// The subcommands cases, oracle and score (src/casefiles.cpp), plot (src/plot.cpp) and report
+// (src/costreport.cpp), added to the command line.
+void add_case_commands(CLI::App& root, Commands& cmds);
+void add_plot_command(CLI::App& root, Commands& cmds);
+void add_report_command(CLI::App& root, Commands& cmds);
 
 }  // namespace cdref::cli

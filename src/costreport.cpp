@@ -38,6 +38,9 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -46,6 +49,9 @@
 
 #include "campaign_cli.hpp"
 #include "casefiles.hpp"
+#include "options.hpp"
+#include "output.hpp"
+#include "plotting.hpp"
 
 namespace cdref::cli {
 
@@ -314,43 +320,39 @@ void print(std::ostream& o, const QueryReport& r) {
   o << "\n\n";
 }
 
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 void write_json(std::ostream& o, const std::vector<QueryReport>& reps, std::uint64_t n, int reps_n, std::uint64_t err_n) {
-  o << "{\"cdref_report\": 1, \"cases_timed\": " << n << ", \"repetitions\": " << reps_n
-    << ", \"error_cases_per_cell\": " << err_n << ", \"queries\": [";
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    const QueryReport& r = reps[i];
-    o << (i ? ", " : "") << "{\"query\": \"" << info(r.q).name << "\", \"rows\": [";
-    for (std::size_t j = 0; j < r.rows.size(); ++j) {
-      const Row& row = r.rows[j];
-      o << (j ? ", " : "") << "{\"implementation\": \"" << json_escape(row.name) << "\", \"ns_per_query\": " << row.ns
-        << ", \"ratio_to_bare\": " << row.ns / r.bare << ", \"ratio_to_book_double\": " << row.ns / r.base;
-      if (row.measured)
-      {
-        o << ", \"misclassified_uniform\": " << row.miss_uniform << ", \"misclassified_hard\": " << row.miss_hard;
-        if (first_output_in_ulps(r.q)) o << ", \"p99_ulps\": " << row.p99 << ", \"max_ulps\": " << row.max;
+  using J = nlohmann::ordered_json;
+  J queries = J::array();
+  for (const QueryReport& r : reps) {
+    J rows = J::array();
+    for (const Row& row : r.rows) {
+      J x = {{"implementation", row.name},
+             {"ns_per_query", row.ns},
+             {"ratio_to_bare", row.ns / r.bare},
+             {"ratio_to_book_double", row.ns / r.base}};
+      if (row.measured) {
+        x["misclassified_uniform"] = row.miss_uniform;
+        x["misclassified_hard"] = row.miss_hard;
+        if (first_output_in_ulps(r.q)) x["p99_ulps"] = row.p99, x["max_ulps"] = row.max;
         const std::vector<std::string> outs = value_outputs(r.q);
-        o << ", \"outputs\": [";
+        J og = J::array();
         for (std::size_t g = 0; g < outs.size() && g < row.p99s.size(); ++g)
-          o << (g ? ", " : "") << "{\"output\": \"" << outs[g] << "\", \"p99_ulps\": " << row.p99s[g]
-            << ", \"max_ulps\": " << row.maxs[g] << "}";
-        o << "]";
+          og.push_back({{"output", outs[g]}, {"p99_ulps", row.p99s[g]}, {"max_ulps", row.maxs[g]}});
+        x["outputs"] = og;
+      } else {
+        x["error"] = row.error_note;
       }
-      else
-        o << ", \"error\": \"" << json_escape(row.error_note) << "\"";
-      o << "}";
+      rows.push_back(x);
     }
-    o << "]}";
+    queries.push_back({{"query", info(r.q).name}, {"rows", rows}});
   }
-  o << "]}\n";
+  o << J{{"cdref_report", 1},
+         {"cases_timed", n},
+         {"repetitions", reps_n},
+         {"error_cases_per_cell", err_n},
+         {"queries", queries}}
+           .dump(1)
+    << "\n";
 }
 
 void write_csv(std::ostream& o, const std::vector<QueryReport>& reps) {
@@ -378,82 +380,71 @@ void write_csv(std::ostream& o, const std::vector<QueryReport>& reps) {
 // max error of the first output in ulps (box-box: the share misclassified on the hard
 // families). Exact rows (open circles, slanted labels) sit on the bottom line; MPFR's error
 // is not measured and is left out.
-void write_svg(const std::string& out, const std::vector<QueryReport>& reps) {
-  const std::string dat = out + ".dat";
-  {
-    std::ofstream d(dat);
-    for (std::size_t i = 0; i < reps.size(); ++i) {
-      const bool values = first_output_in_ulps(reps[i].q);
-      d << "# " << info(reps[i].q).name << ": name ns error exact\n";
-      for (const Row& row : reps[i].rows) {
-        if (!row.measured && row.error_note != "exact") continue;
-        const double err = !row.measured ? 0 : values ? double(row.max) : row.miss_hard;
-        const double floor = values ? 0.5 : 1e-5;
-        d << "\"" << row.name << "\" " << row.ns << " " << std::max(err, floor) << " " << (row.measured ? 0 : 1)
-          << "\n";
-      }
-      d << "\n\n";  // a gnuplot index per query
-    }
-  }
-  FILE* gp = popen("gnuplot", "w");
-  if (!gp) throw std::runtime_error("cannot run gnuplot (install gnuplot-nox)");
+std::string draw_svg(const std::vector<QueryReport>& reps) {
+  std::ostringstream gp;
   const int cols = 2, nrows = int((reps.size() + cols - 1) / cols);
-  std::fprintf(gp,
-               "set terminal svg size 1200,%d dynamic font 'sans,10' background rgb 'white'\nset output '%s'\n"
-               "set multiplot layout %d,%d title 'cdref report: cost against error (one point per implementation)'\n"
-               "set logscale xy\nset grid\nset xlabel 'ns per query'\nset format y '10^{%%L}'\nunset key\n",
-               420 * nrows, out.c_str(), nrows, cols);
+  gp << "set terminal svg size 1200," << 420 * nrows << " dynamic font 'sans,10' background rgb 'white'\n";
+  // the data, inline: one block per query, rows "name ns error exact"
   for (std::size_t i = 0; i < reps.size(); ++i) {
     const bool values = first_output_in_ulps(reps[i].q);
-    std::fprintf(gp, "set title '%s'\nset ylabel '%s'\nset yrange [%s:*]\n", info(reps[i].q).name,
-                 values ? "max error of the first output, ulps (exact: 0.5)" : "misclassified, hard families (exact: 1e-5)",
-                 values ? "0.3" : "5e-6");
-    std::fprintf(gp,
-                 "plot '%s' index %zu u 2:($4 == 0 ? $3 : 1/0) w p pt 7 ps 0.8 lc 1, "
-                 "'' index %zu u 2:($4 == 0 ? $3 : 1/0):1 w labels left offset 0.6,0 font ',7' noenhanced, "
-                 "'' index %zu u 2:($4 == 1 ? $3 : 1/0) w p pt 6 ps 0.8 lc 2, "
-                 "'' index %zu u 2:($4 == 1 ? $3 : 1/0):1 w labels rotate by 50 left offset 0.3,0.5 font ',6' "
-                 "noenhanced tc lt 2\n",
-                 dat.c_str(), i, i, i, i);
+    gp << "$q" << i << " << EOD\n";
+    for (const Row& row : reps[i].rows) {
+      if (!row.measured && row.error_note != "exact") continue;
+      const double err = !row.measured ? 0 : values ? double(row.max) : row.miss_hard;
+      const double floor = values ? 0.5 : 1e-5;
+      std::string name = row.name;
+      for (char& c : name)
+        if (c == '"' || static_cast<unsigned char>(c) < 0x20) c = ' ';
+      gp << "\"" << name << "\" " << row.ns << " " << std::max(err, floor) << " " << (row.measured ? 0 : 1) << "\n";
+    }
+    gp << "EOD\n";
   }
-  std::fprintf(gp, "unset multiplot\n");
-  if (pclose(gp) != 0) throw std::runtime_error("gnuplot failed drawing " + out);
+  gp << "set multiplot layout " << nrows << "," << cols
+     << " title 'cdref report: cost against error (one point per implementation)'\n"
+        "set logscale xy\nset grid\nset xlabel 'ns per query'\nset format y '10^{%L}'\nunset key\n";
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    const bool values = first_output_in_ulps(reps[i].q);
+    gp << "set title " << gp_string(info(reps[i].q).name) << " noenhanced\nset ylabel "
+       << gp_string(values ? "max error of the first output, ulps (exact: 0.5)" : "misclassified, hard families (exact: 1e-5)")
+       << "\nset yrange [" << (values ? "0.3" : "5e-6") << ":*]\n";
+    const std::string d = "$q" + std::to_string(i);
+    gp << "plot " << d << " u 2:($4 == 0 ? $3 : 1/0) w p pt 7 ps 0.8 lc 1, " << d
+       << " u 2:($4 == 0 ? $3 : 1/0):1 w labels left offset 0.6,0 font ',7' noenhanced, " << d
+       << " u 2:($4 == 1 ? $3 : 1/0) w p pt 6 ps 0.8 lc 2, " << d
+       << " u 2:($4 == 1 ? $3 : 1/0):1 w labels rotate by 50 left offset 0.3,0.5 font ',6' noenhanced tc lt 2\n";
+  }
+  gp << "unset multiplot\n";
+  return gnuplot_svg(gp.str());
 }
 
 }  // namespace
 
-int report_command(std::vector<std::string> args) {
+struct ReportOptions {
   // 16,384 cases a set: over 2,000 repeated, a branch predictor learns enough of their sequence
   // that the book's box tests ran in a third of their time (README, "How many cases"); and each
   // timed pass on a fresh set (measure())
   std::uint64_t n = 16384, err_n = 1000;
   int reps = 5;
-  int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = default_threads();
   std::string csv, json, svg;
+  std::vector<std::string> query_names;
+};
+
+int report_run(const ReportOptions& o) {
+  const std::uint64_t n = o.n, err_n = o.err_n;
+  const int reps = o.reps, threads = o.threads;
   std::vector<Query> queries;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    auto val = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + " needs a value");
-      return args[++i];
-    };
-    if (args[i] == "--n") n = to_u64(val(), "--n");
-    else if (args[i] == "--error-n") err_n = to_u64(val(), "--error-n");
-    else if (args[i] == "--reps") reps = to_int(val(), "--reps");
-    else if (args[i] == "--threads") threads = to_int(val(), "--threads");
-    else if (args[i] == "--query") queries.push_back(query_by_name(val()));
-    else if (args[i] == "--csv") csv = val();
-    else if (args[i] == "--json") json = val();
-    else if (args[i] == "--svg") svg = val();
-    else throw std::invalid_argument("unknown option '" + args[i] + "'");
+  for (const auto& name : o.query_names) {
+    const Query q = query_by_name(name);
+    if (std::find(queries.begin(), queries.end(), q) != queries.end())
+      throw std::invalid_argument("--query " + name + " is given twice");
+    queries.push_back(q);
   }
-  if (n == 0 || reps < 1 || err_n == 0) throw std::invalid_argument("report needs --n, --reps and --error-n of at least 1");
-  // every row keeps its own copy of the timed_windows sets of cases (one query's at a time):
-  // polygon-polygon's rows took 2.2 GB at 16,384 (maximum resident size, 2026-11-30), so 65,536
-  // keeps them near 9 GB
-  if (n > 65536)
-    throw std::invalid_argument("report takes --n up to 65536 (its rows prepare 8 sets of n cases each), not " +
-                                std::to_string(n));
-  if (threads < 1) throw std::invalid_argument("report needs --threads of at least 1, not " + std::to_string(threads));
+  // before the work: a path that cannot be written is refused now
+  std::optional<io::Output> csv, json, svg;
+  if (!o.csv.empty()) csv.emplace(o.csv, "--csv");
+  if (!o.json.empty()) json.emplace(o.json, "--json");
+  if (!o.svg.empty()) svg.emplace(o.svg, "--svg");
   if (queries.empty()) queries = all_queries();
   std::cout << "cdref report: " << n << " uniform cases a timed pass, each pass of a fast row on a fresh set of "
             << timing_windows << ", median of " << reps << " interleaved repetitions, one thread; errors from " << err_n
@@ -464,21 +455,52 @@ int report_command(std::vector<std::string> args) {
     print(std::cout, out.back());
     std::cout.flush();
   }
-  auto write = [](const std::string& path, auto&& body) {
-    std::ofstream f(path);
-    body(f);
-    if (!f) throw std::runtime_error("cannot write " + path);
-    std::cout << "wrote " << path << "\n";
+  io::Outputs all;
+  auto write = [&](std::optional<io::Output>& f, auto&& body) {
+    if (!f) return;
+    all.attempt([&] {
+      body(f->stream());
+      f->commit();
+      if (!f->is_stdout()) std::cout << "wrote " << f->path() << "\n";
+    });
   };
-  if (!csv.empty()) write(csv, [&](std::ostream& f) { write_csv(f, out); });
-  if (!json.empty()) write(json, [&](std::ostream& f) { write_json(f, out, n, reps, err_n); });
-  if (!svg.empty()) {
-    write_svg(svg, out);
-    std::cout << "wrote " << svg << " (data in " << svg << ".dat)\n";
+  write(csv, [&](std::ostream& f) { write_csv(f, out); });
+  write(json, [&](std::ostream& f) { write_json(f, out, n, reps, err_n); });
+  try {
+    if (svg) write(svg, [&](std::ostream& f) { f << draw_svg(out); });
+  } catch (const std::runtime_error& e) {  // gnuplot failed: the other outputs are written
+    all.attempt([&] { throw io::write_error(std::string("cannot draw --svg: ") + e.what()); });
   }
+  all.finish();
   std::size_t sink = 0;
   for (const QueryReport& r : out) sink += r.sink;
   return sink == std::size_t(-1) ? 1 : 0;
+}
+
+void add_report_command(CLI::App& root, Commands& cmds) {
+  auto o = std::make_shared<ReportOptions>();
+  CLI::App* app = root.add_subcommand(
+      "report",
+      "what accuracy costs in time: every implementation of every query (or of --query Q) timed side by side on the "
+      "same uniform cases (median of interleaved repetitions), with misclassification and ulp errors from a campaign; "
+      "the SVG plots cost against error");
+  conventions(*app);
+  app->add_option("--query", o->query_names, "a query (repeatable; default: all; see cdref describe)")
+      ->check(query_name())
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  // every row keeps its own copy of the timed_windows sets of cases (one query's at a time):
+  // polygon-polygon's rows took 2.2 GB at 16,384 (maximum resident size, 2026-11-30), so 65,536
+  // keeps them near 9 GB
+  app->add_option("--n", o->n, "uniform cases in a timed pass (default 16384)")->check(whole_number(1, 65536));
+  app->add_option("--reps", o->reps, "interleaved repetitions, the median taken (default 5)")->check(whole_number(1, 1000));
+  app->add_option("--error-n", o->err_n, "cases per cell of the error campaign (default 1000)")
+      ->check(whole_number(1, 100000000));
+  app->add_option("--threads", o->threads, "threads of the error campaign (default: the hardware's)")
+      ->check(whole_number(1, 4096));
+  app->add_option("--csv", o->csv, "write the table as CSV to this file (- for standard output)");
+  app->add_option("--json", o->json, "write the table as JSON to this file (- for standard output)");
+  app->add_option("--svg", o->svg, "draw cost against error to this SVG");
+  cmds.add(app, [o] { return report_run(*o); });
 }
 
 }  // namespace cdref::cli

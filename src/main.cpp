@@ -1,10 +1,9 @@
 // src/main.cpp - the cdref command line.
 //
 //   cdref                       the default campaign (every query, book at float and double)
-//   cdref campaign [options]    a campaign; see `cdref help`
-//   cdref merge FILE...         merge shard results into the unsharded result
-//   cdref describe              queries, their columns, families and scales
-//   cdref demo                  a few hard cases side by side with the exact answer
+//   cdref COMMAND --help        each command's options (campaign, merge, describe, demo, cases,
+//                               oracle, score, plot, report, scene, peers)
+//   cdref --version             the version and the commit
 #include <unistd.h>
 
 #include <chrono>
@@ -21,12 +20,15 @@
 
 #include <cdref/exact/gmp_pool.hpp>
 #include "campaign_cli.hpp"
+#include "options.hpp"
+#include "output.hpp"
+#include <cdref/fuzz/work.hpp>
 #include "casefiles.hpp"
 #include "report.hpp"
 #include "scene/scene.hpp"
 
 namespace cdref::peers {
-int peers_command(const std::vector<std::string>& args);  // src/peers/peers.cpp
+void add_peers_command(CLI::App& app, cli::Commands& cmds);  // src/peers/peers.cpp
 }
 
 int run_demo();
@@ -35,80 +37,7 @@ namespace {
 
 using namespace cdref;
 using namespace cdref::fuzz;
-
-const char* usage = R"(usage:
-  cdref                          run the default campaign and print the findings
-  cdref campaign [options]       run a campaign
-      --query Q        a query (repeatable; default: all; see `cdref describe`)
-      --family F       a family (repeatable; default: all of each query)
-      --scale K        a scale of the family (repeatable; default: all)
-      --impl I         book-float, book-double, book-long-double; stable-float, stable-double;
-                       robust-float, robust-double, robust-long-double; a query's own variants
-                       (book-exact, book-double-eps, ...: see `cdref describe`) (repeatable;
-                       default: all)
-      --n N            cases per (query, family, scale) cell (default 1000)
-      --seed S         the campaign seed (default 1)
-      --threads T      worker threads (default: hardware threads)
-      --shard k/N      run only the cases with index % N == k
-      --checkpoint F   write the results so far to F as the campaign goes
-      --checkpoint-every S  seconds between checkpoints (default 10; 0: after every round)
-      --resume         continue the campaign saved in --checkpoint F
-      --out F          write the results (mergeable text form) to F
-      --json F         write the results as JSON to F ("-" for standard output)
-      --csv F          write the results as CSV to F ("-" for standard output)
-      --outputs O      all (default): grade every output against the correctly rounded truth;
-                       cls: grade the classification alone (the classification oracle: fast);
-                       certain: every output, but an implementation with a certificate (robust-*)
-                       only where it calls its classification certain (what it promises)
-      --quiet          no table
-                       (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign
-                       [options]; see cdref-mpi help)
-  cdref merge [--out F] [--json F] [--csv F] FILE...
-                                 merge complete shard files of one campaign
-  cdref report [--query Q]... [--n N] [--reps R] [--error-n N] [--threads T]
-               [--csv F] [--json F] [--svg F]
-                                 what accuracy costs in time: every implementation of every
-                                 query (or of --query Q) timed side by side on the same N
-                                 uniform cases (median of R interleaved repetitions), with
-                                 misclassification and ulp errors from a campaign of
-                                 --error-n cases per cell; the SVG plots cost against error
-  cdref describe                 list queries, input and output columns, families and scales
-  cdref cases --query Q [--family F] [--scale K] [--n N] [--seed S] [--decimal] [--out F]
-                                 write case inputs as CSV (hex-float; --decimal: 17 digits)
-  cdref cases --describe Q       the case and answer columns of query Q
-  cdref oracle --query Q [--cases F] [--precision 24|53|64] [--outputs all|cls] [--decimal] [--out F]
-                                 the exact answers to a case file, correctly rounded
-                                 (24: for the inputs rounded to float, as float; 64: as long double;
-                                 --outputs cls: the classification columns alone)
-  cdref score --query Q --cases F --answers A [--precision 24|53|64]
-                                 grade an answer file (any subset of the answer columns)
-  cdref plot --query Q --family F [--output O] [--n N] [--seed S] [--out F.svg]
-                                 drift against scale as SVG (gnuplot): misclassified share
-                                 and p99/max ulps of output O, book-float and book-double
-  cdref demo                     the chapter's algorithms beside the exact answer on hard cases
-  cdref scene [FILE] [--precision float|double|exact]... [--compare A,B]... [--json F] [--svg F]
-              [--quiet]
-                                 run a scene (JSON, see docs/scenes.md; no FILE: the built-in
-                                 default, scenes/default.json) evaluating only the queries its
-                                 effects name, and print its event log; --compare float,exact
-                                 runs both and prints the events they disagree on and the
-                                 differences of the continuous outputs (default: float,exact
-                                 and double,exact); --svg draws the top view with the events
-  cdref peers [--n N] [--seed S] [--threads T] [--json F] [--svg F]
-                                 GLM's, Bullet's and Eigen's functions on cdref's families at
-                                 float against the exact answer: cases where their convention
-                                 gives another meaning set apart, misclassifications, p99/max ulps
-)";
-
-struct Args {
-  std::vector<std::string> v;
-  std::size_t i = 0;
-  bool more() const { return i < v.size(); }
-  std::string next(const std::string& opt) {
-    if (i >= v.size()) throw std::invalid_argument(opt + " needs a value");
-    return v[i++];
-  }
-};
+using namespace cdref::cli;
 
 // A progress bar with rate and ETA on a terminal; nothing otherwise.
 struct Progress {
@@ -127,16 +56,18 @@ struct Progress {
   }
 };
 
-int campaign(Args& a, bool defaults) {
-  cli::CampaignCommand c = cli::parse_campaign({a.v.begin() + long(a.i), a.v.end()}, defaults, false);
+int campaign(CampaignCommand& c, bool defaults) {
+  finish_campaign(c, defaults);
   Spec& spec = c.spec;
+  CampaignOutputs outputs = open_campaign_outputs(c);  // before the work: a bad path is refused now
+  if (!spec.checkpoint.empty()) io::check_replaceable(spec.checkpoint, "--checkpoint");
   Progress bar;
   spec.progress = [&bar](double d, double t) { bar(d, t); };
-  if (defaults) std::cout << cli::default_campaign_banner(spec);
+  if (defaults) std::cout << default_campaign_banner(spec);
   const auto t0 = std::chrono::steady_clock::now();
   const Results r = run(spec);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  cli::emit_campaign(c, r);
+  emit_campaign(c, outputs, r);
   std::uint64_t cases = 0;
   for (const auto& [k, st] : r.cells) cases += st.n;
   if (!c.quiet)
@@ -144,35 +75,28 @@ int campaign(Args& a, bool defaults) {
   return 0;
 }
 
-int merge(Args& a) {
-  std::string out, json, csv;
+struct MergeCommand {
+  std::vector<std::string> files;
+  CampaignCommand c;
+};
+
+int merge(MergeCommand& m) {
+  CampaignOutputs outputs = open_campaign_outputs(m.c);
   std::vector<Saved> shards;
-  while (a.more()) {
-    const std::string opt = a.next("");
-    if (opt == "--out")
-      out = a.next(opt);
-    else if (opt == "--json")
-      json = a.next(opt);
-    else if (opt == "--csv")
-      csv = a.next(opt);
-    else {
-      std::ifstream f(opt, std::ios::binary);
-      if (!f) throw std::runtime_error("cannot read " + opt);
-      std::stringstream ss;
-      ss << f.rdbuf();
-      shards.push_back(deserialize(ss.str(), opt));
-    }
-  }
+  for (const std::string& f : m.files) shards.push_back(deserialize(fuzz::read_whole_file(f), f));
   const Results r = merge_shards(shards);
   // the merged result is the unsharded campaign's: shard 0 of 1, complete
-  if (!out.empty())
-    cli::write_to(out, serialize(Saved{shards.front().fingerprint, 0, 1, shards.front().items_total,
-                                  shards.front().items_total, r, shards.front().seed}));
-  cli::CampaignCommand c;
-  c.spec.seed = shards.front().seed;
-  c.json = json;
-  c.csv = csv;
-  cli::emit_campaign(c, r);
+  io::Outputs all;
+  if (outputs.out) all.attempt([&] {
+      outputs.out->stream() << serialize(Saved{shards.front().fingerprint, 0, 1, shards.front().items_total,
+                                               shards.front().items_total, r, shards.front().seed});
+      outputs.out->commit();
+    });
+  m.c.out.clear();
+  outputs.out.reset();
+  m.c.spec.seed = shards.front().seed;
+  all.attempt([&] { emit_campaign(m.c, outputs, r); });
+  all.finish();
   return 0;
 }
 
@@ -202,29 +126,57 @@ int describe() {
 
 int main(int argc, char* argv[]) {
   cdref::exact::use_gmp_pool();  // GMP's small blocks cached per thread (gmp_pool.hpp)
-  Args a;
-  for (int i = 1; i < argc; ++i) a.v.push_back(argv[i]);
-  try {
-    if (!a.more()) return campaign(a, true);
-    const std::string cmd = a.next("");
-    if (cmd == "campaign") return campaign(a, false);
-    if (cmd == "merge") return merge(a);
-    if (cmd == "describe") return describe();
-    if (cmd == "demo") return run_demo();
-    if (cmd == "cases") return cli::cases_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "oracle") return cli::oracle_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "score") return cli::score_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "plot") return cli::plot_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "report") return cli::report_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "scene") return scene::scene_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "peers") return peers::peers_command({a.v.begin() + long(a.i), a.v.end()});
-    if (cmd == "help" || cmd == "--help" || cmd == "-h") {
-      std::cout << usage;
-      return 0;
-    }
-    throw std::invalid_argument("unknown command '" + cmd + "'");
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cdref: %s\n%s", e.what(), std::strstr(e.what(), "unknown command") ? usage : "");
-    return 2;
-  }
+  io::init();                    // checked standard output; a closed pipe is not a signal
+  CLI::App app{
+      "cdref: the exact answer for the primitive tests of Chapter 3 of van den Bergen's Collision Detection in "
+      "Interactive 3D Environments, and campaigns that measure float code against it.\n"
+      "With no command: the default campaign (every query, the book's algorithms and the robust tier at float, "
+      "double and long double against the exact answer) and its findings.",
+      "cdref"};
+  conventions(app);
+  app.set_version_flag("--version", version_text(), "print the version and the commit, then exit");
+  app.require_subcommand(0, 1);
+  Commands cmds;
+
+  auto camp = std::make_shared<CampaignCommand>();
+  CLI::App* campaign_app = app.add_subcommand(
+      "campaign",
+      "run a campaign: every (query, family, scale) cell's cases through the chosen implementations, graded against "
+      "the exact answer (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign [options])");
+  conventions(*campaign_app);
+  add_campaign_options(*campaign_app, *camp, false);
+  cmds.add(campaign_app, [camp] { return campaign(*camp, false); });
+
+  auto mrg = std::make_shared<MergeCommand>();
+  CLI::App* merge_app = app.add_subcommand("merge", "merge the complete shard files (--out of each shard) of one campaign");
+  conventions(*merge_app);
+  merge_app->add_option("FILE", mrg->files, "the shard files (repeatable)")->required()->check(CLI::ExistingFile);
+  merge_app->add_option("--out", mrg->c.out, "write the merged results (text form) to this file");
+  merge_app->add_option("--json", mrg->c.json, "write them as JSON (- for standard output)");
+  merge_app->add_option("--csv", mrg->c.csv, "write them as CSV (- for standard output)");
+  merge_app->add_flag("--quiet", mrg->c.quiet, "no table on standard output");
+  cmds.add(merge_app, [mrg] { return merge(*mrg); });
+
+  CLI::App* describe_app = app.add_subcommand("describe", "list queries, input and output columns, families and scales");
+  conventions(*describe_app);
+  cmds.add(describe_app, [] { return describe(); });
+
+  CLI::App* demo_app = app.add_subcommand("demo", "the chapter's algorithms beside the exact answer on hard cases");
+  conventions(*demo_app);
+  cmds.add(demo_app, [] { return run_demo(); });
+
+  CLI::App* help_app = app.add_subcommand("help", "this help");
+  cmds.add(help_app, [&app] {
+    std::cout << app.help("", CLI::AppFormatMode::Normal);
+    return 0;
+  });
+
+  cli::add_case_commands(app, cmds);
+  cli::add_plot_command(app, cmds);
+  cli::add_report_command(app, cmds);
+  scene::add_scene_command(app, cmds);
+  peers::add_peers_command(app, cmds);
+
+  auto dflt = std::make_shared<CampaignCommand>();
+  return run_app(app, cmds, argc, argv, [dflt] { return campaign(*dflt, true); }, "cdref");
 }

@@ -1,6 +1,8 @@
 // src/report.cpp - campaign results as a table for people, JSON and CSV.
 #include "report.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -53,17 +55,14 @@ std::string inputs_hex(const Exemplar& e, std::size_t n) {
   return s.str();
 }
 
-std::string json_str(const std::string& s) { return "\"" + s + "\""; }
-
-void json_ex(std::ostream& o, const Exemplar& e, std::size_t n) {
-  if (!e.set) {
-    o << "null";
-    return;
-  }
-  o << "{\"index\": " << e.index << ", \"metric\": " << e.metric << ", \"got\": " << json_str(hexfloat(e.got))
-    << ", \"want\": " << json_str(hexfloat(e.want)) << ", \"inputs\": [";
-  for (std::size_t i = 0; i < n; ++i) o << (i ? ", " : "") << json_str(hexfloat(e.inputs[i]));
-  o << "]}";
+// A kept example as JSON: its case index, its metric, the value given and the exact one
+// (hex-float, exact), and its inputs by column name (hex-float).
+nlohmann::ordered_json json_ex(const Exemplar& e, const QueryInfo& qi) {
+  if (!e.set) return nullptr;
+  nlohmann::ordered_json inputs = nlohmann::ordered_json::object();
+  for (std::size_t i = 0; i < qi.inputs.size(); ++i) inputs[qi.inputs[i]] = hexfloat(e.inputs[i]);
+  return {{"index", e.index}, {"metric", e.metric}, {"got", hexfloat(e.got)}, {"want", hexfloat(e.want)},
+          {"inputs", inputs}};
 }
 
 }  // namespace
@@ -205,44 +204,43 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
 }
 
 void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
-  o << "{\n  \"seed\": " << seed << ",\n  \"cells\": [\n";
-  bool first = true;
+  nlohmann::ordered_json cells = nlohmann::ordered_json::array();
   for (const auto& [k, st] : r.cells) {
     const QueryInfo& qi = info(k.query);
-    const std::size_t n = qi.inputs.size();
-    o << (first ? "" : ",\n") << "    {\"query\": " << json_str(qi.name) << ", \"impl\": " << json_str(k.impl)
-      << ", \"family\": " << json_str(k.family) << ", \"scale\": " << k.scale << ", \"cases\": " << st.n
-      << ", \"refused\": " << st.refused << ", \"false_positives\": " << st.cls_fp
-      << ", \"false_negatives\": " << st.cls_fn << ", \"predicate_false_positives\": " << st.pred_fp
-      << ", \"predicate_false_negatives\": " << st.pred_fn << ", \"certified\": " << st.certified
-      << ", \"uncertain\": " << st.uncertain << ", \"certain_but_wrong\": " << st.certain_wrong
-      << ",\n     \"certain_but_wrong_example\": ";
-    json_ex(o, st.certain_wrong_example, n);
-    o << ", \"misclassified_example\": ";
-    json_ex(o, st.cls_example, n);
-    o << ", \"predicate_example\": ";
-    json_ex(o, st.pred_example, n);
-    o << ",\n     \"outputs\": {";
+    nlohmann::ordered_json c = {{"query", qi.name},
+                        {"impl", k.impl},
+                        {"family", k.family},
+                        {"scale", k.scale},
+                        {"cases", st.n},
+                        {"refused", st.refused},
+                        {"false_positives", st.cls_fp},
+                        {"false_negatives", st.cls_fn},
+                        {"predicate_false_positives", st.pred_fp},
+                        {"predicate_false_negatives", st.pred_fn},
+                        {"certified", st.certified},
+                        {"uncertain", st.uncertain},
+                        {"certain_but_wrong", st.certain_wrong},
+                        {"certain_but_wrong_example", json_ex(st.certain_wrong_example, qi)},
+                        {"misclassified_example", json_ex(st.cls_example, qi)},
+                        {"predicate_example", json_ex(st.pred_example, qi)}};
+    nlohmann::ordered_json outs = nlohmann::ordered_json::object();
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];
-      o << (g ? ", " : "") << "\n       " << json_str(qi.outputs[g].name) << ": {\"count\": " << os.hist.total()
-        << ", \"nonfinite\": " << os.nonfinite << ", \"p50\": " << os.hist.quantile(0.5)
-        << ", \"p99\": " << os.hist.quantile(0.99) << ", \"max\": " << (os.worst.set ? os.worst.metric : 0)
-        << ", \"histogram_pow2\": {";
       // powers of two: "0" for exact, then "2^j" for [2^j, 2^(j+1))
-      bool f2 = true;
-      for (const auto& [j, c] : by_power_of_two(os.hist)) {
-        o << (f2 ? "" : ", ") << json_str(j < 0 ? "0" : "2^" + std::to_string(j)) << ": " << c;
-        f2 = false;
-      }
-      o << "}, \"worst\": ";
-      json_ex(o, os.worst, n);
-      o << "}";
+      nlohmann::ordered_json hist = nlohmann::ordered_json::object();
+      for (const auto& [j, n] : by_power_of_two(os.hist)) hist[j < 0 ? "0" : "2^" + std::to_string(j)] = n;
+      outs[qi.outputs[g].name] = {{"count", os.hist.total()},
+                                  {"nonfinite", os.nonfinite},
+                                  {"p50", os.hist.quantile(0.5)},
+                                  {"p99", os.hist.quantile(0.99)},
+                                  {"max", os.worst.set ? os.worst.metric : 0},
+                                  {"histogram_pow2", hist},
+                                  {"worst", json_ex(os.worst, qi)}};
     }
-    o << "}}";
-    first = false;
+    c["outputs"] = outs;
+    cells.push_back(c);
   }
-  o << "\n  ]\n}\n";
+  o << nlohmann::ordered_json{{"seed", seed}, {"cells", cells}}.dump(1) << "\n";
 }
 
 void write_csv(std::ostream& o, const Results& r) {

@@ -13,6 +13,11 @@ cmake --install "$build" --prefix "$dir/prefix" > "$dir/install.log"
 [ -f "$dir/prefix/lib/cmake/cdref/cdrefConfig.cmake" ] || { echo "FAIL: no cdrefConfig.cmake" >&2; exit 1; }
 [ -f "$dir/prefix/include/cdref/validate.hpp" ] || { echo "FAIL: no cdref/validate.hpp" >&2; exit 1; }
 [ -f "$dir/prefix/include/cdref/truth.hpp" ] || { echo "FAIL: no cdref/truth.hpp" >&2; exit 1; }
+# the exported targets put no numeric flags on a user's own code; cdref::strict_fp is the opt-in
+bad=$(awk '/^set_target_properties\(cdref::/ {t=$1; sub(/.*\(/, "", t)} /fp-contract|slp-vectorize|-Wall/ {print t}' \
+      "$dir/prefix/lib/cmake/cdref/cdrefTargets.cmake" | grep -v "^cdref::strict_fp$" || true)
+[ -z "$bad" ] || { echo "FAIL: $bad exports cdref's own compile flags to the user's code" >&2; exit 1; }
+grep -q "cdref::strict_fp" "$dir/prefix/lib/cmake/cdref/cdrefTargets.cmake" || { echo "FAIL: no cdref::strict_fp" >&2; exit 1; }
 # the command line runs from the prefix: a case file written and answered
 "$dir/prefix/bin/cdref" cases --query ray-sphere-cast --n 3 --out "$dir/cases.csv" ||
   { echo "FAIL: the installed cdref did not run" >&2; exit 1; }

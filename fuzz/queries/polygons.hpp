@@ -30,7 +30,8 @@ template <class T>
 Polygon<T> polygon(const Inputs& in, int k, const std::string& prefix = "") {
   const double n = in[k];
   if (!(n >= 3 && n <= Polygon<T>::max_vertices && n == std::floor(n)))
-    throw invalid_input("polygon n must be a whole number of vertices from 3 to 8 (" + shown(n) + ")");
+    throw invalid_input((prefix.empty() ? std::string("polygon: n") : "polygon " + prefix.substr(0, prefix.size() - 1) + ": " + prefix + "n") +
+                        " must be a whole number of vertices from 3 to 8 (" + shown(n) + ")");
   Polygon<T> p;
   p.n = int(n);
   unused_finite(in, k + 1 + 3 * p.n, k + 1 + 3 * Polygon<T>::max_vertices, k + 1 + 3 * p.n, "p", p.n, prefix);

@@ -59,19 +59,6 @@ using namespace cdref;
 using namespace cdref::fuzz;
 using Clock = std::chrono::steady_clock;
 
-const char* usage = R"(usage:
-  mpirun -np R cdref-mpi [campaign [options]]
-      runs `cdref campaign` (no command: the default campaign) across the R ranks of an MPI job
-      and prints on rank 0 exactly what `cdref campaign` prints for the same options. Options
-      are those of `cdref campaign` (see `cdref help`); with MPI they mean:
-      --checkpoint P       every rank writes what it has finished to P.g<G>.r<rank>; P names
-                           the generation; --resume continues from it with any number of ranks
-      --checkpoint-every S seconds between a rank's checkpoints (default 10; always one when
-                           its work is done)
-      --threads T          worker threads per rank (default: the node's hardware threads
-                           shared among the ranks on that node)
-)";
-
 constexpr int tag_request = 1, tag_chunk = 2, tag_result = 3;
 
 // `stop` (optional): give up waiting when it becomes true (rank 0's own worker failed).
@@ -226,6 +213,7 @@ PartCheckpoint start_generation(const Spec& spec, const Work& work, Pointer& old
           (!c.done.empty() && c.done.ranges().back().second > work.items()))
         throw std::runtime_error(f + " has " + std::to_string(c.saved.items_total) + " work items, this campaign " +
                                  std::to_string(work.items()) + " (written by a cdref whose families differ)");
+      work.check(c.saved.results, c.done.ranges(), f);  // its statistics are those of its items
       try {
         base.done.add(c.done);
       } catch (const std::exception& e) {
@@ -279,18 +267,23 @@ int node_ranks() {
   return std::max(1, local);
 }
 
-int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, int ranks) {
-  cli::CampaignCommand cmd;
+int run_campaign(cli::CampaignCommand& cmd, bool defaults, int rank, int ranks) {
   std::optional<Work> checked;
+  std::optional<cli::CampaignOutputs> outputs;
   std::string error;
   try {
-    cmd = cli::parse_campaign(args, defaults, true);
+    cli::finish_campaign(cmd, defaults);
     checked.emplace(cmd.spec);  // the cells and implementations exist
+    if (rank == 0) outputs.emplace(cli::open_campaign_outputs(cmd));  // a path that cannot be written: now
+    if (rank == 0 && !cmd.spec.checkpoint.empty()) cli::io::check_replaceable(cmd.spec.checkpoint, "--checkpoint");
   } catch (const std::exception& e) {
     error = e.what();
   }
-  // every rank parses the same arguments: they fail alike, and rank 0 says why
-  if (!error.empty()) {
+  // every rank checks the same arguments and they fail alike; the outputs are rank 0's alone,
+  // so its word decides
+  int args_ok = error.empty(), all_ok = 0;
+  MPI_Allreduce(&args_ok, &all_ok, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (!all_ok) {
     if (rank == 0) std::fprintf(stderr, "cdref-mpi: %s\n", error.c_str());
     return 2;
   }
@@ -299,7 +292,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
   // the node (the rest stay idle): say so once, on rank 0
   const int cpus = cpus_of_this_rank();
   const int share = std::max(1, int(std::thread::hardware_concurrency()) / node_ranks());
-  if (std::find(args.begin(), args.end(), "--threads") == args.end()) spec.threads = std::min(cpus, share);
+  if (!cmd.threads_given) spec.threads = std::min(cpus, share);
   // (one CPU where the node has more is mpirun's binding of at most two ranks; a larger set
   // smaller than the node may be the job's allocation, which is as it should be)
   int bound[2] = {spec.threads > cpus || (cpus == 1 && share > 1), 0};
@@ -423,7 +416,7 @@ int run_campaign(const std::vector<std::string>& args, bool defaults, int rank, 
     throw std::runtime_error("the ranks finished " + std::to_string(part.c.done.count()) + " of " +
                              std::to_string(work.items()) + " items");
   const Results& r = part.c.saved.results;
-  cli::emit_campaign(cmd, r);
+  cli::emit_campaign(cmd, *outputs, r);
   std::uint64_t cases = 0;
   for (const auto& [k, st] : r.cells) cases += st.n;
   auto ms = [](Clock::duration d) { return std::chrono::duration<double>(d).count() * 1e3; };
@@ -444,28 +437,57 @@ int main(int argc, char* argv[]) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  std::vector<std::string> args(argv + 1, argv + argc);
+  cdref::cli::io::init();
+  CLI::App app{
+      "cdref-mpi: `cdref campaign` across the ranks of an MPI job (mpirun --bind-to none -np R cdref-mpi [campaign "
+      "[options]]); no command: the default campaign. Rank 0 prints exactly what cdref campaign prints. With MPI, "
+      "--checkpoint P means: every rank writes what it has finished to P.g<G>.r<rank>, P names the generation, and "
+      "--resume continues from it with any number of ranks; --threads is per rank (default: the node's hardware "
+      "threads shared among the ranks on that node).",
+      "cdref-mpi"};
+  cdref::cli::conventions(app);
+  app.set_version_flag("--version", cdref::cli::version_text(), "print the version and the commit, then exit");
+  app.require_subcommand(0, 1);
+  cdref::cli::CampaignCommand cmd;
+  CLI::App* campaign = app.add_subcommand("campaign", "run a campaign across the ranks (the options of cdref campaign)");
+  cdref::cli::conventions(*campaign);
+  cdref::cli::add_campaign_options(*campaign, cmd, true);
+  CLI::App* help = app.add_subcommand("help", "this help");
   int rc = 0;
   try {
     if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("the MPI library gives no thread support");
-    bool defaults = args.empty();
-    if (!args.empty() && (args[0] == "help" || args[0] == "--help" || args[0] == "-h")) {
-      if (rank == 0) std::cout << usage;
-    } else {
-      if (!args.empty() && args[0] != "campaign") {
-        if (rank == 0)
-          std::fprintf(stderr, "cdref-mpi: unknown command '%s' (cdref-mpi runs campaigns)\n%s", args[0].c_str(), usage);
-        rc = 2;
-      } else {
-        if (!args.empty()) args.erase(args.begin());
-        rc = run_campaign(args, defaults, rank, ranks);
+    bool parsed = false;
+    try {
+      app.parse(argc, argv);
+      parsed = true;
+    } catch (const CLI::ParseError& e) {
+      // every rank parses the same arguments and fails alike; rank 0 says why
+      if (rank == 0) {
+        if (e.get_exit_code() == 0)
+          app.exit(e);
+        else
+          std::fprintf(stderr, "cdref-mpi: %s\n(see cdref-mpi --help, or cdref-mpi campaign --help)\n",
+                       cdref::cli::parse_error_text(e).c_str());
       }
+      rc = e.get_exit_code() == 0 ? 0 : 2;
+    }
+    if (parsed && help->parsed()) {
+      if (rank == 0) std::cout << app.help();
+    } else if (parsed) {
+      rc = run_campaign(cmd, !campaign->parsed(), rank, ranks);
     }
   } catch (const std::exception& e) {
     // a failure after the work started: the other ranks cannot go on without this one
     std::fprintf(stderr, "cdref-mpi: rank %d: %s\n", rank, e.what());
     if (ranks > 1) MPI_Abort(MPI_COMM_WORLD, 2);
     rc = 2;
+  }
+  if (rank == 0) {
+    const std::string out = cdref::cli::io::finish_stdout();
+    if (!out.empty()) {
+      std::fprintf(stderr, "cdref-mpi: %s\n", out.c_str());
+      rc = 2;
+    }
   }
   MPI_Finalize();
   return rc;

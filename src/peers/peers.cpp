@@ -30,7 +30,16 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <memory>
+#include <optional>
+
+#include "../options.hpp"
+#include "../output.hpp"
 
 #ifdef CDREF_HAVE_GLM
 #define GLM_ENABLE_EXPERIMENTAL
@@ -526,41 +535,13 @@ struct Args {
   std::string json_out, svg_out, rows_out;
   int threads = 2;
 };
-Args parse(const std::vector<std::string>& args) {
-  Args a;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + " needs a value");
-      return args[++i];
-    };
-    auto whole = [&](const std::string& v) {
-      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
-        throw std::invalid_argument(args[i - 1] + " wants a whole number, not '" + v + "'");
-      if (v.size() > 12) throw std::invalid_argument(args[i - 1] + " is too large ('" + v + "')");
-      return std::stoull(v);
-    };
-    if (args[i] == "--n")
-      a.n = whole(value());
-    else if (args[i] == "--seed")
-      a.seed = whole(value());
-    else if (args[i] == "--threads")
-      a.threads = int(std::max<std::uint64_t>(1, whole(value())));
-    else if (args[i] == "--json")
-      a.json_out = value();
-    else if (args[i] == "--svg")
-      a.svg_out = value();
-    else if (args[i] == "--rows")  // the float64 helper's output (internal)
-      a.rows_out = value();
-    else
-      throw std::invalid_argument("unknown option '" + args[i] + "' for peers (--n, --seed, --threads, --json, --svg)");
-  }
-  if (a.n == 0) throw std::invalid_argument("--n must be at least 1");
-  return a;
-}
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream o(path);
-  if (!(o << text) || !o.flush()) throw std::runtime_error("cannot write " + path);
+// The options of `cdref peers` (and of its float64 helper, which adds --rows).
+void add_options(CLI::App& app, Args& a) {
+  cli::conventions(app);
+  app.add_option("--n", a.n, "cases per family and scale (default 2000)")->check(cli::whole_number(1, 10000000));
+  app.add_option("--seed", a.seed, "the seed (default 1)")->check(cli::whole_number(0, UINT64_MAX));
+  app.add_option("--threads", a.threads, "worker threads (default 2)")->check(cli::whole_number(1, 4096));
 }
 
 }  // namespace
@@ -568,16 +549,43 @@ void write_file(const std::string& path, const std::string& text) {
 #ifdef CDREF_BULLET64
 // cdref_peers_bullet64: Bullet's float64 build in its own process (its inline functions carry
 // the float build's names), run by `cdref peers`, which prints its rows with the others.
-int helper_main(const std::vector<std::string>& args) {
-  const Args a = parse(args);
-  nlohmann::json all = nlohmann::json::array();
-  for (const Adapter& ad : adapters()) all.push_back(collect(ad, a.n, a.seed, a.threads));
-  write_file(a.rows_out, all.dump() + "\n");
-  return 0;
+int helper_main(int argc, char** argv) {
+  CLI::App app{"Bullet's float64 build for cdref peers", "cdref_peers_bullet64"};
+  Args a;
+  add_options(app, a);
+  app.add_option("--rows", a.rows_out, "the file to write the rows to")->required();
+  cli::Commands none;
+  return cli::run_app(app, none, argc, argv, [&] {
+    cli::io::Output rows(a.rows_out, "--rows");
+    nlohmann::json all = nlohmann::json::array();
+    for (const Adapter& ad : adapters()) all.push_back(collect(ad, a.n, a.seed, a.threads));
+    rows.stream() << all.dump() << "\n";
+    rows.commit();
+    return 0;
+  }, "cdref_peers_bullet64");
 }
 #else
-int peers_command(const std::vector<std::string>& args) {
-  const Args a = parse(args);
+// Runs the helper with these arguments, no shell; true when it exits 0.
+bool run_helper(const std::string& exe, const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  std::vector<std::string> all = {exe};
+  all.insert(all.end(), args.begin(), args.end());
+  for (std::string& s : all) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return false;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+int peers_run(const Args& a) {
+  // the outputs first: a path that cannot be written is refused before the work
+  std::optional<cli::io::Output> svg_file, json_file;
+  if (!a.svg_out.empty()) svg_file.emplace(a.svg_out, "--svg");
+  if (!a.json_out.empty()) json_file.emplace(a.json_out, "--json");
+
   std::cout << "Library functions on cdref's families, against the exact answer (" << a.n
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
@@ -599,9 +607,9 @@ int peers_command(const std::vector<std::string>& args) {
   const std::string helper = exe.substr(0, exe.rfind('/') + 1) + "cdref_peers_bullet64";
   if (std::filesystem::exists(helper)) {
     const std::string rows = std::filesystem::temp_directory_path() / ("cdref-peers-" + std::to_string(::getpid()) + ".json");
-    const std::string cmd = "'" + helper + "' --n " + std::to_string(a.n) + " --seed " + std::to_string(a.seed) +
-                            " --threads " + std::to_string(a.threads) + " --rows '" + rows + "'";
-    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the float64 helper failed: " + cmd);
+    if (!run_helper(helper, {"--n", std::to_string(a.n), "--seed", std::to_string(a.seed), "--threads",
+                             std::to_string(a.threads), "--rows", rows}))
+      throw std::runtime_error("the float64 helper " + helper + " failed");
     std::ifstream in(rows);
     const nlohmann::json more = nlohmann::json::parse(in);
     std::filesystem::remove(rows);
@@ -612,9 +620,29 @@ int peers_command(const std::vector<std::string>& args) {
   } else {
     std::cout << "\n(Bullet's float64 build: no helper " << helper << ")\n";
   }
-  if (!a.svg_out.empty()) write_file(a.svg_out, svg(all, a.n, a.seed));
-  if (!a.json_out.empty()) write_file(a.json_out, all.dump(1) + "\n");
+  cli::io::Outputs outs;
+  if (svg_file) outs.attempt([&] {
+      svg_file->stream() << svg(all, a.n, a.seed);
+      svg_file->commit();
+    });
+  if (json_file) outs.attempt([&] {
+      json_file->stream() << all.dump(1) << "\n";
+      json_file->commit();
+    });
+  outs.finish();
   return 0;
+}
+
+void add_peers_command(CLI::App& root, cli::Commands& cmds) {
+  auto a = std::make_shared<Args>();
+  CLI::App* app = root.add_subcommand(
+      "peers",
+      "GLM's, Bullet's and Eigen's functions on cdref's families at float (and Bullet's float64 build) against the exact "
+      "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps");
+  add_options(*app, *a);
+  app->add_option("--json", a->json_out, "write the rows as JSON to this file (- for standard output)");
+  app->add_option("--svg", a->svg_out, "draw the gallery to this SVG");
+  cmds.add(app, [a] { return peers_run(*a); });
 }
 #endif
 
@@ -622,11 +650,7 @@ int peers_command(const std::vector<std::string>& args) {
 
 #ifdef CDREF_BULLET64
 int main(int argc, char** argv) {
-  try {
-    return cdref::peers::helper_main({argv + 1, argv + argc});
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cdref_peers_bullet64: %s\n", e.what());
-    return 2;
-  }
+  cdref::cli::io::init();
+  return cdref::peers::helper_main(argc, argv);
 }
 #endif

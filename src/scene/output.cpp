@@ -6,11 +6,15 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include <cdref/error.hpp>
 
+#include "../options.hpp"
+#include "../output.hpp"
 #include "scene.hpp"
 
 namespace cdref::scene {
@@ -227,45 +231,27 @@ std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vect
 
 namespace {
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  if (!f || !(f << text) || !(f.flush())) throw std::runtime_error("cannot write " + path);
-}
-
-}  // namespace
-
-int scene_command(const std::vector<std::string>& args) {
+struct SceneOptions {
   std::string file, json_out, svg_out;
+  std::vector<std::string> precisions, compare_pairs;
+  bool quiet = false;
+};
+
+int scene_run(const SceneOptions& o) {
+  const std::string &file = o.file, &json_out = o.json_out, &svg_out = o.svg_out;
+  const bool quiet = o.quiet;
   std::vector<Precision> only;
   std::vector<std::pair<Precision, Precision>> compares;
-  bool quiet = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--precision") {
-      only.push_back(precision_by_name(value()));
-    } else if (a == "--compare") {
-      const std::string v = value();
-      const auto comma = v.find(',');
-      if (comma == std::string::npos) throw std::invalid_argument("--compare wants two precisions, e.g. float,exact");
-      compares.push_back({precision_by_name(v.substr(0, comma)), precision_by_name(v.substr(comma + 1))});
-    } else if (a == "--json") {
-      json_out = value();
-    } else if (a == "--svg") {
-      svg_out = value();
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      throw std::invalid_argument("unknown option '" + a + "' for scene (--precision, --compare, --json, --svg, --quiet)");
-    } else if (file.empty()) {
-      file = a;
-    } else {
-      throw std::invalid_argument("scene takes one file ('" + file + "' and '" + a + "')");
-    }
+  for (const std::string& p : o.precisions) only.push_back(precision_by_name(p));
+  for (const std::string& v : o.compare_pairs) {
+    const auto comma = v.find(',');
+    if (comma == std::string::npos) throw std::invalid_argument("--compare wants two precisions, e.g. float,exact, not '" + v + "'");
+    compares.push_back({precision_by_name(v.substr(0, comma)), precision_by_name(v.substr(comma + 1))});
   }
+  // the outputs first: a path that cannot be written is refused before the scene runs
+  std::optional<cli::io::Output> json_file, svg_file;
+  if (!json_out.empty()) json_file.emplace(json_out, "--json");
+  if (!svg_out.empty()) svg_file.emplace(svg_out, "--svg");
   const Scene s = file.empty() ? default_scene() : load_scene(file);
   if (only.empty() && compares.empty()) compares = {{Precision::float_, Precision::exact}, {Precision::double_, Precision::exact}};
   // each precision runs once; the logs printed are those asked for with --precision, or the
@@ -310,10 +296,40 @@ int scene_command(const std::vector<std::string>& args) {
       print_comparison(std::cout, s, c);
     }
   }
-  if (!json_out.empty()) write_file(json_out, to_json(s, runs, cmps));
-  if (!svg_out.empty() && !runs.empty()) write_file(svg_out, to_svg(s, runs, cmps));
+  cli::io::Outputs all;
+  if (json_file) all.attempt([&] {
+      json_file->stream() << to_json(s, runs, cmps);
+      json_file->commit();
+    });
+  if (svg_file && !runs.empty()) all.attempt([&] {
+      svg_file->stream() << to_svg(s, runs, cmps);
+      svg_file->commit();
+    });
   for (const std::string& f : failed) std::cerr << "cdref: " << s.source << ": " << f << "\n";
+  all.finish();
   return failed.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+void add_scene_command(CLI::App& root, cli::Commands& cmds) {
+  auto o = std::make_shared<SceneOptions>();
+  CLI::App* app = root.add_subcommand(
+      "scene",
+      "run a scene (JSON, see docs/scenes.md; no FILE: the built-in default, scenes/default.json) evaluating only the "
+      "queries its effects name, and print its event log; --compare float,exact runs both and prints the events they "
+      "disagree on and the differences of the continuous outputs (default: float,exact and double,exact)");
+  cli::conventions(*app);
+  app->add_option("file", o->file, "the scene file (default: the built-in scene)");
+  app->add_option("--precision", o->precisions, "run at this precision and print its log (repeatable): float, double, exact")
+      ->check(cli::one_of({"float", "double", "exact"}))
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app->add_option("--compare", o->compare_pairs, "compare two precisions, e.g. float,exact (repeatable)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app->add_option("--json", o->json_out, "write the runs and comparisons as JSON to this file (- for standard output)");
+  app->add_option("--svg", o->svg_out, "draw the top view with the events to this SVG");
+  app->add_flag("--quiet", o->quiet, "no log on standard output");
+  cmds.add(app, [o] { return scene_run(*o); });
 }
 
 }  // namespace cdref::scene

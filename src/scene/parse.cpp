@@ -89,7 +89,12 @@ V3 vec(const json& j, const std::string& path) {
 
 std::string text(const json& j, const std::string& path) {
   if (!j.is_string()) fail(path, "expected a string, found " + std::string(j.type_name()));
-  return j.get<std::string>();
+  const std::string t = j.get<std::string>();
+  for (char c : t)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      fail(path, "the string holds a control character (" + std::to_string(int(static_cast<unsigned char>(c))) +
+                     "), which names and messages cannot show");
+  return t;
 }
 
 bool zero(const V3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
@@ -140,12 +145,12 @@ Body body(const json& j, const std::string& path) {
       for (int c = 0; c < 3; ++c) {
         const json& x = fs[f][c];
         if (!x.is_number_integer()) fail(fp + "/" + std::to_string(c), "a vertex index is a whole number");
-        const long long k = x.get<long long>();
-        if (k < 0 || k >= (long long)b.vertices.size())
-          fail(fp + "/" + std::to_string(c), "face names vertex " + std::to_string(k) + ", but the mesh has " +
+        // as written (a negative index, or one past 2^63, is named as it is, not wrapped)
+        if (!x.is_number_unsigned() || x.get<std::uint64_t>() >= b.vertices.size())
+          fail(fp + "/" + std::to_string(c), "face names vertex " + x.dump() + ", but the mesh has " +
                                                  std::to_string(b.vertices.size()) + " vertices (0 to " +
                                                  std::to_string(b.vertices.size() - 1) + ")");
-        face[c] = int(k);
+        face[c] = int(x.get<std::uint64_t>());
       }
       b.faces.push_back(face);
     }
@@ -297,8 +302,25 @@ std::string place(const std::string& text, std::size_t byte) {
 
 Scene parse_scene(const std::string& txt, const std::string& source) {
   json j;
+  // Refused while parsing: a key given twice in one object (nlohmann keeps the last; a
+  // scene must not mean something its author did not see) and nesting deeper than any
+  // scene needs (a 10^6-deep array is refused, not built).
+  constexpr int max_depth = 32;
+  std::vector<std::set<std::string>> keys;
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > max_depth) throw scene_error(source + ": nesting deeper than " + std::to_string(max_depth) + " levels");
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      if (!keys.back().insert(k).second)
+        throw scene_error(source + ": the key '" + k + "' is given twice in one object (at depth " +
+                          std::to_string(depth) + ")");
+    }
+    return true;
+  };
   try {
-    j = json::parse(txt);
+    j = json::parse(txt, check);
   } catch (const json::parse_error& e) {
     // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: what"
     const std::string what = e.what();
@@ -325,6 +347,8 @@ Scene parse_scene(const std::string& txt, const std::string& source) {
   try {
     if (!j.is_object()) fail("", "a scene is an object {time_step, frames, bodies, effects}");
     only_keys(j, "", {"description", "time_step", "frames", "bodies", "effects"});
+    if (j.contains("description") && !j["description"].is_string())
+      fail("/description", "expected a string, found " + std::string(j["description"].type_name()));
     s.time_step = number(need(j, "", "time_step"), "/time_step");
     if (!(s.time_step > 0)) fail("/time_step", "the time step must be positive (" + show(s.time_step) + ")");
     const json& fr = need(j, "", "frames");

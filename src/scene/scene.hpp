@@ -20,6 +20,13 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+namespace cdref::cli {
+struct Commands;
+}
+
 namespace cdref::scene {
 
 using V3 = std::array<double, 3>;
@@ -147,7 +154,7 @@ void print_comparison(std::ostream& out, const Scene& s, const Comparison& c);
 std::string to_json(const Scene& s, const std::vector<Run>& runs, const std::vector<Comparison>& cmps);
 std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vector<Comparison>& cmps);
 
-// `cdref scene ...`
-int scene_command(const std::vector<std::string>& args);
+// Adds `cdref scene` to the command line (src/scene/output.cpp).
+void add_scene_command(CLI::App& root, cli::Commands& cmds);
 
 }  // namespace cdref::scene

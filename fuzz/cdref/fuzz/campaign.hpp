@@ -384,8 +384,13 @@ std::string serialize(const Spec& spec, const Results& r, std::uint64_t items_do
 // Throws std::runtime_error naming the source, the line number and the problem.
 Saved deserialize(const std::string& text, const std::string& source);
 
+// The campaign a fingerprint (Spec::fingerprint) describes; throws std::runtime_error when it
+// is not one.
+Spec spec_of_fingerprint(const std::string& fingerprint);
+
 // Merges complete shard files of one campaign into the unsharded result; throws
-// std::runtime_error if they are not the shards 0..N-1 of one campaign, each complete.
+// std::runtime_error if they are not the shards 0..N-1 of one campaign, each complete, with
+// counts that agree with the campaign their fingerprint describes.
 Results merge_shards(const std::vector<Saved>& shards);
 
 // ulps between a and b in the type of the given precision (24 float, 53 double, 64 long
@@ -394,5 +399,14 @@ std::uint64_t ulp_distance(long double a, long double b, int precision);
 
 std::string hexfloat(double x);
 std::string hexfloat(long double x);
+
+// The magnitude an error in output group `group` of query q is taken relative to, for the
+// case `in` (so that 1e-15 against an exact 0 reads as what it is, not as 10^18 ulps): the
+// inputs' scale (the largest magnitude among its coordinates and lengths; a polygon's vertex
+// count, an oriented box's axes and a ray's direction are not lengths) for points, distances
+// and depths; its square for squared quantities; 1 for normals, directions, u, v and lambda on
+// a segment; the inputs' scale over the direction's largest component for lambda on a ray.
+// At least the smallest normal double.
+double natural_scale(Query q, int group, const Inputs& in);
 
 }  // namespace cdref::fuzz

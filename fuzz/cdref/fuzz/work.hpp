@@ -28,8 +28,14 @@ class Work {
   std::uint64_t cases(std::uint64_t begin, std::uint64_t end) const;
   // Runs items [begin, end) on spec.threads threads and merges their statistics into `into`.
   void run(std::uint64_t begin, std::uint64_t end, Results& into) const;
+  // Checks statistics read from a checkpoint or a shard against the items said to be done
+  // (half-open ranges): every cell of those items present with exactly their cases, no other
+  // cell, and counts within a cell that add up. Throws std::runtime_error naming `source`.
+  void check(const Results& r, const std::vector<std::pair<std::uint64_t, std::uint64_t>>& done,
+             const std::string& source) const;
 
  private:
+  std::uint64_t cell_cases(std::uint64_t r) const;
   struct State;
   std::shared_ptr<const State> s_;
 };
