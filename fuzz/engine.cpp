@@ -78,6 +78,8 @@ void CellStats::merge(const CellStats& o) {
     for (int b = 0; b < Histogram::bins; ++b) out[k].hist.count[b] += o.out[k].hist.count[b];
     out[k].nonfinite += o.out[k].nonfinite;
     out[k].worst.merge(o.out[k].worst);
+    out[k].max_abs = std::max(out[k].max_abs, o.out[k].max_abs);
+    out[k].max_rel = std::max(out[k].max_rel, o.out[k].max_rel);
   }
 }
 
@@ -109,30 +111,62 @@ bool Results::operator==(const Results& o) const {
       return false;
     for (int k = 0; k < max_values; ++k)
       if (x.out[k].hist.count != y.out[k].hist.count || x.out[k].nonfinite != y.out[k].nonfinite ||
-          !same(x.out[k].worst, y.out[k].worst))
+          !same(x.out[k].worst, y.out[k].worst) || x.out[k].max_abs != y.out[k].max_abs ||
+          x.out[k].max_rel != y.out[k].max_rel)
         return false;
   }
   return true;
 }
 
+namespace {
+// What natural_scale needs of a query, worked out once from its column names: which inputs
+// are lengths and which a direction, and the kind of each output group.
+struct ScalePlan {
+  std::vector<int> lengths, directions;
+  std::vector<char> kind;  // 's' the inputs' scale, 'q' its square, 'u' unit, 'l' lambda
+};
+const ScalePlan& scale_plan(Query q) {
+  static const std::vector<ScalePlan> plans = [] {
+    std::vector<ScalePlan> out;
+    for (Query x : all_queries()) {
+      const QueryInfo& qi = info(x);
+      if (int(out.size()) <= x.id) out.resize(std::size_t(x.id) + 1);
+      ScalePlan& p = out[std::size_t(x.id)];
+      auto has = [](const std::string& s, const char* part) { return s.find(part) != std::string::npos; };
+      for (std::size_t k = 0; k < qi.inputs.size(); ++k) {
+        const std::string& c = qi.inputs[k];
+        if (has(c, "direction")) p.directions.push_back(int(k));
+        else if (!(c == "n" || c == "closed" || (c.size() > 2 && c.compare(c.size() - 2, 2, "_n") == 0)) && !has(c, "axis"))
+          p.lengths.push_back(int(k));
+      }
+      for (const Output& o : qi.outputs) {
+        const std::string& n = o.name;
+        p.kind.push_back(n == "normal" || n == "u" || n == "v" || has(n, "axis") || has(n, "direction") || o.label
+                             ? 'u'
+                         : has(n, "lambda")  ? 'l'
+                         : has(n, "squared") ? 'q'
+                                             : 's');
+      }
+    }
+    return out;
+  }();
+  return plans.at(std::size_t(q.id));
+}
+}  // namespace
+
 double natural_scale(Query q, int group, const Inputs& in) {
-  const QueryInfo& qi = info(q);
-  const std::string& name = qi.outputs[std::size_t(group)].name;
-  auto has = [](const std::string& s, const char* part) { return s.find(part) != std::string::npos; };
+  const ScalePlan& p = scale_plan(q);
   double scene = 0, dir = 0;
-  for (std::size_t k = 0; k < qi.inputs.size(); ++k) {
-    const std::string& c = qi.inputs[k];
-    const double m = std::fabs(in[k]);
-    if (has(c, "direction")) dir = std::fmax(dir, m);
-    else if (!(c == "n" || (c.size() > 2 && c.compare(c.size() - 2, 2, "_n") == 0)) && !has(c, "axis"))
-      scene = std::fmax(scene, m);
-  }
-  const double tiny = std::numeric_limits<double>::min();
+  for (int k : p.lengths) scene = std::fmax(scene, std::fabs(in[std::size_t(k)]));
+  for (int k : p.directions) dir = std::fmax(dir, std::fabs(in[std::size_t(k)]));
   double s = scene;
-  if (name == "normal" || name == "u" || name == "v" || has(name, "axis") || has(name, "direction")) s = 1;
-  else if (has(name, "lambda")) s = dir > 0 ? scene / dir : 1;
-  else if (has(name, "squared")) s = scene * scene;
-  return std::fmax(s, tiny);
+  switch (p.kind.at(std::size_t(group))) {
+    case 'u': s = 1; break;
+    case 'l': s = dir > 0 ? scene / dir : 1; break;
+    case 'q': s = scene * scene; break;
+    default: break;
+  }
+  return std::fmax(s, std::numeric_limits<double>::min());
 }
 
 std::uint64_t ulp_distance(long double a, long double b, int precision) {
@@ -336,16 +370,22 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
       bool nonfinite = false;
       std::uint64_t worst = 0;
       int at = at_c;
+      long double abs = 0;
       for (int k = at_c; k < at_c + w; ++k) {
         if (!std::isfinite(a.v[k]) && std::isfinite(t.v[k])) nonfinite = true;
         const std::uint64_t d = out.label ? std::uint64_t(a.v[k] != t.v[k]) : ulp_distance(a.v[k], t.v[k], im->precision);
         if (d > worst) worst = d, at = k;
+        abs = std::max(abs, out.label ? (long double)(a.v[k] != t.v[k]) : std::fabs(a.v[k] - t.v[k]));
       }
       if (nonfinite)
         ++os.nonfinite;
       else {
         os.hist.add(worst);
         os.worst.offer(worst, i, seen, a.v[at], t.v[at]);
+        if (abs > 0) {
+          os.max_abs = std::max(os.max_abs, double(abs));
+          os.max_rel = std::max(os.max_rel, out.label ? double(abs) : double(abs) / natural_scale(cell.q, int(g), seen));
+        }
       }
     }
   }
@@ -718,6 +758,8 @@ std::string serialize(const Saved& saved) {
         if (os.hist.count[b]) o << " " << b << ":" << os.hist.count[b];
       o << "\n";
       put_ex(o, ("out" + std::to_string(g)).c_str(), os.worst, n_in);
+      if (os.max_abs > 0 || os.max_rel > 0)
+        o << "err " << g << " " << hexfloat(os.max_abs) << " " << hexfloat(os.max_rel) << "\n";
     }
   }
   o << "end\n";
@@ -829,6 +871,14 @@ Saved deserialize(const std::string& text, const std::string& source) {
           cur->out[g].hist.count[b] = number(bc.substr(colon + 1));
         }
       }
+    } else if (tag == "err") {  // the largest absolute and relative errors of an output group
+      if (!cur) fail("record before any cell");
+      std::size_t g;
+      std::string ab, re;
+      if (!(ls >> g >> ab >> re) || g >= n_out) fail("malformed err record");
+      cur->out[g].max_abs = double(real(ab));
+      cur->out[g].max_rel = double(real(re));
+      if (!(cur->out[g].max_abs >= 0) || !(cur->out[g].max_rel >= 0)) fail("malformed err record");
     } else if (tag == "end") {
       ended = true;
     } else if (!tag.empty()) {

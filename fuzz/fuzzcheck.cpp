@@ -217,6 +217,16 @@ void check_results_reader(const std::uint8_t* data, std::size_t size) {
       std::fprintf(stderr, "cdref fuzz: a results file does not survive its own round trip\n");
       std::abort();
     }
+    // its counts against the campaign its fingerprint describes (as --resume and merge check
+    // them): consistent or refused by name, never a signal
+    try {
+      Spec spec = spec_of_fingerprint(s.fingerprint);
+      spec.shard = s.shard;
+      spec.shards = s.shards;
+      const Work work(spec);
+      if (s.items_done <= work.items()) work.check(s.results, {{0, s.items_done}}, "fuzz");
+    } catch (const std::exception&) {
+    }
   } catch (const std::runtime_error&) {
   }
   // a rank's checkpoint (cdref-mpi): its done items and its statistics agree, or it is refused

@@ -150,6 +150,18 @@ std::uint64_t Report::p99_ulps(const std::string& group) const {
     for (int b = 0; b < fuzz::Histogram::bins; ++b) all.count[b] += st.out[g].hist.count[b];
   return all.total() ? all.quantile(0.99) : 0;
 }
+double Report::max_abs(const std::string& group) const {
+  const int g = output_group(fuzz::info(fuzz::query_by_name(query)), group);
+  double m = 0;
+  for (const auto& [k, st] : results.cells) m = std::max(m, st.out[g].max_abs);
+  return m;
+}
+double Report::max_rel(const std::string& group) const {
+  const int g = output_group(fuzz::info(fuzz::query_by_name(query)), group);
+  double m = 0;
+  for (const auto& [k, st] : results.cells) m = std::max(m, st.out[g].max_rel);
+  return m;
+}
 std::string Report::table() const {
   std::ostringstream o;
   cli::print_table(o, results, seed);

@@ -24,9 +24,10 @@ std::string num(double x, const char* f = "%.3g") {
   return b;
 }
 
-struct Worst {  // the worst output of a cell
+struct Worst {  // the worst output of a cell (by ulps), and its absolute and relative errors
   int group = -1;
   std::uint64_t p50 = 0, p99 = 0, max = 0, nonfinite = 0;
+  double max_abs = 0, max_rel = 0;
 };
 
 // Groups nothing graded (a campaign with --outputs cls, a cast that never hit) are left out:
@@ -44,14 +45,17 @@ Worst worst_output(const CellKey& k, const CellStats& st) {
       w.max = mx;
       w.p50 = os.hist.quantile(0.5);
       w.p99 = os.hist.quantile(0.99);
+      w.max_abs = os.max_abs;
+      w.max_rel = os.max_rel;
     }
   }
   return w;
 }
 
-std::string inputs_hex(const Exemplar& e, std::size_t n) {
+// A kept example's inputs by column name, in hex-float (exact).
+std::string inputs_hex(const Exemplar& e, const QueryInfo& qi) {
   std::ostringstream s;
-  for (std::size_t i = 0; i < n; ++i) s << (i ? " " : "") << hexfloat(e.inputs[i]);
+  for (std::size_t i = 0; i < qi.inputs.size(); ++i) s << (i ? " " : "") << qi.inputs[i] << "=" << hexfloat(e.inputs[i]);
   return s.str();
 }
 
@@ -83,6 +87,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0, fp = 0, fn = 0;
     std::uint64_t certified = 0, uncertain = 0, certain_wrong = 0;
     std::string max_where;
+    double max_rel = 0;  // over every output group and cell
   };
   std::map<std::pair<std::string, std::string>, Sum> sums;
   for (const auto& [k, st] : r.cells) {
@@ -98,6 +103,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     s.certain_wrong += st.certain_wrong;
     const Worst w = worst_output(k, st);
     s.nonfinite += w.nonfinite;
+    for (std::size_t g = 0; g < info(k.query).outputs.size(); ++g) s.max_rel = std::max(s.max_rel, st.out[g].max_rel);
     if (w.group >= 0 && w.max >= s.max) {
       s.max = w.max;
       s.max_where = info(k.query).outputs[w.group].name + " in " + k.family + "/" + std::to_string(k.scale);
@@ -105,16 +111,17 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   }
   char line[512];
   o << "Per query and implementation (errors in ulps of the implementation's type, against the correctly\n"
-       "rounded exact answer; misclassified: the full query / the predicate column, its other formulation):\n\n";
-  std::snprintf(line, sizeof line, "%-20s %-17s %10s %9s %16s %16s %10s  %s\n", "query", "impl", "cases", "refused",
-                "misclassified", "predicate wrong", "nonfinite", "max error (where)");
+       "rounded exact answer, and relative to the inputs' scale; misclassified: the full query / the\n"
+       "predicate column, its other formulation):\n\n";
+  std::snprintf(line, sizeof line, "%-20s %-17s %10s %9s %16s %16s %10s %9s  %s\n", "query", "impl", "cases", "refused",
+                "misclassified", "predicate wrong", "nonfinite", "max rel", "max ulps (where)");
   o << line;
   for (const auto& [key, s] : sums) {
     const std::string miss = std::to_string(s.cls) + " (" + num(100.0 * double(s.cls) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
     const std::string pmiss = std::to_string(s.pred) + " (" + num(100.0 * double(s.pred) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
-    std::snprintf(line, sizeof line, "%-20s %-17s %10llu %9llu %16s %16s %10llu  %s\n", key.first.c_str(),
+    std::snprintf(line, sizeof line, "%-20s %-17s %10llu %9llu %16s %16s %10llu %9s  %s\n", key.first.c_str(),
                   key.second.c_str(), (unsigned long long)s.n, (unsigned long long)s.refused, miss.c_str(),
-                  pmiss.c_str(), (unsigned long long)s.nonfinite,
+                  pmiss.c_str(), (unsigned long long)s.nonfinite, s.max_where.empty() ? "-" : num(s.max_rel, "%.2g").c_str(),
                   s.max_where.empty() ? "-" : (num(double(s.max), "%.3g") + " (" + s.max_where + ")").c_str());
     o << line;
   }
@@ -170,8 +177,9 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     return worst_output(a.first, *a.second).max > worst_output(b.first, *b.second).max;
   });
   o << "\nWorst cells (family/scale k; see `cdref describe`):\n\n";
-  std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7s %12s %12s   %-12s %8s %8s %10s\n", "query", "impl",
-                "family/scale", "cases", "wrong fp/fn", "pred fp/fn", "output", "p50", "p99", "max");
+  std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7s %12s %12s   %-12s %8s %8s %10s %9s %9s\n", "query", "impl",
+                "family/scale", "cases", "wrong fp/fn", "pred fp/fn", "output", "p50", "p99", "max ulps", "max abs",
+                "max rel");
   o << line;
   int shown = 0;
   for (const auto& [k, st] : cells) {
@@ -180,11 +188,12 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     const std::string fam = k.family + "/" + std::to_string(k.scale);
     const std::string c = std::to_string(st->cls_fp) + "/" + std::to_string(st->cls_fn);
     const std::string p = std::to_string(st->pred_fp) + "/" + std::to_string(st->pred_fn);
-    std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7llu %12s %12s   %-12s %8s %8s %10s\n",
+    std::snprintf(line, sizeof line, "%-20s %-17s %-22s %7llu %12s %12s   %-12s %8s %8s %10s %9s %9s\n",
                   info(k.query).name, k.impl.c_str(), fam.c_str(), (unsigned long long)st->n, c.c_str(), p.c_str(),
                   w.group < 0 ? "-" : info(k.query).outputs[w.group].name.c_str(),
                   w.group < 0 ? "-" : num(double(w.p50)).c_str(), w.group < 0 ? "-" : num(double(w.p99)).c_str(),
-                  w.group < 0 ? "-" : num(double(w.max)).c_str());
+                  w.group < 0 ? "-" : num(double(w.max)).c_str(), w.group < 0 ? "-" : num(w.max_abs, "%.2g").c_str(),
+                  w.group < 0 ? "-" : num(w.max_rel, "%.2g").c_str());
     o << line;
   }
   // reproducible examples for the very worst
@@ -192,12 +201,11 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   shown = 0;
   for (const auto& [k, st] : cells) {
     if (shown >= 5) break;
-    const std::size_t n = info(k.query).inputs.size();
     const Exemplar& e = st->cls_example.set ? st->cls_example : st->pred_example;
     if (e.set) {
       o << "  " << info(k.query).name << " " << k.impl << " " << k.family << "/" << k.scale << " case " << e.index
         << ": " << (st->cls_example.set ? "full query" : "predicate") << " says " << (e.got != 0 ? "yes" : "no")
-        << ", truth " << (e.want != 0 ? "yes" : "no") << "\n    " << inputs_hex(e, n) << "\n";
+        << ", truth " << (e.want != 0 ? "yes" : "no") << "\n    " << inputs_hex(e, info(k.query)) << "\n";
       ++shown;
     }
   }
@@ -234,6 +242,8 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
                                   {"p50", os.hist.quantile(0.5)},
                                   {"p99", os.hist.quantile(0.99)},
                                   {"max", os.worst.set ? os.worst.metric : 0},
+                                  {"max_abs", os.max_abs},
+                                  {"max_rel", os.max_rel},
                                   {"histogram_pow2", hist},
                                   {"worst", json_ex(os.worst, qi)}};
     }
@@ -246,7 +256,7 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
 void write_csv(std::ostream& o, const Results& r) {
   o << "query,impl,family,scale,cases,refused,false_positives,false_negatives,predicate_false_positives,"
        "predicate_false_negatives,certified,uncertain,certain_but_wrong,output,count,nonfinite,p50_ulps,p99_ulps,"
-       "max_ulps,worst_index\n";
+       "max_ulps,max_abs,max_rel,worst_index\n";
   for (const auto& cell : r.cells) {
     const CellKey& k = cell.first;
     const CellStats& st = cell.second;
@@ -258,14 +268,14 @@ void write_csv(std::ostream& o, const Results& r) {
     };
     if (qi.outputs.empty()) {
       head();
-      o << ",,,,,,\n";
+      o << ",,,,,,,,\n";
     }
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];
       head();
       o << qi.outputs[g].name << "," << os.hist.total() << "," << os.nonfinite << "," << os.hist.quantile(0.5) << ","
-        << os.hist.quantile(0.99) << "," << (os.worst.set ? os.worst.metric : 0) << ","
-        << (os.worst.set ? std::to_string(os.worst.index) : "") << "\n";
+        << os.hist.quantile(0.99) << "," << (os.worst.set ? os.worst.metric : 0) << "," << num(os.max_abs, "%.17g")
+        << "," << num(os.max_rel, "%.17g") << "," << (os.worst.set ? std::to_string(os.worst.index) : "") << "\n";
     }
   }
 }

@@ -208,6 +208,22 @@ refused "shard 1: cell ray-box book-double uniform 0 counts 307 cases" merge s0.
     --n 1000000000000 --threads 1 --quiet > /dev/null 2> err.txt ); st=$?
 [ "$st" = 124 ] || fail "campaign --n 10^12 under 1 GB: status $st $(head -c 300 err.txt)"
 
+# ---- errors beside ulps: absolute and relative to the inputs' scale ----
+# the book's u near an exact 0 is 10^18 ulps away and 1e-15 off: every report says both
+"$cdref" campaign --query ray-triangle-cast --family long-range --scale 9 --impl book-double --n 300 \
+  --json rt.json --csv rt.csv > rt.txt
+python3 -c "
+import json, csv
+d = json.load(open('rt.json'))
+u = d['cells'][0]['outputs']['u']
+assert u['max'] > 10**15 and 0 < u['max_abs'] < 1e-12 and 0 < u['max_rel'] < 1e-12, u
+assert d['cells'][0]['outputs']['u']['worst']['inputs']['source_x'].startswith(('0x', '-0x'))
+rows = [r for r in csv.DictReader(open('rt.csv')) if r['output'] == 'u']
+assert float(rows[0]['max_rel']) == u['max_rel'], rows
+" || fail "max_abs/max_rel in the campaign's JSON and CSV"
+grep -Eq "^ray-triangle-cast +book-double .* [0-9.]+e-1[4-6] +4\.[0-9]+e\+18 \(u in long-range/9\)" rt.txt || fail "max rel in the table: $(head -8 rt.txt)"
+grep -q "source_x=" rt.txt || fail "examples without column names: $(tail -4 rt.txt)"
+
 # ---- scenes ----
 printf '{"time_step": 0.1, "time_step": 0.2, "frames": 3, "bodies": [], "effects": []}' > dupkey.json
 refused "the key 'time_step' is given twice in one object" scene dupkey.json

@@ -103,6 +103,11 @@ class Report {
   // precision. An unknown group throws std::invalid_argument naming the groups.
   std::uint64_t max_ulps(const std::string& group) const;
   std::uint64_t p99_ulps(const std::string& group) const;
+  // The largest absolute error of an output group, and the largest relative to each case's
+  // natural scale (fuzz::natural_scale: the inputs' scale for points and distances, 1 for
+  // normals, u and v, ...): a value near an exact 0 is many ulps away but little in these.
+  double max_abs(const std::string& group) const;
+  double max_rel(const std::string& group) const;
   // The table `cdref campaign` prints, with the worst cases' inputs in hex-float.
   std::string table() const;
 };

@@ -465,6 +465,7 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   struct Fam {
     std::uint64_t cases = 0, refused_all = 0, refused = 0, fp = 0, fn = 0;
     std::map<std::string, std::pair<fuzz::Histogram, std::uint64_t>> ulps;  // histogram, max
+    std::map<std::string, std::pair<double, double>> err;                     // max abs, max rel
   };
   std::map<std::string, Fam> fams;
   nlohmann::json out = {{"library", ad.library}, {"function", ad.function}, {"query", ad.query},
@@ -488,6 +489,9 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
       auto& [h, mx] = f.ulps[g];
       for (int b = 0; b < fuzz::Histogram::bins; ++b) h.count[b] += st.out[gi].hist.count[b];
       if (st.out[gi].worst.set) mx = std::max(mx, st.out[gi].worst.metric);
+      auto& [ab, re] = f.err[g];
+      ab = std::max(ab, st.out[gi].max_abs);
+      re = std::max(re, st.out[gi].max_rel);
     }
   }
   out["families"] = nlohmann::json::array();
@@ -501,7 +505,8 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     jr["ulps"] = nlohmann::json::object();
     for (const auto& g : ad.graded) {
       const auto& [h, mx] = f.ulps[g];
-      jr["ulps"][g] = {{"p99", h.total() ? h.quantile(0.99) : 0}, {"max", mx}};
+      const auto& [ab, re] = f.err[g];
+      jr["ulps"][g] = {{"p99", h.total() ? h.quantile(0.99) : 0}, {"max", mx}, {"max_abs", ab}, {"max_rel", re}};
     }
     out["families"].push_back(jr);
   }
@@ -514,7 +519,7 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   char line[256];
   std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
   o << line;
-  for (const auto& g : r["graded"]) o << "  " << g.get<std::string>() << " p99/max";
+  for (const auto& g : r["graded"]) o << "  " << g.get<std::string>() << " p99/max ulps, max rel";
   o << "\n";
   for (const auto& f : r["families"]) {
     std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %7llu/%-8llu", f["family"].get<std::string>().c_str(),
@@ -523,7 +528,8 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     o << line;
     for (const auto& g : r["graded"]) {
       const auto& u = f["ulps"][g.get<std::string>()];
-      std::snprintf(line, sizeof line, "  %10llu/%-10llu", u["p99"].get<unsigned long long>(), u["max"].get<unsigned long long>());
+      std::snprintf(line, sizeof line, "  %10llu/%-10llu %9.2g", u["p99"].get<unsigned long long>(),
+                    u["max"].get<unsigned long long>(), u.contains("max_rel") ? u["max_rel"].get<double>() : 0.0);
       o << line;
     }
     o << "\n";
@@ -590,7 +596,8 @@ int peers_run(const Args& a) {
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
             << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
-               "type (float; double for Bullet's float64 build): p99 / max.\n";
+               "type (float; double for Bullet's float64 build): p99 / max, and the largest error relative to the\n"
+               "inputs' scale.\n";
 #ifndef CDREF_HAVE_GLM
   std::cout << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
 #endif

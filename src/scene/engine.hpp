@@ -518,7 +518,10 @@ class Engine {
     return v;
   }
 
-  std::vector<std::pair<int, int>> broad_phase() {
+  // The pairs whose (swept, margin-grown) bounds meet, handed to `each(i, j)` (i < j) as the
+  // sweep finds them: none is stored, so a frame's memory does not grow with its overlaps.
+  template <class Each>
+  void broad_phase(Each&& each) {
     struct Item {
       Bounds<T> b;
       int i;
@@ -539,13 +542,14 @@ class Engine {
       items.push_back({bb, i});
     }
     std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return x.b.lo[0] < y.b.lo[0]; });
-    std::vector<std::pair<int, int>> out;
+    std::uint64_t found = 0;
     for (std::size_t x = 0; x < items.size(); ++x)
       for (std::size_t y = x + 1; y < items.size() && !(items[x].b.hi[0] < items[y].b.lo[0]); ++y)
-        if (items[x].b.meets(items[y].b))
-          out.push_back({std::min(items[x].i, items[y].i), std::max(items[x].i, items[y].i)});
-    run_.counts["broad"] += out.size();
-    return out;
+        if (items[x].b.meets(items[y].b)) {
+          ++found;
+          each(std::min(items[x].i, items[y].i), std::max(items[x].i, items[y].i));
+        }
+    run_.counts["broad"] += found;
   }
 
   void frame(int k) {
@@ -554,9 +558,10 @@ class Engine {
       const Vec3<T> p = s_.bodies[i].sensor() ? origin(i) : pos_[i];
       run_.path.back().push_back({dbl(p[0]), dbl(p[1]), dbl(p[2])});
     }
-    const auto pairs = broad_phase();
-    std::set<Key> now;
-    for (const auto& [i, j] : pairs) {
+    // the states that hold this frame, 12 bytes each (a sorted vector, not a tree of nodes):
+    // a pair's state begins when it holds and held not in the frame before
+    std::vector<Key> now;
+    broad_phase([&](int i, int j) {
       for (int e = 0; e < int(s_.effects.size()); ++e) {
         const Effect& ef = s_.effects[e];
         if (ef.kind == EffectKind::raycast) continue;
@@ -567,28 +572,25 @@ class Engine {
         if (s_.bodies[b].shape == Shape::sphere && s_.bodies[a].shape != Shape::sphere) std::swap(a, b);
         pair(k, e, a, b, now);
       }
-    }
-    // states that held and were not reported again end here
-    for (auto it = active_.begin(); it != active_.end();) {
-      if (!now.count(*it)) {
-        event(k, std::get<0>(*it), "end", std::get<1>(*it), std::get<2>(*it));
-        it = active_.erase(it);
-      } else {
-        ++it;
-      }
-    }
+    });
+    std::sort(now.begin(), now.end());
+    // states that held and were not reported again end here (in the order of their keys)
+    for (const Key& key : active_)
+      if (!std::binary_search(now.begin(), now.end(), key))
+        event(k, std::get<0>(key), "end", std::get<1>(key), std::get<2>(key));
+    active_ = std::move(now);
     for (int e = 0; e < int(s_.effects.size()); ++e)
       if (s_.effects[e].kind == EffectKind::raycast) raycast(k, e);
     have_prev_ = true;
   }
 
-  void pair(int k, int e, int a, int b, std::set<Key>& now) {
+  void pair(int k, int e, int a, int b, std::vector<Key>& now) {
     const Effect& ef = s_.effects[e];
     const Key key{e, a, b};
     auto hold = [&](bool on, std::vector<double> v) {
       if (!on) return;
-      now.insert(key);
-      if (active_.insert(key).second) event(k, e, "begin", a, b, std::move(v));
+      now.push_back(key);  // (a pair and an effect are met once a frame)
+      if (!std::binary_search(active_.begin(), active_.end(), key)) event(k, e, "begin", a, b, std::move(v));
     };
     switch (ef.kind) {
       case EffectKind::trigger: hold(intersect(a, b), {}); break;
@@ -753,7 +755,7 @@ class Engine {
   std::vector<T> margin_;
   std::vector<char> swept_, used_;
   bool have_prev_ = false;
-  std::set<Key> active_;
+  std::vector<Key> active_;  // the states holding after the last frame, sorted
   std::map<std::pair<int, int>, int> sensor_hit_;
 };
 

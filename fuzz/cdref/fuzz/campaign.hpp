@@ -305,6 +305,9 @@ struct OutputStats {
   Histogram hist;
   std::uint64_t nonfinite = 0;  // implementation gave NaN or infinity where the truth is finite
   Exemplar worst;
+  // The largest absolute error and the largest error relative to the case's natural scale
+  // (natural_scale): beside ulps, so that a value near an exact 0 reads as what it is.
+  double max_abs = 0, max_rel = 0;
 };
 
 struct CellStats {
