@@ -165,9 +165,15 @@ int main(int argc, char* argv[]) {
   conventions(*demo_app);
   cmds.add(demo_app, [] { return run_demo(); });
 
-  CLI::App* help_app = app.add_subcommand("help", "this help");
-  cmds.add(help_app, [&app] {
-    std::cout << app.help("", CLI::AppFormatMode::Normal);
+  auto help_of = std::make_shared<std::string>();
+  CLI::App* help_app = app.add_subcommand("help", "this help, or a command's (cdref help COMMAND)");
+  conventions(*help_app);
+  help_app->add_option("COMMAND", *help_of, "the command")
+      ->check(one_of({"campaign", "merge", "describe", "demo", "cases", "oracle", "score", "plot", "report", "scene", "peers"}));
+  cmds.add(help_app, [&app, help_of] {
+    // (App::help would print the help of the subcommand given, `help` itself)
+    const CLI::App* of = help_of->empty() ? &app : app.get_subcommand(*help_of);
+    std::cout << app.get_formatter()->make_help(of, of == &app ? "cdref" : "cdref " + *help_of, CLI::AppFormatMode::Normal);
     return 0;
   });
 

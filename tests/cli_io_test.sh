@@ -24,6 +24,10 @@ for c in campaign merge describe demo cases oracle score plot report scene peers
   run "$cdref" $c --help
   [ "$st" = 0 ] && grep -q "Usage: .*$c" out.txt || fail "$c --help: $st $(head -3 out.txt err.txt)"
 done
+run "$cdref" help
+[ "$st" = 0 ] && grep -q "^Usage: cdref \[OPTIONS\] \[SUBCOMMAND\]" out.txt && grep -q "^  score " out.txt || fail "help: $(head -3 out.txt)"
+run "$cdref" help score
+[ "$st" = 0 ] && grep -q "max-ulps" out.txt || fail "help score: $(head -3 out.txt)"
 run "$cdref" --version
 [ "$st" = 0 ] && grep -Eq "^cdref [0-9]+\.[0-9]+\.[0-9]+ \(commit [0-9a-f]+|unknown\)" out.txt || fail "--version: $(cat out.txt)"
 run "$cdref" cases --query=ray-box --n=2

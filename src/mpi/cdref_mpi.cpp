@@ -472,7 +472,7 @@ int main(int argc, char* argv[]) {
       rc = e.get_exit_code() == 0 ? 0 : 2;
     }
     if (parsed && help->parsed()) {
-      if (rank == 0) std::cout << app.help();
+      if (rank == 0) std::cout << app.get_formatter()->make_help(&app, "cdref-mpi", CLI::AppFormatMode::Normal);
     } else if (parsed) {
       rc = run_campaign(cmd, !campaign->parsed(), rank, ranks);
     }

@@ -15,8 +15,6 @@ namespace cdref::scene {
 
 namespace {
 
-using EventKey = std::tuple<int, std::string, int, int>;
-
 // The names of an effect's values (Event::values), grouped: a group's difference is the
 // largest over its components.
 struct Group {
@@ -73,22 +71,44 @@ Comparison compare(const Scene& s, const Run& approx, const Run& reference) {
   Comparison c;
   c.approx = approx.precision;
   c.reference = reference.precision;
-  std::map<EventKey, std::vector<const Event*>> R, A;
-  for (const Event& e : reference.events) R[{e.effect, e.kind, e.a, e.b}].push_back(&e);
-  for (const Event& e : approx.events) A[{e.effect, e.kind, e.a, e.b}].push_back(&e);
   std::vector<std::pair<const Event*, const Event*>> impacts;
-  for (auto& [key, rs] : R) {
-    std::vector<const Event*> as = A.count(key) ? A[key] : std::vector<const Event*>{};
+  // each run's events grouped by (effect, kind, a, b), in frame order within a group: sorted
+  // pointers, 8 bytes an event (a scene with millions of events compares in their size)
+  auto key = [](const Event* e) { return std::tie(e->effect, e->kind, e->a, e->b); };
+  auto grouped = [&](const Run& r) {
+    std::vector<const Event*> v;
+    v.reserve(r.events.size());
+    for (const Event& e : r.events) v.push_back(&e);
+    std::stable_sort(v.begin(), v.end(), [&](const Event* x, const Event* y) { return key(x) < key(y); });
+    return v;
+  };
+  const std::vector<const Event*> R = grouped(reference), A = grouped(approx);
+  std::vector<Event> extra_unmatched;  // events of groups the reference does not have
+  std::size_t ri = 0, ai = 0;
+  while (ri < R.size() || ai < A.size()) {
+    // the next group: the smaller key of the two runs'
+    const bool take_r = ri < R.size() && (ai == A.size() || !(key(A[ai]) < key(R[ri])));
+    const bool take_a = ai < A.size() && (ri == R.size() || !(key(R[ri]) < key(A[ai])));
+    std::size_t r_end = ri, a_end = ai;
+    if (take_r)
+      while (r_end < R.size() && key(R[r_end]) == key(R[ri])) ++r_end;
+    if (take_a)
+      while (a_end < A.size() && key(A[a_end]) == key(A[ai])) ++a_end;
+    if (!take_r) {
+      for (std::size_t k = ai; k < a_end; ++k) extra_unmatched.push_back(*A[k]);
+      ai = a_end;
+      continue;
+    }
     std::vector<const Event*> r_left, a_left;
-    std::size_t i = 0, j = 0;
-    while (i < rs.size() || j < as.size()) {  // both lists are in frame order
-      if (j == as.size() || (i < rs.size() && rs[i]->frame < as[j]->frame)) {
-        r_left.push_back(rs[i++]);
-      } else if (i == rs.size() || as[j]->frame < rs[i]->frame) {
-        a_left.push_back(as[j++]);
+    std::size_t i = ri, j = ai;
+    while (i < r_end || j < a_end) {  // both lists are in frame order
+      if (j == a_end || (i < r_end && R[i]->frame < A[j]->frame)) {
+        r_left.push_back(R[i++]);
+      } else if (i == r_end || A[j]->frame < R[i]->frame) {
+        a_left.push_back(A[j++]);
       } else {
         ++c.matched;
-        if (rs[i]->kind == "impact") impacts.push_back({rs[i], as[j]});
+        if (R[i]->kind == "impact") impacts.push_back({R[i], A[j]});
         ++i, ++j;
       }
     }
@@ -99,27 +119,29 @@ Comparison compare(const Scene& s, const Run& approx, const Run& reference) {
     }
     for (std::size_t k = m; k < r_left.size(); ++k) c.missing.push_back(*r_left[k]);
     for (std::size_t k = m; k < a_left.size(); ++k) c.extra.push_back(*a_left[k]);
+    ri = r_end, ai = a_end;
   }
-  for (auto& [key, as] : A)
-    if (!R.count(key))
-      for (const Event* e : as) c.extra.push_back(*e);
+  c.extra.insert(c.extra.end(), extra_unmatched.begin(), extra_unmatched.end());
   auto by_frame = [](const Event& x, const Event& y) { return x.frame < y.frame; };
   std::stable_sort(c.missing.begin(), c.missing.end(), by_frame);
   std::stable_sort(c.extra.begin(), c.extra.end(), by_frame);
   // continuous outputs: impacts as paired above; every other sample where both runs have it
   for (const auto& [r, a] : impacts) measure(s, c, *r, r->values, a->values, r->frame);
-  std::map<std::tuple<int, int, int, int>, const Sample*> AS;
+  auto skey = [](const Sample* x) { return std::make_tuple(x->frame, x->effect, x->a, x->b); };
+  std::vector<const Sample*> AS;  // sorted by (frame, effect, a, b); the last of equal keys counts
   for (const Sample& x : approx.samples)
-    if (s.effects[x.effect].kind != EffectKind::time_of_impact) AS[{x.frame, x.effect, x.a, x.b}] = &x;
+    if (s.effects[x.effect].kind != EffectKind::time_of_impact) AS.push_back(&x);
+  std::stable_sort(AS.begin(), AS.end(), [&](const Sample* x, const Sample* y) { return skey(x) < skey(y); });
   for (const Sample& x : reference.samples) {
     if (s.effects[x.effect].kind == EffectKind::time_of_impact) continue;
-    auto it = AS.find({x.frame, x.effect, x.a, x.b});
-    if (it == AS.end()) continue;
+    auto it = std::upper_bound(AS.begin(), AS.end(), skey(&x), [&](const auto& k, const Sample* y) { return k < skey(y); });
+    if (it == AS.begin() || skey(*(it - 1)) != skey(&x)) continue;
+    --it;
     Event e;
     e.effect = x.effect;
     e.a = x.a;
     e.b = x.b;
-    measure(s, c, e, x.values, it->second->values, x.frame);
+    measure(s, c, e, x.values, (*it)->values, x.frame);
   }
   return c;
 }
