@@ -767,7 +767,11 @@ void add_case_commands(CLI::App& root, Commands& cmds) {
   cases->add_option("--seed", co->seed, "the seed (default 1)")->check(whole_number(0, UINT64_MAX));
   cases->add_flag("--decimal", co->decimal, "decimal with 17 significant digits instead of hex-float");
   cases->add_option("--out", co->out, "the file to write (default: standard output)");
-  cases->add_option("--describe", co->describe, "print the case and answer columns of this query instead")->check(query_name());
+  CLI::Option* describe =
+      cases->add_option("--describe", co->describe, "print the case and answer columns of this query instead")
+          ->check(query_name());
+  for (const char* other : {"--query", "--family", "--scale", "--n", "--seed", "--decimal", "--out"})
+    describe->excludes(cases->get_option(other));
   cmds.add(cases, [co] { return cases_run(*co); });
 
   auto oo = std::make_shared<OracleOptions>();

@@ -173,7 +173,10 @@ void add_plot_command(CLI::App& root, Commands& cmds) {
   app->add_option("--n", o->n, "cases per point (default 2000)")->check(whole_number(1, 100000000));
   app->add_option("--seed", o->seed, "the seed (default 1)")->check(whole_number(0, UINT64_MAX));
   app->add_option("--threads", o->threads, "worker threads (default: the hardware's)")->check(whole_number(1, 4096));
-  app->add_option("--from", o->from, "draw the cells of a campaign's JSON (cdref campaign --json F) instead of running");
+  app->add_option("--from", o->from, "draw the cells of a campaign's JSON (cdref campaign --json F) instead of running")
+      ->excludes(app->get_option("--n"))
+      ->excludes(app->get_option("--seed"))
+      ->excludes(app->get_option("--threads"));
   app->add_option("--out", o->out, "the SVG to write (default drift-QUERY-FAMILY.svg)");
   cmds.add(app, [o] { return plot_run(*o); });
 }

@@ -53,6 +53,10 @@ refused "--family all takes no other family" cases --query ray-box --family all 
 refused "^cdref: --checkpoint-every: wants a number from 0 to .* not 'nan'" campaign --checkpoint-every nan
 refused "^cdref: --max-abs: wants a number .* not 'inf'" score --query ray-box --cases x --answers y --max-abs inf
 refused "FILE is required" merge
+refused "--n excludes --describe" cases --describe ray-box --n 3
+refused "File does not exist: nofile.txt" merge nofile.txt
+refused "/etc/passwd:1: not a cdref results file" merge /etc/passwd
+refused "--compare wants two precisions, e.g. float,exact, not 'float'" scene --compare float
 # list options accumulate: two families, every family at every scale
 run "$cdref" cases --query ray-box --family uniform --family grazing --n 2
 [ "$st" = 0 ] && [ "$(cut -d, -f2 out.txt | sort -u | tr '\n' ' ')" = "family grazing uniform " ] || fail "two families: $(cat out.txt err.txt)"
