@@ -9,9 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "options.hpp"
+namespace CLI {
+class App;
+}
 
 namespace cdref::cli {
+
+struct Commands;  // options.hpp
 
 struct CaseRow {
   std::uint64_t id;
