@@ -2,6 +2,7 @@
 #include "campaign_cli.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -31,52 +32,40 @@ std::string query_names() {
 
 }  // namespace
 
-void add_campaign_options(CLI::App& app, CampaignCommand& c, bool mpi) {
+void add_campaign_options(Command& app, CampaignCommand& c, bool mpi) {
   Spec& spec = c.spec;
-  app.add_option("--query", c.query_names, "a query (repeatable; default: all): " + query_names())
-      ->check(query_name())
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_option("--family", spec.families, "a family (repeatable; default: every family of each query): " + family_names())
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_option("--scale", spec.scales, "a scale of the families (repeatable; default: all; see cdref describe)")
-      ->check(whole_number(0, 999999999))
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_option("--impl", spec.impls,
-                 "an implementation (repeatable; default: all): book-float, book-double, book-long-double, "
-                 "stable-float, stable-double, robust-float, robust-double, robust-long-double, and a query's own "
-                 "variants (book-exact, book-double-eps, ...: see cdref describe)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_option("--n", spec.n, "cases per (query, family, scale) cell (default 1000)")
-      ->check(whole_number(1, std::uint64_t(1) << 40));
-  app.add_option("--seed", spec.seed, "the campaign seed (default 1)")->check(whole_number(0, UINT64_MAX));
-  app.add_option_function<int>(
-         "--threads", [&c](const int& t) { c.spec.threads = t, c.threads_given = true; },
-         "worker threads (default: the hardware's)")
-      ->check(whole_number(1, 4096));
-  app.add_option("--shard", c.shard, "run only the cases with index % N == k, written k/N");
-  app.add_option("--checkpoint", spec.checkpoint, "write the results so far to this file as the campaign goes");
-  app.add_option("--checkpoint-every", spec.checkpoint_every,
-                 "seconds between checkpoints (default 10; 0: after every round of work)")
-      ->check(real_number(0, 1e6));
-  app.add_flag("--resume", spec.resume, "continue the campaign saved in --checkpoint");
-  app.add_option("--out", c.out, "write the results (the mergeable text form) to this file");
-  app.add_option("--json", c.json, "write the results as JSON to this file (- for standard output)");
-  app.add_option("--csv", c.csv, "write the results as CSV to this file (- for standard output)");
-  app.add_option("--outputs", c.outputs,
-                 "all (default): grade every output against the correctly rounded truth; cls: the "
-                 "classification alone (fast); certain: every output, but an implementation with a certificate "
-                 "(robust-*) only where it calls its classification certain")
-      ->check(one_of({"all", "cls", "certain"}));
-  app.add_flag("--quiet", c.quiet, "no table on standard output");
+  app.queries("--query", c.query_names, "a query (repeatable; default: all): " + query_names())
+      .texts("--family", spec.families, "a family (repeatable; default: every family of each query): " + family_names())
+      .wholes("--scale", spec.scales, 0, 999999999, "a scale of the families (repeatable; default: all; see cdref describe)")
+      .texts("--impl", spec.impls,
+             "an implementation (repeatable; default: all): book-float, book-double, book-long-double, stable-float, "
+             "stable-double, robust-float, robust-double, robust-long-double, and a query's own variants (book-exact, "
+             "book-double-eps, ...: see cdref describe)")
+      .whole("--n", spec.n, 1, std::uint64_t(1) << 40, "cases per (query, family, scale) cell (default 1000)")
+      .whole("--seed", spec.seed, 0, UINT64_MAX, "the campaign seed (default 1)")
+      .whole("--threads", c.threads, 1, 4096, "worker threads (default: the hardware's)")
+      .text("--shard", c.shard, "run only the cases with index % N == k, written k/N")
+      .text("--checkpoint", spec.checkpoint, "write the results so far to this file as the campaign goes")
+      .real("--checkpoint-every", spec.checkpoint_every, 0, 1e6,
+            "seconds between checkpoints (default 10; 0: after every round of work)")
+      .flag("--resume", spec.resume, "continue the campaign saved in --checkpoint")
+      .text("--out", c.out, "write the results (the mergeable text form) to this file")
+      .text("--json", c.json, "write the results as JSON to this file (- for standard output)")
+      .text("--csv", c.csv, "write the results as CSV to this file (- for standard output)")
+      .choice("--outputs", c.outputs, {"all", "cls", "certain"},
+              "all (default): grade every output against the correctly rounded truth; cls: the classification alone "
+              "(fast); certain: every output, but an implementation with a certificate (robust-*) only where it calls "
+              "its classification certain")
+      .flag("--quiet", c.quiet, "no table on standard output");
   c.mpi = mpi;
-  app.add_flag("--mpi", c.mpi_flag,
-               mpi ? "accepted for symmetry: cdref-mpi always runs across the ranks"
-                   : "(campaigns across MPI ranks run as cdref-mpi: see cdref-mpi --help)");
+  app.flag("--mpi", c.mpi_flag,
+           mpi ? "accepted for symmetry: cdref-mpi always runs across the ranks"
+               : "(campaigns across MPI ranks run as cdref-mpi: see cdref-mpi --help)");
 }
 
 void finish_campaign(CampaignCommand& c, bool defaults) {
   Spec& spec = c.spec;
-  if (!c.threads_given) spec.threads = default_threads();
+  spec.threads = c.threads ? int(*c.threads) : default_threads();
   if (defaults) spec.n = 1000;  // a minute and a quarter on 2 cores
   for (const auto& name : c.query_names) spec.queries.push_back(query_by_name(name));
   for (const auto& im : spec.impls) implementation_by_name(im);  // throws naming the choices

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cdref/fuzz/campaign.hpp>
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,13 +21,13 @@ struct CampaignCommand {
   std::vector<std::string> query_names;
   std::string outputs = "all";
   std::string shard;  // "k/N"
-  bool threads_given = false;
-  bool mpi_flag = false;  // --mpi given
-  bool mpi = false;       // parsed for cdref-mpi (which runs across the ranks with or without --mpi)  // --threads given (cdref-mpi shares the cores among ranks otherwise)
+  std::optional<std::uint64_t> threads;  // --threads (cdref-mpi shares the cores among ranks otherwise)
+  bool mpi_flag = false;                 // --mpi given
+  bool mpi = false;  // parsed for cdref-mpi (which runs across the ranks with or without --mpi)
 };
 
 // Adds the options of `cdref campaign` to `app` (`mpi`: cdref-mpi's, which names itself).
-void add_campaign_options(CLI::App& app, CampaignCommand& c, bool mpi);
+void add_campaign_options(Command& app, CampaignCommand& c, bool mpi);
 
 // After parsing: fills the queries and implementations left open (`defaults`: the default
 // campaign's n) and checks what CLI11 cannot (a name given twice, a family or a scale no chosen

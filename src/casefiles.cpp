@@ -337,7 +337,10 @@ int cases_run(const CasesOptions& o) {
         const int k = std::stoi(s);  // checked by the option's validator
         if (std::find(f->scales.begin(), f->scales.end(), k) == f->scales.end()) {
           std::string list;
-          for (int j : f->scales) list += (list.empty() ? "" : " ") + std::to_string(j);
+          for (int j : f->scales) {
+            if (!list.empty()) list += ' ';
+            list += std::to_string(j);
+          }
           throw std::invalid_argument("--scale " + s + ": family " + f->name + " of " + qi.name +
                                       " has the scales " + list + " (or --scale all)");
         }
@@ -748,66 +751,52 @@ int score_run(const ScoreOptions& o) {
 
 }  // namespace
 
-void add_case_commands(CLI::App& root, Commands& cmds) {
+void add_case_commands(Program& program) {
   auto co = std::make_shared<CasesOptions>();
-  CLI::App* cases = root.add_subcommand("cases", "write case inputs as CSV (hex-float exact; --decimal: 17 digits, also exact)");
-  conventions(*cases);
-  cases->add_option("--query", co->query, "the query: " + query_list())->check(query_name());
-  cases->add_option("--family", co->families, "a family of the query (repeatable, or all; default uniform; see cdref describe)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cases->add_option("--scale", co->scales, "a scale of the families (repeatable, or all; default: each family's first)")
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            const bool digits = !v.empty() && v.size() <= 9 && v.find_first_not_of("0123456789") == std::string::npos;
-            return v == "all" || digits ? "" : "wants a scale (a whole number) or all, not '" + v + "'";
-          },
-          "SCALE or all"))
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cases->add_option("--n", co->n, "cases per (family, scale) (default 100)")->check(whole_number(1, 100000000));
-  cases->add_option("--seed", co->seed, "the seed (default 1)")->check(whole_number(0, UINT64_MAX));
-  cases->add_flag("--decimal", co->decimal, "decimal with 17 significant digits instead of hex-float");
-  cases->add_option("--out", co->out, "the file to write (default: standard output)");
-  CLI::Option* describe =
-      cases->add_option("--describe", co->describe, "print the case and answer columns of this query instead")
-          ->check(query_name());
-  for (const char* other : {"--query", "--family", "--scale", "--n", "--seed", "--decimal", "--out"})
-    describe->excludes(cases->get_option(other));
-  cmds.add(cases, [co] { return cases_run(*co); });
+  program
+      .add("cases", "write case inputs as CSV (hex-float exact; --decimal: 17 digits, also exact)",
+           [co] { return cases_run(*co); })
+      .query("--query", co->query, "the query: " + query_list())
+      .texts("--family", co->families, "a family of the query (repeatable, or all; default uniform; see cdref describe)")
+      .scales("--scale", co->scales, "a scale of the families (repeatable, or all; default: each family's first)")
+      .whole("--n", co->n, 1, 100000000, "cases per (family, scale) (default 100)")
+      .whole("--seed", co->seed, 0, UINT64_MAX, "the seed (default 1)")
+      .flag("--decimal", co->decimal, "decimal with 17 significant digits instead of hex-float")
+      .text("--out", co->out, "the file to write (default: standard output)")
+      .query("--describe", co->describe, "print the case and answer columns of this query instead")
+      .excludes({"--query", "--family", "--scale", "--n", "--seed", "--decimal", "--out"});
 
   auto oo = std::make_shared<OracleOptions>();
-  CLI::App* oracle = root.add_subcommand("oracle", "the exact answers to a case file, correctly rounded");
-  conventions(*oracle);
-  oracle->add_option("--query", oo->query, "the query: " + query_list())->required()->check(query_name());
-  oracle->add_option("--cases", oo->cases, "the case file (default: standard input)");
-  oracle->add_option("--precision", oo->precision,
-                     "24: for the inputs rounded to float, as float; 53 (default): double; 64: long double")
-      ->check(one_of({"24", "53", "64"}));
-  oracle->add_option("--outputs", oo->outputs, "all (default), or cls: the classification columns alone")
-      ->check(one_of({"all", "cls"}));
-  oracle->add_flag("--decimal", oo->decimal, "decimal (17 or 21 significant digits) instead of hex-float");
-  oracle->add_option("--out", oo->out, "the file to write (default: standard output)");
-  cmds.add(oracle, [oo] { return oracle_run(*oo); });
+  program.add("oracle", "the exact answers to a case file, correctly rounded", [oo] { return oracle_run(*oo); })
+      .query("--query", oo->query, "the query: " + query_list())
+      .required()
+      .text("--cases", oo->cases, "the case file (default: standard input)")
+      .choice("--precision", oo->precision, {24, 53, 64},
+              "24: for the inputs rounded to float, as float; 53 (default): double; 64: long double")
+      .choice("--outputs", oo->outputs, {"all", "cls"}, "all (default), or cls: the classification columns alone")
+      .flag("--decimal", oo->decimal, "decimal (17 or 21 significant digits) instead of hex-float")
+      .text("--out", oo->out, "the file to write (default: standard output)");
 
   auto so = std::make_shared<ScoreOptions>();
-  CLI::App* score = root.add_subcommand(
-      "score",
-      "grade an answer file (any subset of the answer columns, see cases --describe) against the exact answer; exit "
-      "status 0 when nothing graded is wrong, 1 when a case is misclassified, not finite, beyond every bound given, "
-      "malformed or refused, 2 when the files cannot be used");
-  conventions(*score);
-  score->add_option("--query", so->query, "the query: " + query_list())->required()->check(query_name());
-  score->add_option("--cases", so->cases, "the case file")->required();
-  score->add_option("--answers", so->answers, "the answer file")->required();
-  score->add_option("--precision", so->precision, "the answers' type: 24 float, 53 double (default), 64 long double")
-      ->check(one_of({"24", "53", "64"}));
-  score->add_option("--max-ulps", so->max_ulps, "a value within this many ulps passes")->check(whole_number(0, UINT64_MAX));
-  score->add_option("--max-abs", so->max_abs, "a value within this absolute error passes")->check(real_number(0, 1e308));
-  score->add_option("--max-rel", so->max_rel, "a value within this error relative to the inputs' scale passes")
-      ->check(real_number(0, 1e308));
-  score->add_option("--examples", so->examples, "failing cases shown per column (default 3)")->check(whole_number(0, 1000));
-  score->add_option("--json", so->json, "write the grades as JSON to this file (- for standard output)");
-  score->add_option("--csv", so->csv, "write the grades as CSV to this file (- for standard output)");
-  cmds.add(score, [so] { return score_run(*so); });
+  program
+      .add("score",
+           "grade an answer file (any subset of the answer columns, see cases --describe) against the exact answer; "
+           "exit status 0 when nothing graded is wrong, 1 when a case is misclassified, not finite, beyond every bound "
+           "given, malformed or refused, 2 when the files cannot be used",
+           [so] { return score_run(*so); })
+      .query("--query", so->query, "the query: " + query_list())
+      .required()
+      .text("--cases", so->cases, "the case file")
+      .required()
+      .text("--answers", so->answers, "the answer file")
+      .required()
+      .choice("--precision", so->precision, {24, 53, 64}, "the answers' type: 24 float, 53 double (default), 64 long double")
+      .whole("--max-ulps", so->max_ulps, 0, UINT64_MAX, "a value within this many ulps passes")
+      .real("--max-abs", so->max_abs, 0, 1e308, "a value within this absolute error passes")
+      .real("--max-rel", so->max_rel, 0, 1e308, "a value within this error relative to the inputs' scale passes")
+      .whole("--examples", so->examples, 0, 1000, "failing cases shown per column (default 3)")
+      .text("--json", so->json, "write the grades as JSON to this file (- for standard output)")
+      .text("--csv", so->csv, "write the grades as CSV to this file (- for standard output)");
 }
 
 }  // namespace cdref::cli

@@ -9,13 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
 
 namespace cdref::cli {
 
-struct Commands;  // options.hpp
 
 struct CaseRow {
   std::uint64_t id;
@@ -44,10 +40,5 @@ fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision, bool va
 // anything else throws std::invalid_argument naming the choices.
 bool classification_only(const std::string& outputs);
 
-// The subcommands cases, oracle and score (src/casefiles.cpp), plot (src/plot.cpp) and report
-// (src/costreport.cpp), added to the command line.
-void add_case_commands(CLI::App& root, Commands& cmds);
-void add_plot_command(CLI::App& root, Commands& cmds);
-void add_report_command(CLI::App& root, Commands& cmds);
 
 }  // namespace cdref::cli

@@ -477,30 +477,25 @@ int report_run(const ReportOptions& o) {
   return sink == std::size_t(-1) ? 1 : 0;
 }
 
-void add_report_command(CLI::App& root, Commands& cmds) {
+void add_report_command(Program& program) {
   auto o = std::make_shared<ReportOptions>();
-  CLI::App* app = root.add_subcommand(
-      "report",
-      "what accuracy costs in time: every implementation of every query (or of --query Q) timed side by side on the "
-      "same uniform cases (median of interleaved repetitions), with misclassification and ulp errors from a campaign; "
-      "the SVG plots cost against error");
-  conventions(*app);
-  app->add_option("--query", o->query_names, "a query (repeatable; default: all; see cdref describe)")
-      ->check(query_name())
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   // every row keeps its own copy of the timed_windows sets of cases (one query's at a time):
   // polygon-polygon's rows took 2.2 GB at 16,384 (maximum resident size, 2026-11-30), so 65,536
   // keeps them near 9 GB
-  app->add_option("--n", o->n, "uniform cases in a timed pass (default 16384)")->check(whole_number(1, 65536));
-  app->add_option("--reps", o->reps, "interleaved repetitions, the median taken (default 5)")->check(whole_number(1, 1000));
-  app->add_option("--error-n", o->err_n, "cases per cell of the error campaign (default 1000)")
-      ->check(whole_number(1, 100000000));
-  app->add_option("--threads", o->threads, "threads of the error campaign (default: the hardware's)")
-      ->check(whole_number(1, 4096));
-  app->add_option("--csv", o->csv, "write the table as CSV to this file (- for standard output)");
-  app->add_option("--json", o->json, "write the table as JSON to this file (- for standard output)");
-  app->add_option("--svg", o->svg, "draw cost against error to this SVG");
-  cmds.add(app, [o] { return report_run(*o); });
+  program
+      .add("report",
+           "what accuracy costs in time: every implementation of every query (or of --query Q) timed side by side on "
+           "the same uniform cases (median of interleaved repetitions), with misclassification and ulp errors from a "
+           "campaign; the SVG plots cost against error",
+           [o] { return report_run(*o); })
+      .queries("--query", o->query_names, "a query (repeatable; default: all; see cdref describe)")
+      .whole("--n", o->n, 1, 65536, "uniform cases in a timed pass (default 16384)")
+      .whole("--reps", o->reps, 1, 1000, "interleaved repetitions, the median taken (default 5)")
+      .whole("--error-n", o->err_n, 1, 100000000, "cases per cell of the error campaign (default 1000)")
+      .whole("--threads", o->threads, 1, 4096, "threads of the error campaign (default: the hardware's)")
+      .text("--csv", o->csv, "write the table as CSV to this file (- for standard output)")
+      .text("--json", o->json, "write the table as JSON to this file (- for standard output)")
+      .text("--svg", o->svg, "draw cost against error to this SVG");
 }
 
 }  // namespace cdref::cli

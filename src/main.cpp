@@ -28,7 +28,7 @@
 #include "scene/scene.hpp"
 
 namespace cdref::peers {
-void add_peers_command(CLI::App& app, cli::Commands& cmds);  // src/peers/peers.cpp
+void add_peers_command(cli::Program& program);  // src/peers/peers.cpp
 }
 
 int run_demo();
@@ -127,62 +127,51 @@ int describe() {
 int main(int argc, char* argv[]) {
   cdref::exact::use_gmp_pool();  // GMP's small blocks cached per thread (gmp_pool.hpp)
   io::init();                    // checked standard output; a closed pipe is not a signal
-  CLI::App app{
+  Program program(
+      "cdref",
       "cdref: the exact answer for the primitive tests of Chapter 3 of van den Bergen's Collision Detection in "
       "Interactive 3D Environments, and campaigns that measure float code against it.\n"
       "With no command: the default campaign (every query, the book's algorithms and the robust tier at float, "
-      "double and long double against the exact answer) and its findings.",
-      "cdref"};
-  conventions(app);
-  app.set_version_flag("--version", version_text(), "print the version and the commit, then exit");
-  app.require_subcommand(0, 1);
-  Commands cmds;
+      "double and long double against the exact answer) and its findings.");
 
   auto camp = std::make_shared<CampaignCommand>();
-  CLI::App* campaign_app = app.add_subcommand(
+  Command campaign_cmd = program.add(
       "campaign",
       "run a campaign: every (query, family, scale) cell's cases through the chosen implementations, graded against "
-      "the exact answer (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign [options])");
-  conventions(*campaign_app);
-  add_campaign_options(*campaign_app, *camp, false);
-  cmds.add(campaign_app, [camp] { return campaign(*camp, false); });
+      "the exact answer (across the ranks of an MPI job: mpirun --bind-to none -np R cdref-mpi campaign [options])",
+      [camp] { return campaign(*camp, false); });
+  add_campaign_options(campaign_cmd, *camp, false);
 
   auto mrg = std::make_shared<MergeCommand>();
-  CLI::App* merge_app = app.add_subcommand("merge", "merge the complete shard files (--out of each shard) of one campaign");
-  conventions(*merge_app);
-  merge_app->add_option("FILE", mrg->files, "the shard files (repeatable)")->required()->check(CLI::ExistingFile);
-  merge_app->add_option("--out", mrg->c.out, "write the merged results (text form) to this file");
-  merge_app->add_option("--json", mrg->c.json, "write them as JSON (- for standard output)");
-  merge_app->add_option("--csv", mrg->c.csv, "write them as CSV (- for standard output)");
-  merge_app->add_flag("--quiet", mrg->c.quiet, "no table on standard output");
-  cmds.add(merge_app, [mrg] { return merge(*mrg); });
+  program
+      .add("merge", "merge the complete shard files (--out of each shard) of one campaign", [mrg] { return merge(*mrg); })
+      .files("FILE", mrg->files, "the shard files (repeatable)")
+      .required()
+      .text("--out", mrg->c.out, "write the merged results (text form) to this file")
+      .text("--json", mrg->c.json, "write them as JSON (- for standard output)")
+      .text("--csv", mrg->c.csv, "write them as CSV (- for standard output)")
+      .flag("--quiet", mrg->c.quiet, "no table on standard output");
 
-  CLI::App* describe_app = app.add_subcommand("describe", "list queries, input and output columns, families and scales");
-  conventions(*describe_app);
-  cmds.add(describe_app, [] { return describe(); });
-
-  CLI::App* demo_app = app.add_subcommand("demo", "the chapter's algorithms beside the exact answer on hard cases");
-  conventions(*demo_app);
-  cmds.add(demo_app, [] { return run_demo(); });
+  program.add("describe", "list queries, input and output columns, families and scales", [] { return describe(); });
+  program.add("demo", "the chapter's algorithms beside the exact answer on hard cases", [] { return run_demo(); });
 
   auto help_of = std::make_shared<std::string>();
-  CLI::App* help_app = app.add_subcommand("help", "this help, or a command's (cdref help COMMAND)");
-  conventions(*help_app);
-  help_app->add_option("COMMAND", *help_of, "the command")
-      ->check(one_of({"campaign", "merge", "describe", "demo", "cases", "oracle", "score", "plot", "report", "scene", "peers"}));
-  cmds.add(help_app, [&app, help_of] {
-    // (App::help would print the help of the subcommand given, `help` itself)
-    const CLI::App* of = help_of->empty() ? &app : app.get_subcommand(*help_of);
-    std::cout << app.get_formatter()->make_help(of, of == &app ? "cdref" : "cdref " + *help_of, CLI::AppFormatMode::Normal);
-    return 0;
-  });
+  program
+      .add("help", "this help, or a command's (cdref help COMMAND)",
+           [&program, help_of] {
+             std::cout << program.help(*help_of);
+             return 0;
+           })
+      .choice("COMMAND", *help_of,
+              {"campaign", "merge", "describe", "demo", "cases", "oracle", "score", "plot", "report", "scene", "peers"},
+              "the command");
 
-  cli::add_case_commands(app, cmds);
-  cli::add_plot_command(app, cmds);
-  cli::add_report_command(app, cmds);
-  scene::add_scene_command(app, cmds);
-  peers::add_peers_command(app, cmds);
+  add_case_commands(program);
+  add_plot_command(program);
+  add_report_command(program);
+  scene::add_scene_command(program);
+  peers::add_peers_command(program);
 
   auto dflt = std::make_shared<CampaignCommand>();
-  return run_app(app, cmds, argc, argv, [dflt] { return campaign(*dflt, true); }, "cdref");
+  return program.run(argc, argv, [dflt] { return campaign(*dflt, true); });
 }

@@ -158,27 +158,26 @@ int plot_run(PlotOptions o) {
 
 }  // namespace
 
-void add_plot_command(CLI::App& root, Commands& cmds) {
+void add_plot_command(Program& program) {
   auto o = std::make_shared<PlotOptions>();
-  CLI::App* app = root.add_subcommand(
-      "plot", "drift against scale as SVG: misclassified share and p99/max ulps of one output, one curve per implementation");
-  conventions(*app);
-  app->add_option("--query", o->query, "the query (see cdref describe)")->required()->check(query_name());
-  app->add_option("--family", o->family, "the family (see cdref describe)")->required();
-  app->add_option("--impl", o->impls,
-                  "an implementation (repeatable; default book-float, book-double, book-long-double; with --from, "
-                  "every one in the file)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app->add_option("--output", o->output, "the output whose error is drawn (default: the query's first)");
-  app->add_option("--n", o->n, "cases per point (default 2000)")->check(whole_number(1, 100000000));
-  app->add_option("--seed", o->seed, "the seed (default 1)")->check(whole_number(0, UINT64_MAX));
-  app->add_option("--threads", o->threads, "worker threads (default: the hardware's)")->check(whole_number(1, 4096));
-  app->add_option("--from", o->from, "draw the cells of a campaign's JSON (cdref campaign --json F) instead of running")
-      ->excludes(app->get_option("--n"))
-      ->excludes(app->get_option("--seed"))
-      ->excludes(app->get_option("--threads"));
-  app->add_option("--out", o->out, "the SVG to write (default drift-QUERY-FAMILY.svg)");
-  cmds.add(app, [o] { return plot_run(*o); });
+  program
+      .add("plot",
+           "drift against scale as SVG: misclassified share and p99/max ulps of one output, one curve per implementation",
+           [o] { return plot_run(*o); })
+      .query("--query", o->query, "the query (see cdref describe)")
+      .required()
+      .text("--family", o->family, "the family (see cdref describe)")
+      .required()
+      .texts("--impl", o->impls,
+             "an implementation (repeatable; default book-float, book-double, book-long-double; with --from, every one "
+             "in the file)")
+      .text("--output", o->output, "the output whose error is drawn (default: the query's first)")
+      .whole("--n", o->n, 1, 100000000, "cases per point (default 2000)")
+      .whole("--seed", o->seed, 0, UINT64_MAX, "the seed (default 1)")
+      .whole("--threads", o->threads, 1, 4096, "worker threads (default: the hardware's)")
+      .text("--from", o->from, "draw the cells of a campaign's JSON (cdref campaign --json F) instead of running")
+      .excludes({"--n", "--seed", "--threads"})
+      .text("--out", o->out, "the SVG to write (default drift-QUERY-FAMILY.svg)");
 }
 
 }  // namespace cdref::cli

@@ -292,7 +292,7 @@ int run_campaign(cli::CampaignCommand& cmd, bool defaults, int rank, int ranks) 
   // the node (the rest stay idle): say so once, on rank 0
   const int cpus = cpus_of_this_rank();
   const int share = std::max(1, int(std::thread::hardware_concurrency()) / node_ranks());
-  if (!cmd.threads_given) spec.threads = std::min(cpus, share);
+  if (!cmd.threads) spec.threads = std::min(cpus, share);
   // (one CPU where the node has more is mpirun's binding of at most two ranks; a larger set
   // smaller than the node may be the job's allocation, which is as it should be)
   int bound[2] = {spec.threads > cpus || (cpus == 1 && share > 1), 0};
@@ -438,57 +438,34 @@ int main(int argc, char* argv[]) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   cdref::cli::io::init();
-  CLI::App app{
+  cdref::cli::Program program(
+      "cdref-mpi",
       "cdref-mpi: `cdref campaign` across the ranks of an MPI job (mpirun --bind-to none -np R cdref-mpi [campaign "
       "[options]]); no command: the default campaign. Rank 0 prints exactly what cdref campaign prints. With MPI, "
       "--checkpoint P means: every rank writes what it has finished to P.g<G>.r<rank>, P names the generation, and "
       "--resume continues from it with any number of ranks; --threads is per rank (default: the node's hardware "
-      "threads shared among the ranks on that node).",
-      "cdref-mpi"};
-  cdref::cli::conventions(app);
-  app.set_version_flag("--version", cdref::cli::version_text(), "print the version and the commit, then exit");
-  app.require_subcommand(0, 1);
+      "threads shared among the ranks on that node).");
   cdref::cli::CampaignCommand cmd;
-  CLI::App* campaign = app.add_subcommand("campaign", "run a campaign across the ranks (the options of cdref campaign)");
-  cdref::cli::conventions(*campaign);
-  cdref::cli::add_campaign_options(*campaign, cmd, true);
-  CLI::App* help = app.add_subcommand("help", "this help");
-  int rc = 0;
-  try {
-    if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("the MPI library gives no thread support");
-    bool parsed = false;
+  // a failure after the work started: the other ranks cannot go on without this one
+  auto guarded = [&](bool defaults) {
     try {
-      app.parse(argc, argv);
-      parsed = true;
-    } catch (const CLI::ParseError& e) {
-      // every rank parses the same arguments and fails alike; rank 0 says why
-      if (rank == 0) {
-        if (e.get_exit_code() == 0)
-          app.exit(e);
-        else
-          std::fprintf(stderr, "cdref-mpi: %s\n(see cdref-mpi --help, or cdref-mpi campaign --help)\n",
-                       cdref::cli::parse_error_text(e).c_str());
-      }
-      rc = e.get_exit_code() == 0 ? 0 : 2;
+      if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("the MPI library gives no thread support");
+      return run_campaign(cmd, defaults, rank, ranks);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "cdref-mpi: rank %d: %s\n", rank, e.what());
+      if (ranks > 1) MPI_Abort(MPI_COMM_WORLD, 2);
+      return 2;
     }
-    if (parsed && help->parsed()) {
-      if (rank == 0) std::cout << app.get_formatter()->make_help(&app, "cdref-mpi", CLI::AppFormatMode::Normal);
-    } else if (parsed) {
-      rc = run_campaign(cmd, !campaign->parsed(), rank, ranks);
-    }
-  } catch (const std::exception& e) {
-    // a failure after the work started: the other ranks cannot go on without this one
-    std::fprintf(stderr, "cdref-mpi: rank %d: %s\n", rank, e.what());
-    if (ranks > 1) MPI_Abort(MPI_COMM_WORLD, 2);
-    rc = 2;
-  }
-  if (rank == 0) {
-    const std::string out = cdref::cli::io::finish_stdout();
-    if (!out.empty()) {
-      std::fprintf(stderr, "cdref-mpi: %s\n", out.c_str());
-      rc = 2;
-    }
-  }
+  };
+  cdref::cli::Command campaign =
+      program.add("campaign", "run a campaign across the ranks (the options of cdref campaign)", [&] { return guarded(false); });
+  cdref::cli::add_campaign_options(campaign, cmd, true);
+  program.add("help", "this help", [&] {
+    if (rank == 0) std::cout << program.help();
+    return 0;
+  });
+  // every rank parses the same arguments and fails alike; rank 0 says why
+  const int rc = program.run(argc, argv, [&] { return guarded(true); }, rank != 0);
   MPI_Finalize();
   return rc;
 }

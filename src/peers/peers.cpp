@@ -543,11 +543,10 @@ struct Args {
 };
 
 // The options of `cdref peers` (and of its float64 helper, which adds --rows).
-void add_options(CLI::App& app, Args& a) {
-  cli::conventions(app);
-  app.add_option("--n", a.n, "cases per family and scale (default 2000)")->check(cli::whole_number(1, 10000000));
-  app.add_option("--seed", a.seed, "the seed (default 1)")->check(cli::whole_number(0, UINT64_MAX));
-  app.add_option("--threads", a.threads, "worker threads (default 2)")->check(cli::whole_number(1, 4096));
+void add_options(cli::Command& c, Args& a) {
+  c.whole("--n", a.n, 1, 10000000, "cases per family and scale (default 2000)")
+      .whole("--seed", a.seed, 0, UINT64_MAX, "the seed (default 1)")
+      .whole("--threads", a.threads, 1, 4096, "worker threads (default 2)");
 }
 
 }  // namespace
@@ -556,19 +555,19 @@ void add_options(CLI::App& app, Args& a) {
 // cdref_peers_bullet64: Bullet's float64 build in its own process (its inline functions carry
 // the float build's names), run by `cdref peers`, which prints its rows with the others.
 int helper_main(int argc, char** argv) {
-  CLI::App app{"Bullet's float64 build for cdref peers", "cdref_peers_bullet64"};
+  cli::Program program("cdref_peers_bullet64", "Bullet's float64 build for cdref peers");
   Args a;
-  add_options(app, a);
-  app.add_option("--rows", a.rows_out, "the file to write the rows to")->required();
-  cli::Commands none;
-  return cli::run_app(app, none, argc, argv, [&] {
+  cli::Command root = program.root();
+  add_options(root, a);
+  root.text("--rows", a.rows_out, "the file to write the rows to").required();
+  return program.run(argc, argv, [&] {
     cli::io::Output rows(a.rows_out, "--rows");
     nlohmann::json all = nlohmann::json::array();
     for (const Adapter& ad : adapters()) all.push_back(collect(ad, a.n, a.seed, a.threads));
     rows.stream() << all.dump() << "\n";
     rows.commit();
     return 0;
-  }, "cdref_peers_bullet64");
+  });
 }
 #else
 // Runs the helper with these arguments, no shell; true when it exits 0.
@@ -640,16 +639,16 @@ int peers_run(const Args& a) {
   return 0;
 }
 
-void add_peers_command(CLI::App& root, cli::Commands& cmds) {
+void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
-  CLI::App* app = root.add_subcommand(
+  cli::Command c = program.add(
       "peers",
       "GLM's, Bullet's and Eigen's functions on cdref's families at float (and Bullet's float64 build) against the exact "
-      "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps");
-  add_options(*app, *a);
-  app->add_option("--json", a->json_out, "write the rows as JSON to this file (- for standard output)");
-  app->add_option("--svg", a->svg_out, "draw the gallery to this SVG");
-  cmds.add(app, [a] { return peers_run(*a); });
+      "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
+      [a] { return peers_run(*a); });
+  add_options(c, *a);
+  c.text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
+      .text("--svg", a->svg_out, "draw the gallery to this SVG");
 }
 #endif
 

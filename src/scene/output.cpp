@@ -312,24 +312,22 @@ int scene_run(const SceneOptions& o) {
 
 }  // namespace
 
-void add_scene_command(CLI::App& root, cli::Commands& cmds) {
+void add_scene_command(cli::Program& program) {
   auto o = std::make_shared<SceneOptions>();
-  CLI::App* app = root.add_subcommand(
-      "scene",
-      "run a scene (JSON, see docs/scenes.md; no FILE: the built-in default, scenes/default.json) evaluating only the "
-      "queries its effects name, and print its event log; --compare float,exact runs both and prints the events they "
-      "disagree on and the differences of the continuous outputs (default: float,exact and double,exact)");
-  cli::conventions(*app);
-  app->add_option("file", o->file, "the scene file (default: the built-in scene)");
-  app->add_option("--precision", o->precisions, "run at this precision and print its log (repeatable): float, double, exact")
-      ->check(cli::one_of({"float", "double", "exact"}))
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app->add_option("--compare", o->compare_pairs, "compare two precisions, e.g. float,exact (repeatable)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app->add_option("--json", o->json_out, "write the runs and comparisons as JSON to this file (- for standard output)");
-  app->add_option("--svg", o->svg_out, "draw the top view with the events to this SVG");
-  app->add_flag("--quiet", o->quiet, "no log on standard output");
-  cmds.add(app, [o] { return scene_run(*o); });
+  program
+      .add("scene",
+           "run a scene (JSON, see docs/scenes.md; no FILE: the built-in default, scenes/default.json) evaluating only "
+           "the queries its effects name, and print its event log; --compare float,exact runs both and prints the "
+           "events they disagree on and the differences of the continuous outputs (default: float,exact and "
+           "double,exact)",
+           [o] { return scene_run(*o); })
+      .positional("FILE", o->file, "the scene file (default: the built-in scene)")
+      .choices("--precision", o->precisions, {"float", "double", "exact"},
+               "run at this precision and print its log (repeatable)")
+      .texts("--compare", o->compare_pairs, "compare two precisions, e.g. float,exact (repeatable)")
+      .text("--json", o->json_out, "write the runs and comparisons as JSON to this file (- for standard output)")
+      .text("--svg", o->svg_out, "draw the top view with the events to this SVG")
+      .flag("--quiet", o->quiet, "no log on standard output");
 }
 
 }  // namespace cdref::scene

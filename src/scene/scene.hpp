@@ -20,11 +20,8 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
 namespace cdref::cli {
-struct Commands;
+class Program;
 }
 
 namespace cdref::scene {
@@ -155,6 +152,6 @@ std::string to_json(const Scene& s, const std::vector<Run>& runs, const std::vec
 std::string to_svg(const Scene& s, const std::vector<Run>& runs, const std::vector<Comparison>& cmps);
 
 // Adds `cdref scene` to the command line (src/scene/output.cpp).
-void add_scene_command(CLI::App& root, cli::Commands& cmds);
+void add_scene_command(cli::Program& program);
 
 }  // namespace cdref::scene
