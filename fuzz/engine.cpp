@@ -804,7 +804,7 @@ Saved deserialize(const std::string& text, const std::string& source) {
   };
   while (std::getline(in, line)) {
     ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // a file that passed through CRLF line ends
+    while (!line.empty() && line.back() == '\r') line.pop_back();  // a file that passed through CRLF line ends
     std::istringstream ls(line);
     std::string tag;
     ls >> tag;

@@ -109,12 +109,13 @@ PartCheckpoint deserialize_part(const std::string& text, const std::string& sour
   PartCheckpoint c;
   std::istringstream in(text);
   std::string line[3];
-  if (!std::getline(in, line[0]) || (line[0] != "cdref-part 1" && line[0] != "cdref-part 1\r"))
+  if (!std::getline(in, line[0]) || line[0].rfind("cdref-part 1", 0) != 0 ||
+      line[0].find_first_not_of('\r', 12) != std::string::npos)
     throw std::runtime_error(source + ":1: not a cdref part checkpoint");
   for (int k = 1; k < 3; ++k)
     if (!std::getline(in, line[k])) throw std::runtime_error(source + ": truncated (no " + (k == 1 ? "part" : "done") + " record)");
   for (std::string& l : line)
-    if (!l.empty() && l.back() == '\r') l.pop_back();  // a file that passed through CRLF line ends
+    while (!l.empty() && l.back() == '\r') l.pop_back();  // a file that passed through CRLF line ends
   {
     std::istringstream ls(line[1]);
     std::string tag;
