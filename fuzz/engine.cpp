@@ -468,7 +468,7 @@ struct Item {
 // Work items are numbered cell by cell, ceil(n / block) of them per cell: item k is block
 // k % per_cell of cell k / per_cell. Computed, not stored: a campaign's memory does not grow
 // with the n it is asked for.
-std::uint64_t items_per_cell(const Spec& spec) { return (spec.n + block - 1) / block; }
+std::uint64_t items_per_cell(const Spec& spec) { return spec.n / block + (spec.n % block != 0); }
 Item item_at(const Spec& spec, std::uint64_t k) {
   const std::uint64_t per = items_per_cell(spec);
   return {std::size_t(k / per), (k % per) * block};
@@ -582,7 +582,7 @@ std::uint64_t Work::cell_cases(std::uint64_t r) const {
 
 std::uint64_t Work::cases(std::uint64_t begin, std::uint64_t end) const {
   end = std::min(end, s_->items);
-  if (begin >= end) return 0;
+  if (begin >= end) return 0;  // (so a campaign of n = 0 has no items, and no division by 0 below)
   // the cases of items [0, x): whole cells, then the first items of the next
   const std::uint64_t per = items_per_cell(s_->spec);
   const auto upto = [&](std::uint64_t x) { return (x / per) * cell_cases(per) + cell_cases(x % per); };
@@ -596,6 +596,7 @@ void Work::check(const Results& r, const std::vector<std::pair<std::uint64_t, st
   // the cases each cell must have counted, from the items said to be done
   std::vector<std::uint64_t> expected(s_->cells.size(), 0);
   for (auto [b, e] : done) {
+    if (b == e) continue;
     if (b > e || e > s_->items)
       throw std::runtime_error(source + ": items " + std::to_string(b) + "-" + std::to_string(e) +
                                " are not items of this campaign (it has " + std::to_string(s_->items) + ")");
