@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the seed corpus of the fuzz targets (fuzz/corpus/), reproducibly.
 
-usage: scripts/make_corpus.py CDREF
+usage: scripts/make_corpus.py CDREF [--out DIR]   (default: fuzz/corpus of this checkout)
 
 For each query (`cdref describe`): two cases of every family (from `cdref cases`), encoded as
 the fuzz targets decode them (a mode byte 0xff then 8 raw bytes per input), plus small exact
@@ -12,8 +12,10 @@ must survive (non-finite values, literals beyond double's range, subnormals, emp
 """
 import os, struct, subprocess, sys
 
+if len(sys.argv) not in (2, 4) or (len(sys.argv) == 4 and sys.argv[2] != "--out"):
+    sys.exit("usage: scripts/make_corpus.py CDREF [--out DIR]")
 cdref = sys.argv[1]
-root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus")
+root = sys.argv[3] if len(sys.argv) == 4 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fuzz", "corpus")
 
 def run(*args):
     return subprocess.run([cdref, *args], check=True, capture_output=True, text=True).stdout

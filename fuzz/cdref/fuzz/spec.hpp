@@ -1,7 +1,10 @@
 // cdref/fuzz/spec.hpp - how a query's spec becomes its descriptor.
 //
 // A query is described in one place, its spec (fuzz/queries/<query>.hpp): a struct with
-//   id, name, cls_name, pred_name, describe   the descriptor's names (id: see Query)
+//   id, name, cls_name, pred_name, describe   the descriptor's names (id: see Query; ids are
+//                                             dense, the next free one, checked by queries.cpp)
+//   full_call, answer_help                    the full query's call and the answer columns'
+//                                             meanings, as `cdref cases --describe` prints them
 //   inputs(), outputs(), families()           its case columns, output groups and families
 //   make<T>(in)                               its two primitives from a case's columns, over T
 //   book(a, b, w), book_pred(a, b)            the book: the full query (a Cast, a Proximity, a
@@ -23,6 +26,20 @@
 //   fuzz_extra(in)                            further checks of the fuzz target
 //   double_may_refuse(in)                     inputs the book at double may refuse
 //   variants()                                the query's own implementations
+//   mesh_level                                a shot against several triangles (a false
+//                                             negative is a leak, a false positive a phantom)
+//   oracle_formulation(a, b, w)               the truth's outputs in another formulation, equal
+//                                             to the book's exactly, run on double words first
+//   oracle_formulation_first(a, b)            (at double) the cases that formulation decides first
+//   oracle_rounded(a, b, result)              (at double) true where the robust result is proven
+//                                             correctly rounded in every output
+//
+// Registration: one X(Spec, Result, fn, A, B) line in its group's list (fuzz/queries/groups.hpp)
+// and the spec's header included by the group's translation unit. What the tests hold every
+// query to, beyond agreement with the exact answer on every family: the classification oracle
+// decides at least 99% of uniform cases at Stage::filter (tests/test_oracle_classify.cpp), the
+// robust tier is certain on at least 99% of them (tests/test_campaign.cpp), and the campaign's
+// digest and cell count (tests/test_campaign.cpp) change with the new query's cells.
 // describe<Spec>() instantiates every number type the campaign, the case files, the fuzz
 // checks and the cost report need and returns the type-erased QueryInfo.
 #pragma once
