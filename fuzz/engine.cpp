@@ -534,7 +534,13 @@ Spec spec_of_fingerprint(const std::string& fp) {
     else if (k == "impls") spec.impls = list(v);
     else if (k == "families") spec.families = list(v);
     else if (k == "scales")
-      for (const auto& x : list(v)) spec.scales.push_back(int(whole(x)));
+      for (const auto& x : list(v)) {  // (a scale may be negative)
+        int k = 0;
+        const auto [end, ec] = std::from_chars(x.data(), x.data() + x.size(), k);
+        if (ec != std::errc() || end != x.data() + x.size() || x.empty())
+          throw std::runtime_error("malformed fingerprint scale '" + x + "'");
+        spec.scales.push_back(k);
+      }
     else throw std::runtime_error("malformed fingerprint '" + fp + "'");
   }
   if (spec.fingerprint() != fp) throw std::runtime_error("malformed fingerprint '" + fp + "'");

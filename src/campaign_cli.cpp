@@ -36,7 +36,7 @@ void add_campaign_options(Command& app, CampaignCommand& c, bool mpi) {
   Spec& spec = c.spec;
   app.queries("--query", c.query_names, "a query (repeatable; default: all): " + query_names())
       .texts("--family", spec.families, "a family (repeatable; default: every family of each query): " + family_names())
-      .wholes("--scale", spec.scales, 0, 999999999, "a scale of the families (repeatable; default: all; see cdref describe)")
+      .wholes("--scale", spec.scales, -999999999, 999999999, "a scale of the families (repeatable; default: all; see cdref describe)")
       .texts("--impl", spec.impls,
              "an implementation (repeatable; default: all): book-float, book-double, book-long-double, stable-float, "
              "stable-double, robust-float, robust-double, robust-long-double, and a query's own variants (book-exact, "
@@ -158,7 +158,8 @@ void emit_campaign(const CampaignCommand& c, CampaignOutputs& o, const Results& 
       write_csv(o.csv->stream(), r);
       o.csv->commit();
     });
-  if (!c.quiet) print_table(std::cout, r, c.spec.seed);
+  // (with --json - or --csv -, standard output is the data's: the table goes to standard error)
+  if (!c.quiet) print_table(c.json == "-" || c.csv == "-" ? std::cerr : std::cout, r, c.spec.seed);
   all.finish();
 }
 

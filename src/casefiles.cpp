@@ -23,6 +23,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -165,7 +166,8 @@ std::string raw_line_problem(std::string& line, int lineno) {
 
 }  // namespace
 
-std::vector<CaseRow> parse_cases(Query q, std::istream& in, const std::string& path, int& bad) {
+std::vector<CaseRow> parse_cases(Query q, std::istream& in, const std::string& path, int& bad,
+                                 std::vector<std::uint64_t>* skipped) {
   const QueryInfo& qi = info(q);
   std::string line;
   int lineno = 0;
@@ -229,7 +231,10 @@ std::vector<CaseRow> parse_cases(Query q, std::istream& in, const std::string& p
         ok = false;
       }
     }
-    if (!ok) continue;
+    if (!ok) {
+      if (skipped) skipped->push_back(r.id);
+      continue;
+    }
     seen[r.id] = lineno;
     r.refusal = overflowing_literal(qi, r, tokens);
     rows.push_back(r);
@@ -267,9 +272,10 @@ bool classification_only(const std::string& outputs) {
 
 namespace {
 
-std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad) {
+std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad,
+                                std::vector<std::uint64_t>* skipped = nullptr) {
   std::ifstream f;
-  return parse_cases(q, open_in(path, f, "the case file"), path, bad);
+  return parse_cases(q, open_in(path, f, "the case file"), path, bad, skipped);
 }
 
 std::string query_list() {
@@ -465,9 +471,11 @@ int score_run(const ScoreOptions& o) {
   if (!o.json.empty()) json_out.emplace(o.json, "--json");
   if (!o.csv.empty()) csv_out.emplace(o.csv, "--csv");
   int bad = 0;
-  const auto rows = read_cases(q, o.cases, bad);
+  std::vector<std::uint64_t> skipped;  // malformed case lines (reported): their answers are not graded
+  const auto rows = read_cases(q, o.cases, bad, &skipped);
   std::map<std::uint64_t, std::size_t> case_at;
   for (std::size_t i = 0; i < rows.size(); ++i) case_at[rows[i].id] = i;
+  const std::set<std::uint64_t> skipped_ids(skipped.begin(), skipped.end());
 
   // the answers: a header naming each column once, then one line per case id
   std::ifstream af;
@@ -533,7 +541,7 @@ int score_run(const ScoreOptions& o) {
     if (const auto it = answers.find(id); it != answers.end())
       throw std::runtime_error(at(lineno) + "case " + cells[id_at] + " is answered twice (also on line " +
                                std::to_string(it->second.lineno) + ")");
-    if (!case_at.count(id))
+    if (!case_at.count(id) && !skipped_ids.count(id))
       throw std::runtime_error(at(lineno) + "case " + cells[id_at] + " is not in the case file " + o.cases);
     answers[id] = {lineno, cells};
   }
@@ -637,7 +645,8 @@ int score_run(const ScoreOptions& o) {
   if (o.max_abs) bounds += " --max-abs " + num(*o.max_abs);
   if (o.max_rel) bounds += " --max-rel " + num(*o.max_rel);
 
-  std::ostream& os = std::cout;
+  // (with --json - or --csv -, standard output is the data's: the table goes to standard error)
+  std::ostream& os = o.json == "-" || o.csv == "-" ? std::cerr : std::cout;
   os << "cdref score: " << qi.name << ", " << rows.size() << " cases, " << graded_cases << " answered and graded, "
      << unanswered << " unanswered, " << bad << " malformed or refused, " << set_apart
      << " set apart by the answers' convention; errors in ulps of " << type

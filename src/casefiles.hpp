@@ -27,7 +27,10 @@ struct CaseRow {
 // skipped. A well-formed line whose numbers are not finite
 // (nan, inf, or a literal beyond double's range such as 1e400) is kept with its `refusal`:
 // `oracle` and `score` refuse that case by name and answer the rest.
-std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::string& source, int& bad);
+// `skipped` (optional) receives the ids of the malformed lines whose id could be read, so that an
+// answer to such a case is known to answer a case that exists.
+std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::string& source, int& bad,
+                                 std::vector<std::uint64_t>* skipped = nullptr);
 
 // The exact answer to a case at the precision (24: for the inputs rounded to float, as a float
 // implementation receives them), as `cdref oracle` writes it; with values false the

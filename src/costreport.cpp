@@ -446,14 +446,16 @@ int report_run(const ReportOptions& o) {
   if (!o.json.empty()) json.emplace(o.json, "--json");
   if (!o.svg.empty()) svg.emplace(o.svg, "--svg");
   if (queries.empty()) queries = all_queries();
-  std::cout << "cdref report: " << n << " uniform cases a timed pass, each pass of a fast row on a fresh set of "
+  // (with --json - or --csv -, standard output is the data's: the table goes to standard error)
+  std::ostream& human = o.json == "-" || o.csv == "-" || o.svg == "-" ? std::cerr : std::cout;
+  human << "cdref report: " << n << " uniform cases a timed pass, each pass of a fast row on a fresh set of "
             << timing_windows << ", median of " << reps << " interleaved repetitions, one thread; errors from " << err_n
             << " cases per cell of every family (every output, ulps of the row's type).\n\n";
   std::vector<QueryReport> out;
   for (Query q : queries) {
     out.push_back(measure(q, n, reps, err_n, threads));
-    print(std::cout, out.back());
-    std::cout.flush();
+    print(human, out.back());
+    human.flush();
   }
   io::Outputs all;
   auto write = [&](std::optional<io::Output>& f, auto&& body) {
@@ -461,7 +463,7 @@ int report_run(const ReportOptions& o) {
     all.attempt([&] {
       body(f->stream());
       f->commit();
-      if (!f->is_stdout()) std::cout << "wrote " << f->path() << "\n";
+      if (!f->is_stdout()) human << "wrote " << f->path() << "\n";
     });
   };
   write(csv, [&](std::ostream& f) { write_csv(f, out); });

@@ -3,7 +3,9 @@
 // on a few hard cases, printing where the float versions drift.
 #include <cdref/exact/rationals.hpp>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -117,6 +119,16 @@ void obb_obb(std::vector<Row>& rows, const std::string& name, const std::string&
 
 }  // namespace
 
+// printf to std::cout: standard output goes through cdref's checked stream (src/output.hpp).
+[[gnu::format(printf, 1, 2)]] static void say(const char* format, ...) {
+  char buf[1024];
+  va_list args;
+  va_start(args, format);
+  const int n = std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  if (n > 0) std::cout.write(buf, std::min<std::streamsize>(n, sizeof buf - 1));
+}
+
 int run_demo() {
   std::vector<Row> rows;
   const Vec3<double> o(0, 0, 0);
@@ -143,11 +155,11 @@ int run_demo() {
     obb_obb(rows, "the same, RAPID's |R| + 1e-6 at double", "separate", A, B, rapid);
   }
 
-  std::printf("cdref: the chapter's algorithms (book versions) at float and double, against the exact answer\n");
-  std::printf("(CGAL::Gmpq, square roots kept exactly as a + b sqrt d, correctly rounded for display).\n");
-  std::printf("Errors are in ulps of the type's own precision; float is judged on its own rounding of the inputs.\n\n");
-  std::printf("Oriented boxes: the book's 15-axis test against the solid the rounded axes span (cdref::solid).\n\n");
-  std::printf("%-20s %-40s %-21s %-26s %-26s %-26s %s\n", "query", "case", "quantity", "float", "double",
+  say("cdref: the chapter's algorithms (book versions) at float and double, against the exact answer\n");
+  say("(CGAL::Gmpq, square roots kept exactly as a + b sqrt d, correctly rounded for display).\n");
+  say("Errors are in ulps of the type's own precision; float is judged on its own rounding of the inputs.\n\n");
+  say("Oriented boxes: the book's 15-axis test against the solid the rounded axes span (cdref::solid).\n\n");
+  say("%-20s %-40s %-21s %-26s %-26s %-26s %s\n", "query", "case", "quantity", "float", "double",
               "exact", "drift");
   int wrong = 0;
   for (const Row& r : rows) {
@@ -157,9 +169,9 @@ int run_demo() {
     if (r.db_ulps > 0.5) drift += "double " + fmt(std::round(r.db_ulps)) + " ulps  ";
     if (r.fl_ulps > 0.5) drift += "float " + fmt(std::round(r.fl_ulps)) + " ulps";
     wrong += r.wrong_d + r.wrong_f;
-    std::printf("%-20s %-40s %-21s %-26s %-26s %-26s %s\n", r.query.c_str(), r.name.c_str(), r.quantity.c_str(),
+    say("%-20s %-40s %-21s %-26s %-26s %-26s %s\n", r.query.c_str(), r.name.c_str(), r.quantity.c_str(),
                 r.fl.c_str(), r.db.c_str(), r.exact.c_str(), drift.c_str());
   }
-  std::printf("\n%d misclassifications in %zu rows.\n", wrong, rows.size());
+  say("\n%d misclassifications in %zu rows.\n", wrong, rows.size());
   return 0;
 }

@@ -71,7 +71,7 @@ int campaign(CampaignCommand& c, bool defaults) {
   std::uint64_t cases = 0;
   for (const auto& [k, st] : r.cells) cases += st.n;
   if (!c.quiet)
-    std::cout << "\n" << cases << " evaluations in " << secs << " s on " << spec.threads << " threads.\n";
+    (c.json == "-" || c.csv == "-" ? std::cerr : std::cout) << "\n" << cases << " evaluations in " << secs << " s on " << spec.threads << " threads.\n";
   return 0;
 }
 

@@ -30,6 +30,8 @@ int default_threads() { return int(std::max(1u, std::thread::hardware_concurrenc
 
 namespace {
 
+// Whole numbers are decimal: the validator writes the value back in canonical form, so that
+// CLI11's own conversion (which reads a leading 0 as octal) sees no leading zero.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
   const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
   return CLI::Validator(
@@ -39,6 +41,24 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         errno = 0;
         const unsigned long long x = std::strtoull(s.c_str(), nullptr, 10);
         if (errno == ERANGE || x < lo || x > hi) return want;
+        s = std::to_string(x);
+        return "";
+      },
+      "in " + range);
+}
+
+// A signed whole number in [lo, hi] (a family's scale may be negative), decimal, canonical.
+CLI::Validator signed_number(long lo, long hi) {
+  const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& s) -> std::string {
+        const std::string want = "wants a whole number from " + range + ", not '" + s + "'";
+        const std::size_t digits = s.size() - (!s.empty() && s[0] == '-');
+        if (digits == 0 || digits > 18 || s.find_first_not_of("0123456789", s.size() - digits) != std::string::npos)
+          return want;
+        const long x = std::strtol(s.c_str(), nullptr, 10);
+        if (x < lo || x > hi) return want;
+        s = std::to_string(x);
         return "";
       },
       "in " + range);
@@ -55,7 +75,10 @@ CLI::Validator real_number(double lo, double hi) {
         char* end = nullptr;
         errno = 0;
         const double x = std::strtod(s.c_str(), &end);
-        if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(x) || x < lo || x > hi) return want;
+        // (ERANGE also marks a subnormal result, which is a number; not one that reads as 0)
+        if (end != s.c_str() + s.size() || (errno == ERANGE && (x == 0 || !std::isfinite(x))) || !std::isfinite(x) ||
+            x < lo || x > hi)
+          return want;
         return "";
       },
       "in " + range);
@@ -117,22 +140,22 @@ Command& Command::texts(const std::string& name, std::vector<std::string>& into,
 }
 Command& Command::whole(const std::string& name, std::uint64_t& into, std::uint64_t lo, std::uint64_t hi,
                         const std::string& help) {
-  app_->add_option(name, into, help)->check(whole_number(lo, hi));
+  app_->add_option(name, into, help)->transform(whole_number(lo, hi));
   return *this;
 }
 Command& Command::whole(const std::string& name, int& into, int lo, int hi, const std::string& help) {
-  app_->add_option(name, into, help)->check(whole_number(std::uint64_t(lo), std::uint64_t(hi)));
+  app_->add_option(name, into, help)->transform(signed_number(lo, hi));
   return *this;
 }
 Command& Command::whole(const std::string& name, std::optional<std::uint64_t>& into, std::uint64_t lo,
                         std::uint64_t hi, const std::string& help) {
   app_->add_option_function<std::uint64_t>(name, [&into](const std::uint64_t& x) { into = x; }, help)
-      ->check(whole_number(lo, hi));
+      ->transform(whole_number(lo, hi));
   return *this;
 }
 Command& Command::wholes(const std::string& name, std::vector<int>& into, int lo, int hi, const std::string& help) {
   app_->add_option(name, into, help)
-      ->check(whole_number(std::uint64_t(lo), std::uint64_t(hi)))
+      ->transform(signed_number(lo, hi))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   return *this;
 }
@@ -177,10 +200,14 @@ Command& Command::flag(const std::string& name, bool& into, const std::string& h
 }
 Command& Command::scales(const std::string& name, std::vector<std::string>& into, const std::string& help) {
   app_->add_option(name, into, help)
-      ->check(CLI::Validator(
+      ->transform(CLI::Validator(
           [](std::string& v) -> std::string {
-            const bool digits = !v.empty() && v.size() <= 9 && v.find_first_not_of("0123456789") == std::string::npos;
-            return v == "all" || digits ? "" : "wants a scale (a whole number) or all, not '" + v + "'";
+            if (v == "all") return "";
+            const std::size_t digits = v.size() - (!v.empty() && v[0] == '-');
+            if (digits == 0 || digits > 9 || v.find_first_not_of("0123456789", v.size() - digits) != std::string::npos)
+              return "wants a scale (a whole number) or all, not '" + v + "'";
+            v = std::to_string(std::stol(v));
+            return "";
           },
           "SCALE or all"))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstring>
 #include <iostream>
+#include <cstdlib>
 #include <streambuf>
 
 namespace cdref::cli::io {
@@ -88,10 +89,11 @@ std::string reason(int err) { return err ? std::strerror(err) : "unknown error";
 
 void init() {
   std::signal(SIGPIPE, SIG_IGN);
-  static FdBuf buf(1, true);
-  stdout_buf = &buf;
+  // never destroyed: std::cout is flushed once more at exit, after static objects are gone
+  static FdBuf* buf = new FdBuf(1, true);
+  stdout_buf = buf;
   std::cout.flush();
-  std::cout.rdbuf(&buf);
+  std::cout.rdbuf(buf);
 }
 
 bool stdout_closed() { return stdout_buf && stdout_buf->pipe_closed(); }
@@ -110,7 +112,7 @@ std::string finish_stdout() {
 }
 
 struct Output::State {
-  std::string path, what, tmp;
+  std::string path, what, tmp, target;  // target: the real path the temporary file replaces
   int fd = -1;
   bool to_stdout = false, committed = false;
   std::unique_ptr<FdBuf> buf;
@@ -138,26 +140,50 @@ Output::Output(const std::string& path, const std::string& what) : s_(std::make_
   }
   if (path.empty()) throw write_error(what + " needs a file name");
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-    if (S_ISDIR(st.st_mode)) throw write_error("cannot write " + what + " " + path + ": it is a directory");
-    // a device or a named pipe: written in place (renaming over it would replace it)
+  const bool exists = ::stat(path.c_str(), &st) == 0;  // (follows a symbolic link)
+  if (exists && S_ISDIR(st.st_mode)) throw write_error("cannot write " + what + " " + path + ": it is a directory");
+  if (exists && !S_ISREG(st.st_mode)) {
+    // a device or a named pipe (standard output named as /dev/stdout among them): written in
+    // place, since renaming over it would replace it
     s_->fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
     if (s_->fd < 0) s_->fail("write", errno);
   } else {
-    std::string t = path + ".tmp-XXXXXX";
+    // the file itself, not a symbolic link to it, is replaced: its real path names the
+    // directory of the temporary file
+    std::string real = path;
+    if (exists) {
+      char* r = ::realpath(path.c_str(), nullptr);
+      if (r) real = r, std::free(r);
+    }
+    std::string t = real + ".tmp-XXXXXX";
     s_->fd = ::mkstemp(t.data());
-    if (s_->fd < 0) s_->fail("write", errno);
-    s_->tmp = t;
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(s_->fd, 0666 & ~mask);
+    if (s_->fd >= 0) {
+      s_->tmp = t;
+      s_->target = real;
+      // an existing file keeps its permissions; a new one gets those of an ordinary new file
+      const mode_t mask = ::umask(0);
+      ::umask(mask);
+      ::fchmod(s_->fd, exists ? (st.st_mode & 07777) : (0666 & ~mask));
+    } else if (exists && (errno == EACCES || errno == EROFS || errno == EPERM)) {
+      // a file that may be written in a directory that may not: written in place (not atomic)
+      s_->fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+      if (s_->fd < 0) s_->fail("write", errno);
+    } else {
+      s_->fail("write", errno);
+    }
   }
   s_->buf = std::make_unique<FdBuf>(s_->fd);
   s_->os = std::make_unique<std::ostream>(s_->buf.get());
 }
 
 Output::Output(Output&&) noexcept = default;
-Output& Output::operator=(Output&&) noexcept = default;
+Output& Output::operator=(Output&& o) noexcept {
+  if (this != &o) {
+    if (s_ && !s_->committed) s_->discard();  // the output replaced is abandoned, not left half
+    s_ = std::move(o.s_);
+  }
+  return *this;
+}
 
 Output::~Output() {
   if (s_ && !s_->committed) s_->discard();
@@ -184,7 +210,7 @@ void Output::commit() {
     s_->fail("write", e);
   }
   s_->fd = -1;
-  if (!s_->tmp.empty() && ::rename(s_->tmp.c_str(), s_->path.c_str()) != 0) s_->fail("rename into", errno);
+  if (!s_->tmp.empty() && ::rename(s_->tmp.c_str(), s_->target.c_str()) != 0) s_->fail("rename into", errno);
   s_->tmp.clear();
   s_->committed = true;
 }
@@ -209,7 +235,7 @@ void write_file(const std::string& path, const std::string& what, const std::str
 void Outputs::finish() const {
   if (errors_.empty()) return;
   std::string all;
-  for (const std::string& e : errors_) all += (all.empty() ? "" : "\ncdref: ") + e;
+  for (const std::string& e : errors_) all += (all.empty() ? "" : "\n  and ") + e;
   throw write_error(all);
 }
 

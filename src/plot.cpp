@@ -152,7 +152,7 @@ int plot_run(PlotOptions o) {
   gp << "unset multiplot\n";
   svg_out.stream() << gnuplot_svg(gp.str());
   svg_out.commit();
-  std::cout << "wrote " << o.out << "\n";
+  if (!svg_out.is_stdout()) std::cout << "wrote " << o.out << "\n";
   return 0;
 }
 

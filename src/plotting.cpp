@@ -63,31 +63,37 @@ std::string gnuplot_svg(const std::string& script) {
     if (w < 0) throw std::runtime_error(std::string("cannot write a gnuplot script: ") + std::strerror(errno));
     done += std::size_t(w);
   }
-  int out[2], err[2];
+  // its messages go to a second temporary file (read after it ends: a pipe for them could fill
+  // while cdref waits on the picture), the picture to a pipe
+  std::string epath = (std::filesystem::temp_directory_path() / "cdref-plot-err-XXXXXX").string();
+  Fd ef;
+  ef.fd = ::mkstemp(epath.data());
+  if (ef.fd < 0) throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(errno));
+  Remove remove_err{epath};
+  int out[2];
   if (::pipe2(out, O_CLOEXEC) != 0) throw std::runtime_error("cannot run gnuplot: no pipe");
-  if (::pipe2(err, O_CLOEXEC) != 0) {
-    ::close(out[0]), ::close(out[1]);
-    throw std::runtime_error("cannot run gnuplot: no pipe");
-  }
   const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error("cannot run gnuplot: fork failed");
+  if (pid < 0) {
+    ::close(out[0]), ::close(out[1]);
+    throw std::runtime_error("cannot run gnuplot: fork failed");
+  }
   if (pid == 0) {
     ::dup2(out[1], 1);
-    ::dup2(err[1], 2);
+    ::dup2(ef.fd, 2);
     const int devnull = ::open("/dev/null", O_RDONLY);
     if (devnull >= 0) ::dup2(devnull, 0);
     char* argv[] = {const_cast<char*>("gnuplot"), path.data(), nullptr};
     ::execvp("gnuplot", argv);
     _exit(127);
   }
-  ::close(out[1]), ::close(err[1]);
-  // gnuplot's messages are small; its picture may be large: read the picture first, then them
-  Fd o{out[0]}, e{err[0]};
+  ::close(out[1]);
+  Fd o{out[0]};
   const std::string svg = read_all(o.fd);
-  const std::string messages = read_all(e.fd);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  ::lseek(ef.fd, 0, SEEK_SET);
+  const std::string messages = read_all(ef.fd);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
     throw std::runtime_error("cannot run gnuplot (apt-get install gnuplot-nox)");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || svg.find("</svg>") == std::string::npos)

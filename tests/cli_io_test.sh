@@ -65,6 +65,15 @@ run "$cdref" cases --query ray-box --family all --scale all --n 2
 [ "$st" = 0 ] && [ "$(($(wc -l < out.txt) - 1))" = "$((2 * cells))" ] || fail "--family all --scale all: $(wc -l < out.txt) lines for $cells cells"
 [ "$(cut -d, -f1 out.txt | sort | uniq -d | wc -l)" = 0 ] || fail "--family all: case ids repeat"
 
+# negative scales (the magnitude families) are scales; a leading zero is decimal, not octal
+run "$cdref" cases --query sphere-sphere --family magnitude --scale -320 --n 2
+[ "$st" = 0 ] && [ "$(sed -n 2p out.txt | cut -d, -f3)" = -320 ] || fail "--scale -320: $st $(cat err.txt)"
+run "$cdref" campaign --query sphere-sphere --family magnitude --scale=-50 --impl book-double --n 5 --quiet
+[ "$st" = 0 ] || fail "campaign --scale=-50: $st $(cat err.txt)"
+"$cdref" cases --query ray-box --n 3 --seed 010 > s010.csv
+"$cdref" cases --query ray-box --n 3 --seed 10 > s10.csv
+cmp -s s010.csv s10.csv || fail "--seed 010 is not --seed 10"
+
 # ---- one output layer: no failed write exits 0; paths checked before the work ----
 run "$cdref" cases --query ray-box --n 3 --out /dev/full
 [ "$st" = 2 ] && grep -q "cannot write the case file /dev/full: No space left on device" err.txt || fail "cases to /dev/full: $st $(cat err.txt)"
@@ -84,6 +93,13 @@ refused "cannot write --checkpoint /dev/null: it is not a regular file" campaign
 run "$cdref" campaign --query ray-box --family uniform --n 50 --json /dev/full --csv ok.csv --quiet
 [ "$st" = 2 ] && grep -q "cannot write --json /dev/full" err.txt && [ -s ok.csv ] || fail "--json /dev/full beside --csv: $st $(cat err.txt)"
 ls -a | grep -q "tmp-" && fail "a temporary file was left: $(ls -a)"
+# a symbolic link: the file it names is replaced, the link stays, the file keeps its permissions
+mkdir -p real && echo old > real/target.csv && chmod 600 real/target.csv && ln -sf real/target.csv link.csv
+"$cdref" cases --query ray-box --n 2 --out link.csv
+[ -L link.csv ] && grep -q "^case," real/target.csv && [ "$(stat -c %a real/target.csv)" = 600 ] ||
+  fail "--out through a symbolic link: $(ls -l link.csv real/target.csv)"
+"$cdref" demo > /dev/full 2> err.txt; st=$?
+[ "$st" = 2 ] || fail "demo > /dev/full: $st"
 # a closed pipe ends the command quietly: no signal, no message
 "$cdref" cases --query ray-box --n 200000 2> err.txt | head -1 > /dev/null
 st=${PIPESTATUS[0]}
@@ -152,6 +168,13 @@ run "$cdref" score --query $q --cases c.csv --answers ulp.csv --max-abs 1e-12
 awk -F, 'BEGIN{OFS=","} NR==1 {print "case","hit","set_apart"; next} {print $1, 1-$2, 1}' a.csv > apart.csv
 run "$cdref" score --query $q --cases c.csv --answers apart.csv
 [ "$st" = 0 ] && grep -q "40 set apart" out.txt || fail "set_apart: $st $(head -2 out.txt)"
+# with --json -, standard output is the JSON alone (the table goes to standard error)
+"$cdref" score --query $q --cases c.csv --answers a.csv --json - > sj.json 2> /dev/null
+python3 -c "import json; assert json.load(open('sj.json'))['pass']" || fail "score --json -: $(head -c 300 sj.json)"
+# an answer to a malformed case line: that case is not graded, the others are (exit 1)
+awk -F, 'BEGIN{OFS=","} NR==4 {$4="abc"} {print}' c.csv > c2.csv
+run "$cdref" score --query $q --cases c2.csv --answers a.csv
+[ "$st" = 1 ] && grep -q "39 answered and graded" out.txt || fail "an answer to a malformed case: $st $(cat err.txt)"
 # answers the grade cannot trust: refused by name, exit 2
 awk -F, 'NR==2 {print; n=split($0, f, ","); f[2]=1-f[2]; s=f[1]; for (i=2;i<=n;i++) s=s","f[i]; print s; next} {print}' a.csv > dup.csv
 refused "dup.csv:3: case 0 is answered twice \(also on line 2\)" score --query $q --cases c.csv --answers dup.csv

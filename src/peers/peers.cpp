@@ -590,23 +590,25 @@ int peers_run(const Args& a) {
   std::optional<cli::io::Output> svg_file, json_file;
   if (!a.svg_out.empty()) svg_file.emplace(a.svg_out, "--svg");
   if (!a.json_out.empty()) json_file.emplace(a.json_out, "--json");
+  // (with --json - or --svg -, standard output is the data's: the table goes to standard error)
+  std::ostream& human = a.json_out == "-" || a.svg_out == "-" ? std::cerr : std::cout;
 
-  std::cout << "Library functions on cdref's families, against the exact answer (" << a.n
+  human << "Library functions on cdref's families, against the exact answer (" << a.n
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
             << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
                "type (float; double for Bullet's float64 build): p99 / max, and the largest error relative to the\n"
                "inputs' scale.\n";
 #ifndef CDREF_HAVE_GLM
-  std::cout << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
+  human << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
 #endif
 #ifndef CDREF_HAVE_BULLET
-  std::cout << "(Bullet not found at build time: apt-get install libbullet-dev and rebuild)\n";
+  human << "(Bullet not found at build time: apt-get install libbullet-dev and rebuild)\n";
 #endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
     all.push_back(collect(ad, a.n, a.seed, a.threads));
-    print(std::cout, all.back());
+    print(human, all.back());
   }
   // Bullet's float64 build, from its helper beside this executable
   const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
@@ -621,10 +623,10 @@ int peers_run(const Args& a) {
     std::filesystem::remove(rows);
     for (const auto& r : more) {
       all.push_back(r);
-      print(std::cout, r);
+      print(human, r);
     }
   } else {
-    std::cout << "\n(Bullet's float64 build: no helper " << helper << ")\n";
+    human << "\n(Bullet's float64 build: no helper " << helper << ")\n";
   }
   cli::io::Outputs outs;
   if (svg_file) outs.attempt([&] {

@@ -252,6 +252,8 @@ int scene_run(const SceneOptions& o) {
   std::optional<cli::io::Output> json_file, svg_file;
   if (!json_out.empty()) json_file.emplace(json_out, "--json");
   if (!svg_out.empty()) svg_file.emplace(svg_out, "--svg");
+  // (with --json - or --svg -, standard output is the data's: the logs go to standard error)
+  std::ostream& human = json_out == "-" || svg_out == "-" ? std::cerr : std::cout;
   const Scene s = file.empty() ? default_scene() : load_scene(file);
   if (only.empty() && compares.empty()) compares = {{Precision::float_, Precision::exact}, {Precision::double_, Precision::exact}};
   // each precision runs once; the logs printed are those asked for with --precision, or the
@@ -290,10 +292,10 @@ int scene_run(const SceneOptions& o) {
     if (only.empty())
       for (const auto& [x, y] : compares) logged.insert(y);
     for (Precision p : logged)
-      if (has(p)) print_log(std::cout, s, run_of(p));
+      if (has(p)) print_log(human, s, run_of(p));
     for (const Comparison& c : cmps) {
-      std::cout << "\n";
-      print_comparison(std::cout, s, c);
+      human << "\n";
+      print_comparison(human, s, c);
     }
   }
   cli::io::Outputs all;
