@@ -263,13 +263,6 @@ Answer answer_case(Query q, const CaseRow& r, int precision, bool values) {
   return values ? oracle_truth(q, in, precision) : oracle_classify(q, in);
 }
 
-bool classification_only(const std::string& outputs) {
-  if (outputs != "all" && outputs != "cls")
-    throw std::invalid_argument("--outputs is all (every output) or cls (the classification alone), not '" + outputs +
-                                "'");
-  return outputs == "cls";
-}
-
 namespace {
 
 std::vector<CaseRow> read_cases(Query q, const std::string& path, int& bad,

@@ -39,9 +39,4 @@ std::vector<CaseRow> parse_cases(fuzz::Query q, std::istream& in, const std::str
 // by column before any exact conversion).
 fuzz::Answer answer_case(fuzz::Query q, const CaseRow& r, int precision, bool values = true);
 
-// The value of an --outputs option: "all" (false) or "cls" (true: the classification alone);
-// anything else throws std::invalid_argument naming the choices.
-bool classification_only(const std::string& outputs);
-
-
 }  // namespace cdref::cli

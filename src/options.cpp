@@ -23,7 +23,6 @@
 
 namespace cdref::cli {
 
-const char* version() { return CDREF_VERSION; }
 std::string version_text() { return std::string("cdref ") + CDREF_VERSION + " (commit " + CDREF_COMMIT + ")"; }
 
 int default_threads() { return int(std::max(1u, std::thread::hardware_concurrency())); }

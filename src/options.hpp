@@ -28,7 +28,6 @@ namespace cdref::cli {
 // "cdref 0.1.0 (commit abc1234)": the package version from CMake's project() and the commit
 // the build was configured at.
 std::string version_text();
-const char* version();  // the package version alone: "0.1.0"
 
 // The default number of worker threads: the hardware's.
 int default_threads();

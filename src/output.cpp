@@ -226,12 +226,6 @@ void check_replaceable(const std::string& path, const std::string& what) {
   ::unlink(t.c_str());
 }
 
-void write_file(const std::string& path, const std::string& what, const std::string& text) {
-  Output o(path, what);
-  o.stream() << text;
-  o.commit();
-}
-
 void Outputs::finish() const {
   if (errors_.empty()) return;
   std::string all;

@@ -65,9 +65,6 @@ class Output {
 // or a device. Throws write_error naming `what` and the path.
 void check_replaceable(const std::string& path, const std::string& what);
 
-// Writes `text` to a new Output(path, what) and commits it.
-void write_file(const std::string& path, const std::string& what, const std::string& text);
-
 // Several outputs of one command: each written even when another fails; the failures are
 // collected and thrown together (write_error naming each) by finish().
 class Outputs {
