@@ -127,9 +127,9 @@ head -1 out.csv | grep -q "^query,impl,family,scale,cases" || fail "CSV header"
 # the cost report: every row of every query measured in one run, as a table, CSV, JSON and
 # SVG (every query has its bare, book, stable, robust, oracle and exact rows)
 "$cdref" report --n 40 --reps 1 --error-n 10 --csv report.csv --json report.json --svg report.svg > report.txt
-# segment-sphere-cast: bare, 6 book rows, 4 stable, 4 robust, 6 oracle (classification, every output, lambda_enter: uniform and near-boundary), 2 truth API (uniform and near-boundary), 3 exact, 2 CGAL
-[ "$(grep -c '^segment-sphere-cast,' report.csv)" = 28 ] || fail "report rows: $(cat report.txt)"
-[ "$(grep -c '^box-box,' report.csv)" = 22 ] || fail "report rows: $(cat report.txt)"
+# segment-sphere-cast: bare, 6 book rows, 4 stable, 4 robust, 6 oracle (classification, every output, lambda_enter: uniform and near-boundary), 4 staged (classification and every output: uniform and near-boundary), 2 truth API (uniform and near-boundary), 3 exact, 2 CGAL
+[ "$(grep -c '^segment-sphere-cast,' report.csv)" = 32 ] || fail "report rows: $(cat report.txt)"
+[ "$(grep -c '^box-box,' report.csv)" = 24 ] || fail "report rows: $(cat report.txt)"
 grep -q "^  bare (book at double, unchecked)  *[0-9.]*  *1.00 " report.txt || fail "report: no bare baseline row"
 grep -q "^  book double  *[0-9.]*  *[0-9.]*  *1.00 " report.txt || fail "report: no book double baseline row"
 grep -q "^  stable double  " report.txt || fail "report: no stable row"

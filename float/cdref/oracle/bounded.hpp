@@ -5,7 +5,8 @@
 // Inputs are exact (e = 0). Each operation computes v in double, round to nearest, and a
 // bound e' >= the propagated error plus the rounding error of v:
 //   a + b:  |x - v| <= ea + eb + u |v| / (1 - u)
-//   a * b:  |x - v| <= |a| eb + |b| ea + ea eb + u |v| / (1 - u) + eta
+//   a * b:  exactly 0 when either factor is an exact 0; otherwise
+//           |x - v| <= |a| eb + |b| ea + ea eb + u |v| / (1 - u) + eta
 //   a / b:  needs |b| > eb;  <= (ea |b| + eb |a|) / (|b| (|b| - eb)) + u |v| / (1 - u) + eta
 //   sqrt a: if a - ea > 0: <= ea / (sqrt(a - ea) + sqrt(a)) + u |v| / (1 - u)  (the root is
 //           monotone, and its derivative at the lower end bounds the slope)
@@ -57,6 +58,7 @@ class Bounded {
   }
   friend Bounded operator-(const Bounded& a, const Bounded& b) { return a + (-b); }
   friend Bounded operator*(const Bounded& a, const Bounded& b) {
+    if (a.exact_zero() || b.exact_zero()) return Bounded(0.0);  // exactly 0, whatever the other
     const double p = a.v_ * b.v_;
     if (a.e_ == 0 && b.e_ == 0) return {p, (rounding(p) + eta) * grow};
     // the four products of the bound may underflow: one eta each, and one for p
@@ -65,6 +67,7 @@ class Bounded {
   friend Bounded operator/(const Bounded& a, const Bounded& b) {
     const double ab = std::fabs(b.v_);
     if (!(ab > b.e_)) throw uncertain();  // the divisor may be zero
+    if (a.exact_zero()) return Bounded(0.0);  // exactly 0 over a divisor that is not
     const double q = a.v_ / b.v_;
     // (ea |b| + eb |a|) / (|b| (|b| - eb)) = (ea + eb |a/b|) / (|b| - eb), with |a/b| <=
     // |q| (1 + u) / (1 - u) covered by grow, and eta for an underflowing eb |q|: written so
@@ -111,6 +114,9 @@ class Bounded {
   }
   friend bool operator!=(const Bounded& a, const Bounded& b) { return !(a == b); }
 
+  // x > 0 where that is certain (book/common.hpp's shortcuts): never throwing.
+  friend bool surely_positive(const Bounded& x) { return x.finite() && x.v_ - x.e_ > 0; }
+
   // |x|, min and max need no decision: each is 1-Lipschitz, so the value of the computed
   // operands with the larger of their bounds bounds the exact result (cdref's algorithms call
   // abs_of, min_of and max_of for them, found here by argument-dependent lookup).
@@ -135,17 +141,27 @@ class Bounded {
   // The exact value rounded to nearest double, or uncertain.
   double rounded() const {
     if (!finite()) throw uncertain();
-    if (e_ == 0) return v_;
+    if (e_ == 0) return v_ + 0.0;  // exact (an exact zero rounds to +0, never -0)
     const double inf = std::numeric_limits<double>::infinity();
     const double below = v_ - std::nextafter(v_, -inf), above = std::nextafter(v_, inf) - v_;
     if (e_ < 0.5 * std::min(below, above)) return v_;  // both gaps are powers of two: exact
     throw uncertain();
   }
+  // The exact value rounded to nearest long double: an exact value is itself (every double
+  // is a long double); any other is left to the next stage (its bound, a few ulps of a
+  // double, is far wider than the long double's rounding interval).
+  long double rounded_long_double() const {
+    if (!finite() || e_ != 0) throw uncertain();
+    return static_cast<long double>(v_ + 0.0);  // (+0 for an exact zero, never -0)
+  }
   // The exact value rounded to nearest float, or uncertain.
   float rounded_float() const {
     if (!finite()) throw uncertain();
+    if (v_ == 0 && e_ == 0) return 0.0f;  // +0, never -0
     const float f = static_cast<float>(v_);
     if (!std::isfinite(f)) throw uncertain();
+    // a value that rounds to a zero rounds to the zero of its own sign: that sign must be certain
+    if (f == 0 && !(std::fabs(v_) > e_)) throw uncertain();
     const float inf = std::numeric_limits<float>::infinity();
     // the float rounding interval of f, as doubles (a float midpoint has 25 bits: exact)
     // next to +-max the missing neighbour is max +- ulp: the overflow threshold
@@ -160,6 +176,7 @@ class Bounded {
 
  private:
   static double rounding(double v) { return std::fabs(v) * (u / (1 - u)); }
+  bool exact_zero() const { return v_ == 0 && e_ == 0; }
   double v_ = 0, e_ = 0;
 };
 

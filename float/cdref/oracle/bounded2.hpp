@@ -290,6 +290,8 @@ class Bounded2 {
     if (hi_ == 0 && lo_ == 0 && e_ == 0) return 0.0f;  // +0, never -0
     const float f = static_cast<float>(hi_);
     if (!std::isfinite(f)) throw uncertain();
+    // a value that rounds to a zero rounds to the zero of its own sign (hi's where that is certain)
+    if (f == 0 && !((std::fabs(hi_) - std::fabs(lo_)) * (1 - 2 * u) > e_ * grow)) throw uncertain();
     const float inf = std::numeric_limits<float>::infinity();
     const float fdn = std::nextafter(f, -inf), fup = std::nextafter(f, inf);
     // the float rounding interval of f as doubles (a float midpoint has 25 bits: exact)

@@ -212,6 +212,14 @@ struct QueryInfo {
   // spec.hpp's oracle_enter_of); empty for the
   // queries that are not casts.
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_enter;
+  // The generic staged path (cdref/exact/staged.hpp): the truth's own formulation run on
+  // oracle::Bounded, then oracle::Bounded2, then CGAL::Gmpq, the first certain answer taken;
+  // no error analysis of the query's own. `stage` (may be null) receives the stage that
+  // answered (0 bounded double, 1 bounded double word, 2 exact). The classification alone
+  // (cls = pred), and every output correctly rounded to the precision (24, 53 or 64). The
+  // reference every hand-written filter (oracle_classify, oracle_truth) is tested against.
+  std::function<Answer(const Inputs&, int* stage)> staged_classify;
+  std::function<Answer(const Inputs&, int precision, int* stage)> staged_truth;
   // A stage of the classification oracle alone (0 filter, 1 expansion, 2 rational): the
   // decision, or -1 when that stage cannot decide. Empty for queries without stages.
   std::function<int(int stage, const Inputs&)> oracle_stage;

@@ -176,7 +176,7 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   rows.push_back({"robust long double", "robust-long-double", "", robust_row<Spec, long double>(cases)});
   auto uni = std::make_shared<std::vector<Inputs>>(cases);
   auto hc = std::make_shared<std::vector<Inputs>>(hard);
-  const auto oracle = [](const auto& ab) { return Spec::oracle(ab.first, ab.second, nullptr); };
+  const auto oracle = [](const auto& ab) { return oracle_of<Spec>(ab.first, ab.second, nullptr); };
   const auto rounded = [](const Inputs& in) { return oracle_truth_of<Spec>(in, 53, nullptr).cls; };
   rows.push_back({"oracle, classification", "", "exact", batch_over(prepare<Spec, double>(cases), oracle)});
   if (values) rows.push_back({"oracle, every output rounded", "", "exact", batch_over(uni, rounded)});
@@ -212,6 +212,18 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
         {"oracle, lambda_enter" + hard_name, "", "exact", batch_over(prepare<Spec, double>(hard), enter), true});
   else if constexpr (is_cast<Spec>)
     rows.push_back({"oracle, lambda_enter" + hard_name, "", "exact", batch_over(hc, enter_generic), true});
+  // the generic staged path (cdref/exact/staged.hpp: the truth's own code on a bounded
+  // double, a bounded double word, then rationals), beside the oracle's hand-written filters
+  // above: what those filters save, on the uniform and on the near-boundary cases
+  // (the classification from the prepared primitives, as the oracle's row; every output from the
+  // case's columns, as the oracle's every-output row)
+  const auto staged_cls = [](const auto& ab) { return staged_classification<Spec>(ab.first, ab.second, nullptr); };
+  const auto staged_all = [](const Inputs& in) { return staged_truth_of<Spec>(in, 53, nullptr).cls; };
+  rows.push_back({"staged, classification", "", "exact", batch_over(prepare<Spec, double>(cases), staged_cls)});
+  if (values) rows.push_back({"staged, every output rounded", "", "exact", batch_over(uni, staged_all)});
+  rows.push_back(
+      {"staged, classification" + hard_name, "", "exact", batch_over(prepare<Spec, double>(hard), staged_cls), true});
+  if (values) rows.push_back({"staged, every output" + hard_name, "", "exact", batch_over(hc, staged_all), true});
   const Mode exact_mode = values ? Mode::first_rounded : Mode::classify;
   const std::string at = Spec::book_is_truth ? "book at " : "exact formulation at ";
   rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq>(head, exact_mode)});
@@ -231,6 +243,7 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
 // ---- the descriptor ----
 template <class Spec>
 QueryInfo describe() {
+  static_assert(check<Spec>());
   QueryInfo qi;
   qi.q = Query{Spec::id};
   qi.name = Spec::name;
@@ -286,6 +299,8 @@ QueryInfo describe() {
   qi.oracle_truth = oracle_truth_of<Spec>;
   qi.oracle_classify = oracle_classify_of<Spec>;
   qi.oracle_classify_block = oracle_classify_block_of<Spec>;
+  qi.staged_classify = staged_classify_of<Spec>;
+  qi.staged_truth = staged_truth_of<Spec>;
   if constexpr (is_cast<Spec>)
     qi.oracle_enter = [](const Inputs& in, bool* exact_used) {
       const oracle::Entry e = oracle_enter_of<Spec>(in, exact_used);

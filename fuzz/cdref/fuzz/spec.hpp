@@ -15,10 +15,12 @@
 //   robust(a, b), robust_pred(a, b), robust_decide(a, b)    the robust versions
 //   bare(a, b)                                the book's classification without its input
 //                                             checks (book::unchecked): the cost report's baseline
-//   oracle(a, b, Stage*)                      the exact classification (oracle::classify)
 //   oracle_enter(a, b, bool*)                 (casts with that path) the hit and lambda_enter
 //                                             alone, correctly rounded (oracle::enter)
 // and, where they exist:
+//   oracle(a, b, Stage*)                      a hand-written exact classification (oracle::classify):
+//                                             a fast path, tested against the generic staged
+//                                             path (without it, the staged path is the oracle)
 //   stable(a, b, w), stable_pred(a, b)        the stable tier (float/cdref/stable), F = float, double;
 //   stable_bare(a, b)                         its classification without input checks
 //   stage(Stage, a, b)                        one stage of the classification oracle alone
@@ -49,6 +51,7 @@
 
 #include <cdref/exact/rationals.hpp>
 #include <cdref/exact/long_double.hpp>
+#include <cdref/exact/staged.hpp>
 #include <cdref/fan.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/bounded2.hpp>
@@ -226,7 +229,7 @@ inline constexpr const char* sat_help =
 // rounded correctly to F).
 template <class F, class S>
 long double value(const S& x) {
-  if constexpr (std::is_same_v<S, oracle::Bounded2>) {
+  if constexpr (std::is_same_v<S, oracle::Bounded2> || std::is_same_v<S, oracle::Bounded>) {
     // the filter: certain, or it throws
     if constexpr (std::is_same_v<F, float>)
       return x.rounded_float();
@@ -325,6 +328,103 @@ template <class F, class S>
 void put(Answer& a, const Separation<S>& s, bool values) {
   a.cls = classification(s);
   if (values) a.v[0] = s.axis;
+}
+
+// ---- what a spec must have ----
+// check<Spec>() states the required members one by one, each with the message a contributor
+// reads when it is missing or has the wrong shape (describe<Spec>() calls it first, so a spec
+// that lacks one fails there, not deep inside the descriptor's machinery). The optional
+// members are listed in this file's header comment; each is detected where it is used.
+template <class Spec>
+consteval bool check() {
+  static_assert(requires { { Spec::id } -> std::convertible_to<int>; },
+                "a spec needs `static constexpr int id`: the next free id (fuzz/queries.cpp checks they are dense)");
+  static_assert(requires {
+    { Spec::name } -> std::convertible_to<const char*>;
+    { Spec::cls_name } -> std::convertible_to<const char*>;
+    { Spec::pred_name } -> std::convertible_to<const char*>;
+    { Spec::describe } -> std::convertible_to<const char*>;
+    { Spec::full_call } -> std::convertible_to<const char*>;
+    { Spec::answer_help } -> std::convertible_to<const char*>;
+  }, "a spec needs the names `name`, `cls_name`, `pred_name`, `describe`, `full_call` and `answer_help` "
+     "(static constexpr const char*)");
+  static_assert(requires { { Spec::book_is_truth } -> std::convertible_to<bool>; },
+                "a spec needs `static constexpr bool book_is_truth` (false: it provides truth() and truth_pred())");
+  static_assert(requires {
+    { Spec::inputs() } -> std::same_as<std::vector<std::string>>;
+    { Spec::outputs() } -> std::same_as<std::vector<Output>>;
+    { Spec::families() } -> std::same_as<std::vector<Family>>;
+  }, "a spec needs `static std::vector<std::string> inputs()`, `static std::vector<Output> outputs()` and "
+     "`static std::vector<Family> families()`");
+  static_assert(requires(const Inputs& in) {
+    Spec::template make<double>(in).first;
+    Spec::template make<double>(in).second;
+    Spec::template make<oracle::Bounded>(in).first;
+    Spec::template make<CGAL::Gmpq>(in).second;
+  }, "a spec needs `template <class T> static std::pair<A<T>, B<T>> make(const Inputs&)`: its two primitives "
+     "from a case's columns, at every number type");
+  if constexpr (requires(const Inputs& in) { Spec::template make<double>(in).first; }) {
+    using P = decltype(Spec::template make<double>(std::declval<const Inputs&>()));
+    static_assert(requires(const P& p) {
+      Spec::book(p.first, p.second, 0u);
+      { Spec::book_pred(p.first, p.second) } -> std::convertible_to<bool>;
+      { Spec::bare(p.first, p.second) } -> std::convertible_to<bool>;
+    }, "a spec needs the book: `book(a, b, unsigned want)` (the full query), `book_pred(a, b)` (the other "
+       "formulation of its classification) and `bare(a, b)` (book::unchecked), templates over the number type");
+    static_assert(requires(const P& p) {
+      classification(Spec::book(p.first, p.second, 0u));
+    }, "the book's result must be a Cast, TriangleCast, FanCast, Proximity, Separation, TriangleIntersection or "
+       "bool (spec.hpp: classification and put)");
+    static_assert(requires(const P& p) {
+      Spec::robust(p.first, p.second);
+      { Spec::robust_pred(p.first, p.second) } -> std::convertible_to<bool>;
+      { Spec::robust_decide(p.first, p.second) } -> std::same_as<robust::Decision>;
+    }, "a spec needs the robust tier: `robust(a, b)`, `robust_pred(a, b)` and `robust_decide(a, b)` "
+       "(a robust::Decision), templates over the float type");
+    if constexpr (!Spec::book_is_truth)
+      static_assert(requires(const P& p) {
+        Spec::truth(p.first, p.second, 0u);
+        { Spec::truth_pred(p.first, p.second) } -> std::convertible_to<bool>;
+      }, "a spec with book_is_truth = false needs `truth(a, b, w)` and `truth_pred(a, b)`: the exact formulation");
+  }
+  return true;
+}
+
+// ---- the classification oracle ----
+// A spec's own `oracle(a, b, Stage*)` (its hand-written filters: a fast path) where it has
+// one, else the generic staged path on its primitives (cdref/exact/staged.hpp): the truth's
+// formulation on a bounded double, a bounded double word, then CGAL::Gmpq. Either is exact;
+// where a spec has both, the tests check them equal on every family.
+template <class Spec>
+constexpr bool has_hand_oracle = requires(const Inputs& in, oracle::Stage* st) {
+  { Spec::oracle(Spec::template make<double>(in).first, Spec::template make<double>(in).second, st) }
+      -> std::convertible_to<bool>;
+};
+template <class Spec, class A, class B>
+bool staged_classification(const A& a, const B& b, staged::Stage* st) {
+  return staged::evaluate(
+      [&]<class T>(staged::at<T>) {
+        const auto x = rebind<T>(a);
+        const auto y = rebind<T>(b);
+        if constexpr (Spec::book_is_truth)
+          return classification(Spec::book(x, y, 0u));
+        else
+          return classification(Spec::truth(x, y, 0u));
+      },
+      st);
+}
+template <class Spec, class A, class B>
+bool oracle_of(const A& a, const B& b, oracle::Stage* st) {
+  if constexpr (has_hand_oracle<Spec>) {
+    return Spec::oracle(a, b, st);
+  } else {
+    staged::Stage s;
+    const bool r = staged_classification<Spec>(a, b, &s);
+    if (st) *st = s == staged::Stage::bounded ? oracle::Stage::filter
+                  : s == staged::Stage::word  ? oracle::Stage::expansion
+                                              : oracle::Stage::rational;
+    return r;
+  }
 }
 
 // ---- evaluations ----
@@ -555,7 +655,7 @@ oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
   } else {
     if (exact_used) *exact_used = false;
     oracle::Entry e;
-    e.hit = Spec::oracle(a, b, nullptr);
+    e.hit = oracle_of<Spec>(a, b, nullptr);
     if (!e.hit) return e;
     const auto enter_at = [&in]<class T>(T*) {
       const auto [x, y] = Spec::template make<T>(in);
@@ -581,7 +681,7 @@ Answer oracle_classify_of(const Inputs& in, bool* exact_used) {
   const auto [a, b] = Spec::template make<double>(in);
   oracle::Stage stage = oracle::Stage::filter;
   Answer r;
-  r.cls = r.pred = Spec::oracle(a, b, &stage);  // at exact types the two formulations agree (tested)
+  r.cls = r.pred = oracle_of<Spec>(a, b, &stage);  // at exact types the two formulations agree (tested)
   if (exact_used) *exact_used = stage != oracle::Stage::filter;
   return r;
 }
@@ -657,13 +757,53 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   return truth_of<Spec>(in, precision);
 }
 
+// ---- the generic staged path (cdref/exact/staged.hpp) ----
+// The truth's formulation (the book, unless the spec says otherwise) asked for no outputs, at
+// one number type: its classification.
+template <class Spec, class T>
+bool truth_classification_at(const Inputs& in) {
+  const auto [a, b] = Spec::template make<T>(in);
+  if constexpr (Spec::book_is_truth)
+    return classification(Spec::book(a, b, 0u));
+  else
+    return classification(Spec::truth(a, b, 0u));
+}
+// The exact classification from the truth's own code run through the stages (cls = pred).
+template <class Spec>
+Answer staged_classify_of(const Inputs& in, int* stage) {
+  require_finite<Spec, CGAL::Gmpq>(in);
+  staged::Stage st;
+  Answer r;
+  r.cls = r.pred =
+      staged::evaluate([&in]<class T>(staged::at<T>) { return truth_classification_at<Spec, T>(in); }, &st);
+  if (stage) *stage = int(st);
+  return r;
+}
+// Every output of the truth, rounded correctly to the precision, through the stages (from
+// the double word on for double and long double: the bounded double's few ulps seldom round
+// a value correctly to them).
+template <class Spec>
+Answer staged_truth_of(const Inputs& in, int precision, int* stage) {
+  require_finite<Spec, CGAL::Gmpq>(in);
+  staged::Stage st;
+  const auto run = [&]<class F>(F*) {
+    return staged::evaluate([&in]<class T>(staged::at<T>) { return truth_at<Spec, T, F>(in, true, true); }, &st,
+                            std::is_same_v<F, float> ? staged::Stage::bounded : staged::Stage::word);
+  };
+  const Answer r = precision == 24   ? run(static_cast<float*>(nullptr))
+                   : precision == 64 ? run(static_cast<long double*>(nullptr))
+                                     : run(static_cast<double*>(nullptr));
+  if (stage) *stage = int(st);
+  return r;
+}
+
 // ... over a block of cases, one Verdict per case (cls = pred).
 template <class Spec>
 void oracle_classify_block_of(const Inputs* in, std::size_t n, Verdict* out) {
   verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
     require_finite<Spec, CGAL::Gmpq>(x);
     const auto [a, b] = Spec::template make<double>(x);
-    v.cls = v.pred = Spec::oracle(a, b, nullptr);
+    v.cls = v.pred = oracle_of<Spec>(a, b, nullptr);
   });
 }
 

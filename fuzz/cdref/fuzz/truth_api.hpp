@@ -76,10 +76,10 @@ TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_use
   using R = TruthResult<Spec, F, A, B>;
   if (exact_used) *exact_used = false;
   if constexpr (std::is_same_v<R, bool>) {
-    return Spec::oracle(a, b, nullptr);  // a classification alone: the classification oracle
+    return oracle_of<Spec>(a, b, nullptr);  // a classification alone: the classification oracle
   }
   if constexpr (is_cast<Spec>) {
-    if (outputs_on_hit_alone<Spec>() && !Spec::oracle(a, b, nullptr)) return R{};
+    if (outputs_on_hit_alone<Spec>() && !oracle_of<Spec>(a, b, nullptr)) return R{};
   }
   if constexpr (has_oracle_rounded<Spec> && std::is_same_v<F, double>) {
     RobustResult<Spec> p;
