@@ -15,8 +15,9 @@ namespace {
 const std::vector<QueryInfo>& registry() {
   static const std::vector<QueryInfo> r = [] {
     std::vector<QueryInfo> all;
-    for (auto group : {sphere_queries, box_queries, sat_box_queries, obb_queries, triangle_queries, triangle_cast_queries,
-                       polygon_queries})
+#define CDREF_GROUP_FUNCTION(fn, list) fn,
+    for (auto group : {CDREF_QUERY_GROUPS(CDREF_GROUP_FUNCTION)})
+#undef CDREF_GROUP_FUNCTION
       for (QueryInfo& qi : group()) all.push_back(std::move(qi));
     std::sort(all.begin(), all.end(), [](const QueryInfo& a, const QueryInfo& b) { return a.q < b.q; });
     for (std::size_t i = 0; i < all.size(); ++i)

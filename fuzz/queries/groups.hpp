@@ -1,65 +1,57 @@
 // fuzz/queries/groups.hpp - the translation units that describe the queries, each a group of
 // specs (fuzz/queries/<query>.hpp) instantiated together to keep the exact types' compile
-// time in few units. The registry (fuzz/queries.cpp) orders them by id. Each group's specs are
-// listed once, below: the group describes them, and fuzz/queries/core_rows.cpp (the one unit of
-// the library that includes CORE) instantiates their CORE::Expr row of the cost report; a
-// spec's header is included by its group's file and by core_rows.cpp.
+// time in few units, and the one list of those groups.
+//
+// A group is a header, group_<name>.hpp, that includes its specs and lists them, one line a
+// query: X(spec, Result, name, A, B), the spec (in cdref::fuzz::queries), then its function of
+// <cdref/truth.hpp>: the result template, the book's name for it and its two primitives
+// (CDREF_TRUTH_FUNCTIONS, cdref/fuzz/truth_api.hpp); and a translation unit, <name>.cpp, that
+// includes that header and says CDREF_GROUP_UNIT(function, list). Adding a query to a group is
+// its spec and its two lines in the group's header: the group's unit describes it, the registry
+// (fuzz/queries.cpp) orders it by id, fuzz/queries/core_rows.cpp (the one unit of the library
+// that includes CORE) instantiates its CORE::Expr row of the cost report.
+//
+// What an edit recompiles: a spec's header (or an algorithm only its queries include), its
+// group's unit, core_rows.cpp and the test unit whose files include that spec to test its hand
+// filters directly (tests/test_oracle_classify.cpp, test_campaign.cpp, test_triangles.cpp); a
+// group's header, its unit and core_rows.cpp; this file, every group, the
+// registry and core_rows.cpp; cdref/fuzz/describe.hpp, spec.hpp, campaign.hpp or a header every
+// spec includes (cdref.hpp, results.hpp, the number types), every group and most of the library.
+// The groups are listed heaviest first (CMakeLists.txt lists their units in this order, so that
+// the longest compiles start first).
 #pragma once
 
 #include <cdref/fuzz/campaign.hpp>
 #include <vector>
 
+// G(function, list) for every group: the function that describes it and its list's macro.
+#define CDREF_QUERY_GROUPS(G)                          \
+  G(sphere_obb_queries, CDREF_SPHERE_OBB_QUERIES)      \
+  G(obb_queries, CDREF_OBB_QUERIES)                    \
+  G(obb_cast_queries, CDREF_OBB_CAST_QUERIES)          \
+  G(triangle_queries, CDREF_TRIANGLE_QUERIES)          \
+  G(polygon_queries, CDREF_POLYGON_QUERIES)            \
+  G(sphere_queries, CDREF_SPHERE_QUERIES)              \
+  G(sat_box_queries, CDREF_SAT_BOX_QUERIES)            \
+  G(triangle_cast_queries, CDREF_TRIANGLE_CAST_QUERIES) \
+  G(box_queries, CDREF_BOX_QUERIES)
+
 namespace cdref::fuzz {
 
-std::vector<QueryInfo> sphere_queries();  // fuzz/queries/spheres.cpp
-std::vector<QueryInfo> box_queries();     // fuzz/queries/boxes.cpp
-std::vector<QueryInfo> sat_box_queries();  // fuzz/queries/sat_boxes.cpp
-std::vector<QueryInfo> obb_queries();      // fuzz/queries/sat_obbs.cpp
-std::vector<QueryInfo> triangle_queries(); // fuzz/queries/triangles.cpp
-std::vector<QueryInfo> triangle_cast_queries();  // fuzz/queries/triangle_casts.cpp
-std::vector<QueryInfo> polygon_queries();        // fuzz/queries/polygons.cpp
+// each group's descriptors (fuzz/queries/<group>.cpp)
+#define CDREF_DECLARE_GROUP(fn, list) std::vector<QueryInfo> fn();
+CDREF_QUERY_GROUPS(CDREF_DECLARE_GROUP)
+#undef CDREF_DECLARE_GROUP
 
 }  // namespace cdref::fuzz
 
-// X(spec, Result, name, A, B) for every spec (in cdref::fuzz::queries) of each group, in the
-// group's order: the spec, then its function of <cdref/truth.hpp>: the result template, the
-// book's name for it and its two primitives (CDREF_TRUTH_FUNCTIONS, cdref/fuzz/truth_api.hpp)
-#define CDREF_SPHERE_QUERIES(X)                                  \
-  X(SphereSphere, Proximity, proximity, Sphere, Sphere)          \
-  X(SphereCast<false>, Cast, cast, Segment, Sphere)              \
-  X(SphereCast<true>, Cast, cast, Ray, Sphere)                   \
-  X(SegmentSphere, Proximity, proximity, Segment, Sphere)        \
-  X(SphereBox, Proximity, proximity, Sphere, Box)
-#define CDREF_BOX_QUERIES(X)                                     \
-  X(BoxBox, detail::Bool, intersect, Box, Box)                   \
-  X(BoxCast<false>, Cast, cast, Segment, Box)                    \
-  X(BoxCast<true>, Cast, cast, Ray, Box)
-#define CDREF_SAT_BOX_QUERIES(X)                                 \
-  X(SegmentBox<false>, Separation, separate, Segment, Box)       \
-  X(SegmentBox<true>, Separation, separate, Ray, Box)            \
-  X(TriangleBox, Separation, separate, Triangle, Box)
-#define CDREF_OBB_QUERIES(X)                                            \
-  X(ObbObb, Separation, separate, OrientedBox, OrientedBox)             \
-  X(ShapeObb<false>, Separation, separate, Segment, OrientedBox)        \
-  X(ShapeObb<true>, Separation, separate, Triangle, OrientedBox)        \
-  X(ObbCast<false>, Cast, cast, Segment, OrientedBox)                   \
-  X(ObbCast<true>, Cast, cast, Ray, OrientedBox)                        \
-  X(SphereObb, Proximity, proximity, Sphere, OrientedBox)
-#define CDREF_TRIANGLE_QUERIES(X)                                       \
-  X(SphereTriangle, Proximity, proximity, Sphere, Triangle)             \
-  X(TriangleTriangle, TriangleIntersection, intersect, Triangle, Triangle)
-#define CDREF_TRIANGLE_CAST_QUERIES(X)                                  \
-  X(TriangleCast<true>, TriangleCast, cast, Ray, Triangle)              \
-  X(TriangleCast<false>, TriangleCast, cast, Segment, Triangle)         \
-  X(FanCastQuery<true>, FanCast, cast, Ray, Fan)                        \
-  X(FanCastQuery<false>, FanCast, cast, Segment, Fan)
-#define CDREF_POLYGON_QUERIES(X)                                        \
-  X(PolygonCast<true>, Cast, cast, Ray, Polygon)                        \
-  X(PolygonCast<false>, Cast, cast, Segment, Polygon)                   \
-  X(PolygonPolygon, detail::Bool, intersect, Polygon, Polygon)          \
-  X(PolygonBox, detail::Bool, intersect, Polygon, Box)                  \
-  X(PolygonSphere, Proximity, proximity, Sphere, Polygon)
 // a group's descriptors, as the elements of a braced list, each with its truth API attached
 #define CDREF_DESCRIBE(S, ...) spec::describe_with_truth_api<queries::S>(),
 // a group's functions of <cdref/truth.hpp> (at file scope)
 #define CDREF_TRUTH(S, ...) CDREF_TRUTH_FUNCTIONS(S, __VA_ARGS__)
+// A group's translation unit: its functions of <cdref/truth.hpp> and its descriptors.
+#define CDREF_GROUP_UNIT(fn, list) \
+  list(CDREF_TRUTH)                \
+  namespace cdref::fuzz {          \
+  std::vector<QueryInfo> fn() { return {list(CDREF_DESCRIBE)}; } \
+  }

@@ -1,15 +1,9 @@
-// fuzz/queries/polygons.cpp - the descriptors of the Section 3.4 polygon queries: one of the few
-// translation units that instantiate the exact types.
+// fuzz/queries/polygons.cpp - the descriptors of the polygon queries (Section 3.4): one of the few
+// translation units that instantiate the exact types (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 
+#include "group_polygons.hpp"
 #include "groups.hpp"
-#include "polygons.hpp"
 
-CDREF_POLYGON_QUERIES(CDREF_TRUTH)
-
-namespace cdref::fuzz {
-
-std::vector<QueryInfo> polygon_queries() { return {CDREF_POLYGON_QUERIES(CDREF_DESCRIBE)}; }
-
-}  // namespace cdref::fuzz
+CDREF_GROUP_UNIT(polygon_queries, CDREF_POLYGON_QUERIES)

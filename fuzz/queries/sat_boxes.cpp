@@ -1,16 +1,9 @@
-// fuzz/queries/sat_boxes.cpp - the descriptors of the Section 3.3 queries on axis-aligned
-// boxes: one of the few translation units that instantiate the exact types.
+// fuzz/queries/sat_boxes.cpp - the descriptors of the separating-axis queries on axis-aligned boxes
+// (Section 3.3): one of the few translation units that instantiate the exact types (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 
+#include "group_sat_boxes.hpp"
 #include "groups.hpp"
-#include "segment_box.hpp"
-#include "triangle_box.hpp"
 
-CDREF_SAT_BOX_QUERIES(CDREF_TRUTH)
-
-namespace cdref::fuzz {
-
-std::vector<QueryInfo> sat_box_queries() { return {CDREF_SAT_BOX_QUERIES(CDREF_DESCRIBE)}; }
-
-}  // namespace cdref::fuzz
+CDREF_GROUP_UNIT(sat_box_queries, CDREF_SAT_BOX_QUERIES)

@@ -1,18 +1,10 @@
-// fuzz/queries/sat_obbs.cpp - the descriptors of the queries on oriented boxes: one of the few
-// translation units that instantiate the exact types.
+// fuzz/queries/sat_obbs.cpp - the descriptors of the separating-axis queries on oriented boxes
+// (Section 3.3): one of the few translation units that instantiate the exact types
+// (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 
+#include "group_sat_obbs.hpp"
 #include "groups.hpp"
-#include "obb_casts.hpp"
-#include "obb_obb.hpp"
-#include "shape_obb.hpp"
-#include "sphere_obb.hpp"
 
-CDREF_OBB_QUERIES(CDREF_TRUTH)
-
-namespace cdref::fuzz {
-
-std::vector<QueryInfo> obb_queries() { return {CDREF_OBB_QUERIES(CDREF_DESCRIBE)}; }
-
-}  // namespace cdref::fuzz
+CDREF_GROUP_UNIT(obb_queries, CDREF_OBB_QUERIES)

@@ -1,17 +1,10 @@
-// fuzz/queries/triangle_casts.cpp - the descriptors of the Section 3.4 casts on a triangle and on
-// a fan of triangles (mesh level): one
-// of the few translation units that instantiate the exact types.
+// fuzz/queries/triangle_casts.cpp - the descriptors of the casts on a triangle and on a fan of
+// triangles (Section 3.4): one of the few translation units that instantiate the exact types
+// (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 
+#include "group_triangle_casts.hpp"
 #include "groups.hpp"
-#include "fan_casts.hpp"
-#include "triangle_casts.hpp"
 
-CDREF_TRIANGLE_CAST_QUERIES(CDREF_TRUTH)
-
-namespace cdref::fuzz {
-
-std::vector<QueryInfo> triangle_cast_queries() { return {CDREF_TRIANGLE_CAST_QUERIES(CDREF_DESCRIBE)}; }
-
-}  // namespace cdref::fuzz
+CDREF_GROUP_UNIT(triangle_cast_queries, CDREF_TRIANGLE_CAST_QUERIES)

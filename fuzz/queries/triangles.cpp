@@ -1,16 +1,9 @@
-// fuzz/queries/triangles.cpp - the descriptors of the Section 3.4 queries: one of the few
-// translation units that instantiate the exact types.
+// fuzz/queries/triangles.cpp - the descriptors of sphere-triangle and triangle-triangle (Section
+// 3.4): one of the few translation units that instantiate the exact types (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 
+#include "group_triangles.hpp"
 #include "groups.hpp"
-#include "sphere_triangle.hpp"
-#include "triangle_triangle.hpp"
 
-CDREF_TRIANGLE_QUERIES(CDREF_TRUTH)
-
-namespace cdref::fuzz {
-
-std::vector<QueryInfo> triangle_queries() { return {CDREF_TRIANGLE_QUERIES(CDREF_DESCRIBE)}; }
-
-}  // namespace cdref::fuzz
+CDREF_GROUP_UNIT(triangle_queries, CDREF_TRIANGLE_QUERIES)

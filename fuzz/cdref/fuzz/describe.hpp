@@ -1,7 +1,7 @@
 // cdref/fuzz/describe.hpp - describe<Spec>(): a query's spec (see spec.hpp) as its
 // type-erased descriptor, with every instantiation the campaign, the case files, the fuzz
 // checks and the cost report need. Included only by the few translation units that list
-// the queries (fuzz/queries_*.cpp): each instantiation of the exact types costs compile time.
+// the queries (fuzz/queries/*.cpp): each instantiation of the exact types costs compile time.
 #pragma once
 
 #include <cdref/exact/cgal_kernels.hpp>

@@ -36,8 +36,9 @@
 //   oracle_rounded(a, b, result)              (at double) true where the robust result is proven
 //                                             correctly rounded in every output
 //
-// Registration: one X(Spec, Result, fn, A, B) line in its group's list (fuzz/queries/groups.hpp)
-// and the spec's header included by the group's translation unit. What the tests hold every
+// Registration: the spec's header included, and one X(Spec, Result, fn, A, B) line in its group's
+// list, both in the group's header (fuzz/queries/group_<name>.hpp; groups.hpp says what an edit
+// recompiles). check<Spec>() below states the required members. What the tests hold every
 // query to, beyond agreement with the exact answer on every family: the classification oracle
 // decides at least 99% of uniform cases at Stage::filter (tests/test_oracle_classify.cpp), the
 // robust tier is certain on at least 99% of them (tests/test_campaign.cpp), and the campaign's

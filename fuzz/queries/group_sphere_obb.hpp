@@ -1,0 +1,10 @@
+// fuzz/queries/group_sphere_obb.hpp - the group of sphere-obb (Section 3.3), alone: its
+// instantiations are the heaviest of any query (about as much compile time as the three other
+// oriented-box separating-axis queries together), so it compiles beside them. Its spec and its
+// list, one X(spec, Result, name, A, B) line a query (groups.hpp says what the fields are);
+// sphere_obb.cpp describes the group and core_rows.cpp gives each query its CORE::Expr row.
+#pragma once
+
+#include "sphere_obb.hpp"
+
+#define CDREF_SPHERE_OBB_QUERIES(X) X(SphereObb, Proximity, proximity, Sphere, OrientedBox)
