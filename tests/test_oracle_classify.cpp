@@ -11,7 +11,7 @@
 #include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/sphere_triangle.hpp>
 #include <cdref/oracle/triangle_triangle.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 
 #include "queries/box_casts.hpp"
 #include "queries/segment_box.hpp"
@@ -25,8 +25,8 @@
 #include "queries/triangle_casts.hpp"
 #include "queries/sphere_triangle.hpp"
 #include "queries/triangle_triangle.hpp"
-#include <cdref/oracle/sat_grid.hpp>
-#include <cdref/oracle/sat_words.hpp>
+#include <cdref/filter/sat_grid.hpp>
+#include <cdref/filter/sat_words.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <algorithm>
@@ -144,7 +144,7 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
 TEST_CASE("the sphere filter's sign of sigma at range near tangency equals the exact one", "[oracle-classify]") {
   // Shots tangent to the sphere from 10^4 to 10^12 radii away, 10,000 a scale: there the crude
   // bound on sigma's error (|s|^2 |r|^2) declines and the Cauchy-Schwarz bound or the finer one
-  // decides (float/cdref/oracle/sphere_filter.hpp). Every sign the filter gives is the rational
+  // decides (float/cdref/filter/sphere_filter.hpp). Every sign the filter gives is the rational
   // stage's. Both bounds decide most cases at 10^4 and 10^5 radii and few beyond 10^7 (the band
   // they leave is about u |s| wide), so the cells hold decisions in both regimes; a bound left
   // six times too small decided some of them wrongly.
@@ -973,7 +973,7 @@ TEST_CASE("the oriented-box casts' double words decide as the solid at Gmpq, and
 
 namespace {
 // Every (entering, exiting) plane pair of Algorithm 3.3 that the box casts' second stage compares
-// (hit_box_logic's), on double words (oracle/word_bounds.hpp, AabbWords) against the exact
+// (hit_box_logic's), on double words (bounded/word_bounds.hpp, AabbWords) against the exact
 // expansions (classify.hpp, BoxExact) on the same scaled inputs.
 template <bool Ray>
 void aabb_pairs_on_every_family(std::uint64_t& decided, std::uint64_t& left, std::uint64_t& near_decided) {
@@ -1025,7 +1025,7 @@ void aabb_pairs_on_every_family(std::uint64_t& decided, std::uint64_t& left, std
 }  // namespace
 
 namespace {
-// The box casts' signs on double words alone (oracle/word_bounds.hpp, aabb_cast_words: the robust
+// The box casts' signs on double words alone (bounded/word_bounds.hpp, aabb_cast_words: the robust
 // tier's certified decision runs it after the first stage): wherever it decides, the book's hit at
 // CGAL::Gmpq, and the robust decision is certain and agrees.
 template <bool Ray>
@@ -1084,7 +1084,7 @@ namespace {
 struct OpenAxesCounts {
   std::uint64_t left = 0, decided = 0, near_left = 0, near_decided = 0;
 };
-// The axes the first stage leaves open, on double words alone (oracle/sat_words.hpp): wherever
+// The axes the first stage leaves open, on double words alone (filter/sat_words.hpp): wherever
 // they decide, the solid's answer at CGAL::Gmpq; the robust tier's certified decision agrees.
 template <class Q>
 void open_axes_on_every_family(OpenAxesCounts& c) {
@@ -1117,7 +1117,7 @@ void open_axes_on_every_family(OpenAxesCounts& c) {
 }  // namespace
 
 namespace {
-// Every axis's s1 = lo - r_B and s2 = -r_B - hi on double words (oracle/sat_words.hpp) against the
+// Every axis's s1 = lo - r_B and s2 = -r_B - hi on double words (filter/sat_words.hpp) against the
 // same expressions at CGAL::Gmpq on the same exact pairs: each word within its bound.
 using Qn = CGAL::Gmpq;
 Qn qpair(const robust::Pair<double>& p) { return Qn(p.hi) + Qn(p.lo); }
@@ -1209,7 +1209,7 @@ namespace {
 struct FaceCounts {
   std::uint64_t decided = 0, open_cases = 0, axes_checked = 0, words_decided = 0, near_open = 0, near_decided = 0;
 };
-// Theorem 3.1 in B's face coordinates (oracle/sat_filter.hpp, filter_face_coordinates): wherever it
+// Theorem 3.1 in B's face coordinates (filter/sat_filter.hpp, filter_face_coordinates): wherever it
 // decides, the solid's answer at CGAL::Gmpq; where it leaves axes open, every other axis has exact
 // s1, s2 < 0 in the world coordinates the double words use (the oracle and the robust tier take
 // the open axes straight to the words: robust/separating_axes.hpp, stages_before_whole), and the
@@ -1751,7 +1751,7 @@ void orientation_words_on_families(std::uint64_t& left, std::uint64_t& decided, 
 
 TEST_CASE("two polygons: the pairs' first stage with its open plane signs on double words decides as the union at Gmpq",
           "[oracle-classify][triangle]") {
-  // oracle/triangle_words.hpp, polygon_on_words: wherever it decides, the union of the fan pairs'
+  // filter/triangle_words.hpp, polygon_on_words: wherever it decides, the union of the fan pairs'
   // answers at CGAL::Gmpq, the robust decision certain and equal, and everything the static
   // bounds alone decide (polygon_filter), with the same answer.
   using Q = queries::PolygonPolygon;
@@ -2822,7 +2822,7 @@ TEST_CASE("the box casts' separating axes filter alone equals the truth wherever
 TEST_CASE("the sphere filter's sigma decides only with the exact sign, its cruder bound near its edge",
           "[oracle-classify][sphere-cast]") {
   // sigma = |r|^2 rho^2 - |s x r|^2 is decided first against 23u |s|^2 |r|^2, then against the
-  // bound by components (oracle/sphere_filter.hpp). Lines placed so that |sigma| is 2^-10 to
+  // bound by components (filter/sphere_filter.hpp). Lines placed so that |sigma| is 2^-10 to
   // 2^6 times u |s|^2 |r|^2 (log-uniform, either sign: the rounding errors of the computed
   // sigma are of that order, so a bound too small gets signs wrong), the source 1 to 2^24
   // radii from the centre (beyond, sigma cannot reach the band): wherever sigma() decides,

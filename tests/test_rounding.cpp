@@ -13,7 +13,7 @@
 
 #include <gmpxx.h>
 
-#include <cdref/oracle/bounded2.hpp>
+#include <cdref/bounded/bounded2.hpp>
 #include <cdref/exact/gmp_pool.hpp>
 
 #include "support.hpp"

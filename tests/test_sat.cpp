@@ -382,7 +382,7 @@ TEST_CASE("with exactly orthonormal frames the book's oriented-box tests are the
 }
 
 TEST_CASE("the oriented box's slab filter is the solid's answer wherever it decides", "[sat][obb][oracle]") {
-  // The first stage for a segment or a ray and an oriented box (oracle/box_cast_filter.hpp:
+  // The first stage for a segment or a ray and an oriented box (filter/box_cast_filter.hpp:
   // Algorithm 3.3 in face coordinates, static bounds) against Theorem 3.1 on the polytopes at
   // CGAL::Gmpq, on shots aimed at a face, an edge or a corner to within 2^-k of an extent (k up
   // to 60: the exact boundary and both sides of it), from near and from 10^12 away, on
@@ -453,7 +453,7 @@ TEST_CASE("the oriented box's slab filter is the solid's answer wherever it deci
 
 TEST_CASE("two oriented boxes: the face-coordinate filter is the solid's answer wherever it decides",
           "[sat][obb][oracle]") {
-  // oracle/sat_filter.hpp's first stage for two oriented boxes (Theorem 3.1 in A's face
+  // filter/sat_filter.hpp's first stage for two oriented boxes (Theorem 3.1 in A's face
   // coordinates, static bounds) against Theorem 3.1 on the polytopes at CGAL::Gmpq: rotated,
   // sheared and scaled frames, B placed along a random direction from just inside to just
   // outside contact (a distance found in double, then moved by 2^-k), near and 10^12 away.

@@ -72,6 +72,11 @@ P<T> rebind(const P<U>& p) {
   return out;
 }
 
+/// A point over T (a Vec3 as a query's argument), each coordinate converted by T(x).
+template <class T, class U>
+Vec3<T> rebind(const Vec3<U>& p) {
+  return Vec3<T>(T(p[0]), T(p[1]), T(p[2]));
+}
 /// A polygon over T: its n vertices converted, the unused ones zero (they may hold anything).
 template <class T, class U>
 Polygon<T> rebind(const Polygon<U>& p) {

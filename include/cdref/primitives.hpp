@@ -141,8 +141,8 @@ template <class T>
 [[noreturn, gnu::cold, gnu::noinline]] void not_finite(const Vec3<T>& v, const char* name, const char* field) {
   int i = 0;
   while (i < 2 && number_traits<T>::is_finite(v[i])) ++i;
-  throw invalid_input(std::string(name) + " " + field + " has a non-finite " + axis_name(i) + " coordinate (" +
-                      show(v[i]) + ")");
+  throw invalid_input(std::string(name) + (*field ? " " : "") + field + " has a non-finite " + axis_name(i) +
+                      " coordinate (" + show(v[i]) + ")");
 }
 template <class T>
 [[noreturn, gnu::cold, gnu::noinline]] void negative(const T& x, const char* name, const char* what) {
@@ -221,6 +221,12 @@ void check(const Ray<T>& r, const char* name = "ray") {
   detail::check_finite(r.direction, name, "direction");
   if (r.direction[0] == T(0) && r.direction[1] == T(0) && r.direction[2] == T(0)) [[unlikely]]
     detail::fail(name, "direction is the zero vector");
+}
+
+/// A point (a Vec3 as a query's argument): finite.
+template <class T>
+void check(const Vec3<T>& p, const char* name = "point") {
+  detail::check_finite(p, name, "");  // "point has a non-finite x coordinate (nan)"
 }
 
 template <class T>

@@ -85,11 +85,11 @@
 
 #include <cdref/cdref.hpp>
 #include <cdref/exact/rationals.hpp>
-#include <cdref/oracle/box_cast_filter.hpp>
-#include <cdref/oracle/sphere_filter.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/filter/sphere_filter.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
 #include <cdref/robust/sphere_box.hpp>
@@ -100,8 +100,8 @@ namespace cdref::oracle {
 
 namespace staged {
 
-// (unknown, u, in_range and fsign: oracle/box_cast_filter.hpp; le0, ge0, SphereFilter,
-// hit_sphere_logic and segment_sphere_logic: oracle/sphere_filter.hpp)
+// (unknown, u, in_range and fsign: filter/box_cast_filter.hpp; le0, ge0, SphereFilter,
+// hit_sphere_logic and segment_sphere_logic: filter/sphere_filter.hpp)
 
 // ---- stage 2: expansions ----
 template <int N>
@@ -364,7 +364,7 @@ inline int expansion(const Sphere<double>& a0, const Sphere<double>& b0) {
 }
 
 // ======================= ray / segment on a sphere =======================
-// The filter (SphereFilter) and the two algorithms' logic over signs: oracle/sphere_filter.hpp.
+// The filter (SphereFilter) and the two algorithms' logic over signs: filter/sphere_filter.hpp.
 
 // Exact signs of the same polynomials (inputs already scaled into stage 2's range).
 struct SphereExact {
@@ -662,7 +662,7 @@ inline int expansion(const Box<double>& a0, const Box<double>& b0) {
 }
 
 // ======================= ray / segment on a box =======================
-// Stage 1 (outcodes and the plane pairs in double): oracle/box_cast_filter.hpp, which the robust
+// Stage 1 (outcodes and the plane pairs in double): filter/box_cast_filter.hpp, which the robust
 // tier runs first too. Stage 2 below: the same logic on exact signs.
 struct BoxExact {
   const Vec3<double> &src, &rt;
@@ -705,7 +705,7 @@ struct BoxExact {
     return sign(c);
   }
 };
-// The filter's signs, the plane pairs on double words (oracle/word_bounds.hpp, AabbWords), then
+// The filter's signs, the plane pairs on double words (bounded/word_bounds.hpp, AabbWords), then
 // the expansions. (The pairs on words: 2^-52 from grazing, a cast the filter left took about 500
 // ns a case, nine exact pairs at most, each a product of expansions.)
 template <class Mul>
@@ -745,7 +745,7 @@ inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
 }
 
 // ======================= sphere-box =======================
-// The filter: oracle/sphere_filter.hpp.
+// The filter: filter/sphere_filter.hpp.
 inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
   Sphere<double> sp;
   Box<double> box;
@@ -965,7 +965,7 @@ bool run(Stage* used, int filtered, const A& a, const B& b, Tag... tag) {
 // in range), is tested before the filter (a NaN fails that test too). Every input the filter
 // leaves undecided, and every bad one, takes the checks (cdref::invalid_input naming what is
 // wrong, the same message as before) and then all the stages, out of line.
-// (signs_valid(Box) and direction_valid: oracle/box_cast_filter.hpp)
+// (signs_valid(Box) and direction_valid: filter/box_cast_filter.hpp)
 inline bool signs_valid(const Sphere<double>& s) { return s.radius >= 0; }
 inline bool signs_valid(const Segment<double>&) { return true; }
 inline bool signs_valid(const Ray<double>&) { return true; }  // a zero direction: sigma's range test

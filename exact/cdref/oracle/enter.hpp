@@ -132,7 +132,7 @@
 // linear in l: plane_parameter with the offset -+H_i. Rounding is monotone, so the largest of
 // the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
 // at most 2^200 (H_i is of degree 4).
-// First, though, the entering face alone (oracle/obb_face.hpp: the classification's filter,
+// First, though, the entering face alone (filter/obb_face.hpp: the classification's filter,
 // kept, picks it from its certain signs, and that face's parameter alone on double words, about
 // 18 exact products instead of some 60 for three faces). Where the filter cannot tell (two
 // faces entered at nearly the same parameter, an outcode near 0) or the face's rounding is
@@ -141,14 +141,14 @@
 // Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
 #pragma once
 
-#include <cdref/oracle/bounded2.hpp>
+#include <cdref/bounded/bounded2.hpp>
 #include <cdref/oracle/classify.hpp>
-#include <cdref/oracle/obb_face.hpp>
+#include <cdref/filter/obb_face.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cmath>
 #include <limits>
@@ -552,7 +552,7 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
   return plane_parameter<Mul>(sc, d, n, U, lower < 0 ? H : negated(H));
 }
 
-// The entering face's parameter alone (oracle/obb_face.hpp), rounded; nothing where D's sign or
+// The entering face's parameter alone (filter/obb_face.hpp), rounded; nothing where D's sign or
 // the rounding is uncertain.
 template <class Mul>
 std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],

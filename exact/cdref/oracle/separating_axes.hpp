@@ -12,7 +12,7 @@
 //                (two oriented boxes, a triangle and a box) Theorem 3.1 in B's face
 //                coordinates first (sat_filter.hpp, filter_face_coordinates);
 //                (sphere) a point of the box and a direction, each a certificate with a
-//                static bound (oracle/sat_filter.hpp, with their derivations: the robust
+//                static bound (filter/sat_filter.hpp, with their derivations: the robust
 //                tier's certified decisions run them first too);
 //   2. double word  (a segment or a ray and an oriented box) Algorithm 3.3 in the box's face
 //                coordinates on double words, then the solid's cast decision on them; the axes
@@ -36,11 +36,11 @@
 
 #include <cdref/cdref.hpp>
 #include <cdref/exact/rationals.hpp>
-#include <cdref/oracle/bounded.hpp>
+#include <cdref/bounded/bounded.hpp>
 #include <cdref/oracle/classify.hpp>
 #include <cdref/oracle/rational.hpp>
-#include <cdref/oracle/sat_filter.hpp>
-#include <cdref/oracle/sat_words.hpp>
+#include <cdref/filter/sat_filter.hpp>
+#include <cdref/filter/sat_words.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cmath>
@@ -143,7 +143,7 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 
 // ---- a sphere and an oriented box ----
 namespace sphere_obb {
-// (as_axis_aligned: oracle/sat_filter.hpp)
+// (as_axis_aligned: filter/sat_filter.hpp)
 // Stage 2: an axis-aligned box takes sphere-box's second stage and then its exact sign on
 // expansions (classify.hpp: unknown only out of its scaled range); any other box the two
 // certificates on double words, then the robust tier's evaluation of the whole formulation.

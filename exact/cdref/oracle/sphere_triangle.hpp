@@ -3,9 +3,9 @@
 // CGAL::Gmpq, in three stages.
 //
 //   1. filter    two certificates from one point of the triangle in double with static
-//                error bounds (oracle/triangle_filter.hpp derives them; the robust
+//                error bounds (filter/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
-//   2. double word  stage 1's two certificates on double words (oracle/triangle_words.hpp: a
+//   2. double word  stage 1's two certificates on double words (filter/triangle_words.hpp: a
 //                sphere 2^-52 from tangency), then the robust version's evaluation
 //                (robust/sphere_triangle.hpp), certain when every decisive comparison is
 //                (Stage::expansion names this stage here);
@@ -16,8 +16,8 @@
 #include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/oracle/triangle_filter.hpp>
-#include <cdref/oracle/triangle_words.hpp>
+#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/filter/triangle_words.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
 #include <cmath>
 

@@ -28,7 +28,7 @@
 #pragma once
 
 #include <algorithm>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>

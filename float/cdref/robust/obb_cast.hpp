@@ -13,11 +13,11 @@
 //     face_parameter's hold there. A segment's parameters do not change, a ray's are multiplied
 //     by 2^(k - j) (lengths scaled by 2^-k, its direction by 2^-j), the point by 2^k; where a
 //     value scaled back leaves the normal range, or a scaled input would, the slower path.
-//  1. The classification: the cast filter (oracle/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
+//  1. The classification: the cast filter (filter/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
 //     in the box's unturned face coordinates with static bounds, tightened once). Where it
 //     decides, it is the solid's classification at an exact type; a miss has no values (every
 //     output 0, as the solid's cast leaves them). Undecided: the slower path.
-//  2. The faces (oracle/obb_face.hpp, crossed_face): the entering one from the source's certain
+//  2. The faces (filter/obb_face.hpp, crossed_face): the entering one from the source's certain
 //     outcodes and the filter's certain order of the entering planes' parameters; the exiting
 //     one likewise (a segment: from its target's outcodes; a ray: from its direction's signs).
 //     None entered: the source lies in the box, lambda_enter = 0, the point is the source and the
@@ -49,8 +49,8 @@
 // filter refuses NaN and infinities (its range tests fail), which the input checks name first.
 #pragma once
 
-#include <cdref/oracle/box_cast_filter.hpp>
-#include <cdref/oracle/obb_face.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/filter/obb_face.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>

@@ -213,7 +213,7 @@ Decision decide(const Polygon<F>& a, const Polygon<F>& b) {
   check(a, "polygon A");
   check(b, "polygon B");
   // at double the pairs' first stage at once, the plane signs its static bound cannot tell on
-  // double words (oracle/triangle_words.hpp, polygon_on_words): where it decides, its answer is
+  // double words (filter/triangle_words.hpp, polygon_on_words): where it decides, its answer is
   // the union's exact one
   if constexpr (std::is_same_v<F, double>)
     if (const int f = oracle::triangle_triangle::polygon_on_words(a, b); f != oracle::triangle_triangle::unknown)

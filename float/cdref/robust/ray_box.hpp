@@ -128,11 +128,11 @@
 //     enters = false, lambda_enter = 0) is returned exactly.
 //     The normal is the book's unit vector of the entering face.
 //
-// At double the oracle's first stage runs first (oracle/box_cast_filter.hpp: the outcodes and
+// At double the oracle's first stage runs first (filter/box_cast_filter.hpp: the outcodes and
 // the plane pairs in double against static bounds): where it decides, decide(), hit() and the
 // cast's classification take its answer, the book's at an exact type (the steps above give
 // the same wherever they are certain); the cast still computes its values by the steps above.
-// Where it cannot decide, the same signs on double words come next (oracle/word_bounds.hpp,
+// Where it cannot decide, the same signs on double words come next (bounded/word_bounds.hpp,
 // aabb_cast_words: certain except at exact zeros), before the steps above.
 //
 // decide(): value = the classification above; certain == false iff some comparison of
@@ -144,8 +144,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cdref/oracle/box_cast_filter.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
@@ -478,7 +478,7 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
   return out;
 }
 
-// At double, the oracle's first stage (oracle/box_cast_filter.hpp: the outcodes and the plane
+// At double, the oracle's first stage (filter/box_cast_filter.hpp: the outcodes and the plane
 // pairs in double against static bounds) before the steps above: 1 (a hit), 0 (a miss) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it (decide(), hit() and the cast classify alike).
@@ -494,7 +494,7 @@ int first_stage(const Ray<F>& ray, const Box<F>& box) {
 }
 
 // At double, where the first stage cannot decide: Algorithm 3.3's signs on double words
-// (oracle/word_bounds.hpp, aabb_cast_words), certain except at exact zeros, before the steps
+// (bounded/word_bounds.hpp, aabb_cast_words), certain except at exact zeros, before the steps
 // above (2^-52 from grazing they take a few hundred nanoseconds where the steps above take
 // several times that). Where it decides, its answer is the book's at an exact type.
 template <class F, class Shot>

@@ -13,7 +13,7 @@
 //     deg its degree in lengths (a triangle's normal 2, an edge of a segment or a triangle 1, a
 //     ray's direction j/k, a box's axes 0). Where a value scaled back leaves the normal range,
 //     or a scaled input would: the slower path.
-//  1. The classification and the axis: oracle/sat_filter.hpp's filter, every candidate axis in
+//  1. The classification and the axis: filter/sat_filter.hpp's filter, every candidate axis in
 //     the book's order (A's faces, B's faces, A's edges x B's edges, an exactly zero axis
 //     counted and skipped as the book does) against one static bound. Where it decides, the
 //     classification is the book's (the solid's) at an exact type; where they are apart and
@@ -34,8 +34,8 @@
 // (it refuses NaN and infinities, which the input checks name first).
 #pragma once
 
-#include <cdref/oracle/sat_filter.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/sat_filter.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>

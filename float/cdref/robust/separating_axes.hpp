@@ -16,17 +16,17 @@
 // it certifies the classification and the first separating axis, with that axis's direction
 // proven within 3/4 of an ulp (sat_first_look.hpp), before the grids and the double words below.
 // Certificate: at double every entry point first runs the oracle's first stage
-// (oracle/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
+// (filter/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
 // solid's at an exact type; decide_separation(), the predicate and the full query all take it.
 // (For a segment or a ray and an oriented box that stage is Algorithm 3.3 in the box's face
 // coordinates, and after it the solid's cast decision on double words comes before the axes:
 // has_cast_decision below; for two oriented boxes and for a triangle and a box, Theorem 3.1 in
 // B's face coordinates first.) Where the first stage leaves a few axes open (every other axis
 // certainly not separating), those axes alone on double words with rigorous bounds come next
-// (oracle/sat_words.hpp): where they decide, the classification is the solid's at an exact type
+// (filter/sat_words.hpp): where they decide, the classification is the solid's at an exact type
 // too. The order of these stages is stages_before_whole below, shared with the oracle.
 // A triangle, a segment or a ray and an axis-aligned box at float and double are first evaluated
-// exactly, the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp):
+// exactly, the inputs read as integers on a grid per coordinate axis (filter/sat_grid.hpp):
 // where the inputs fit the grids (sat_grid.hpp: all but a triangle's vertex far from a small
 // box, or a ray's direction whose components' grids lie far apart), the full query's classification, first separating axis and direction are the
 // book's at an exact type (the direction rounded once), zero-area triangles and flat boxes
@@ -67,10 +67,10 @@
 // the full query's values come from F and its classification is the certain one.
 #pragma once
 
-#include <cdref/oracle/sat_filter.hpp>
-#include <cdref/oracle/sat_grid.hpp>
-#include <cdref/oracle/sat_words.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/sat_filter.hpp>
+#include <cdref/filter/sat_grid.hpp>
+#include <cdref/filter/sat_words.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/solid/obb.hpp>
 #include <bit>
 #include <type_traits>
@@ -129,12 +129,12 @@ std::pair<Separation<F>, bool> separation(const A& a, const B& b) {
 }  // namespace detail
 
 namespace detail {
-// At double, the oracle's first stage (oracle/sat_filter.hpp: every candidate axis in double
+// At double, the oracle's first stage (filter/sat_filter.hpp: every candidate axis in double
 // against one static bound; for a sphere, two certificates from a point of the box) before the
 // double words: 1 (they meet), 0 (disjoint) or 2 (undecided; always at float and long double).
 // Where it decides, its answer is the solid's at an exact type, so every entry point takes it
 // (decide(), the predicate and the full query's classification stay alike).
-// `open` (at double): the axes it left open (oracle/sat_filter.hpp). The certified decisions take
+// `open` (at double): the axes it left open (filter/sat_filter.hpp). The certified decisions take
 // stages_before_whole below instead, which puts the double words of what the cheapest filter
 // leaves open before the rest of the filters.
 template <class F, class A, class B>
@@ -190,7 +190,7 @@ template <class A, class B, class F>
 inline constexpr bool has_cast_decision =
     (std::is_same_v<A, Segment<F>> || std::is_same_v<A, Ray<F>>) && std::is_same_v<B, OrientedBox<F>>;
 // At double, Algorithm 3.3 in the box's face coordinates on bounded double words first
-// (oracle/word_bounds.hpp: tens of nanoseconds where the solid's cast on Bounded2 takes two
+// (bounded/word_bounds.hpp: tens of nanoseconds where the solid's cast on Bounded2 takes two
 // microseconds), then the solid's cast on double words where those leave the case open.
 template <class A, class B>
 std::optional<bool> cast_decision_on_words(const A& a, const B& b) {
@@ -200,7 +200,7 @@ std::optional<bool> cast_decision_on_words(const A& a, const B& b) {
 }
 
 // Two oriented boxes, a triangle and a box (axis-aligned or oriented): Theorem 3.1 in B's face
-// coordinates first (oracle/sat_filter.hpp, filter_face_coordinates).
+// coordinates first (filter/sat_filter.hpp, filter_face_coordinates).
 template <class A, class B>
 inline constexpr bool has_face_coordinates =
     (std::is_same_v<B, OrientedBox<double>> && (std::is_same_v<A, OrientedBox<double>> || std::is_same_v<A, Triangle<double>>)) ||
@@ -266,7 +266,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
       if (const int f = oracle::sat::filter_face_coordinates(a, b, &open); f != unknown) return f;
       if (const int f = scaled_filters(a, b); f != unknown) return f;
       // (a triangle and a box) more than one axis open, or none named (a degenerate triangle
-      // ties several): the exact evaluation on a grid (oracle/sat_grid.hpp), about 145 ns, where
+      // ties several): the exact evaluation on a grid (filter/sat_grid.hpp), about 145 ns, where
       // the double words of each open axis took 1,000 ns a case on the degenerate family and
       // left 78% of it open (standalone loop, 2026-11-29); one open axis (a vertex near a face)
       // costs less on words
@@ -293,7 +293,7 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
 }
 
 // A triangle, a segment or a ray and a box at float or double: the book's 13 or 6 axes exactly
-// on the inputs read as integers on a grid per coordinate axis (oracle/sat_grid.hpp): whether
+// on the inputs read as integers on a grid per coordinate axis (filter/sat_grid.hpp): whether
 // they meet, the first separating axis and its direction rounded once, as the book gives them at
 // an exact type.
 // false where the inputs lie on no grid narrow enough (sat_grid.hpp), where a direction

@@ -59,7 +59,7 @@
 //     refused the witnesses of 16 of 300 cases before).
 #pragma once
 
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 

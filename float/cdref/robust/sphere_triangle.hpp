@@ -1,7 +1,7 @@
 // cdref/robust/sphere_triangle.hpp - the robust sphere-triangle query (Section 3.4) at float,
 // double and long double: proximity, intersect and decide.
 //
-// At double the oracle's first stage runs first (oracle/triangle_filter.hpp: two certificates
+// At double the oracle's first stage runs first (filter/triangle_filter.hpp: two certificates
 // from one point of the triangle, static error bounds): where it decides, the classification
 // is exact and certain, and decide() returns at once.
 //
@@ -72,8 +72,8 @@
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
-#include <cdref/oracle/triangle_filter.hpp>
-#include <cdref/oracle/triangle_words.hpp>
+#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/filter/triangle_words.hpp>
 
 #include "first_look.hpp"
 #include "rational.hpp"
@@ -84,9 +84,9 @@ namespace cdref::robust {
 
 namespace detail {
 
-// The oracle's first stage (oracle/triangle_filter.hpp: two certificates from one point of the
+// The oracle's first stage (filter/triangle_filter.hpp: two certificates from one point of the
 // triangle, static bounds), then the same two certificates on double words
-// (oracle/triangle_words.hpp): 1 (they meet), 0 (disjoint) or 2 (undecided).
+// (filter/triangle_words.hpp): 1 (they meet), 0 (disjoint) or 2 (undecided).
 inline int sphere_triangle_certificates(const Sphere<double>& s, const Triangle<double>& t) {
   const int f = oracle::sphere_triangle::filter(s, t);
   return f != oracle::sphere_triangle::unknown ? f : oracle::sphere_triangle::certificates_on_words(s, t);

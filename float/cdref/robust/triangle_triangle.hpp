@@ -1,12 +1,12 @@
 // cdref/robust/triangle_triangle.hpp - the robust triangle-triangle test (Section 3.4) at float,
 // double and long double: intersect, the intersection segment, and decide.
 //
-// At double the oracle's first stage runs first (oracle/triangle_filter.hpp: a separating
+// At double the oracle's first stage runs first (filter/triangle_filter.hpp: a separating
 // plane, then the six edge-triangle casts, static error bounds): where it decides, the
 // classification is exact and certain, and disjoint triangles return at once.
 //
 // At float and double, next, a plane that separates them or a coplanar pair whole, exactly on
-// the inputs read as integers on a grid per coordinate axis (oracle/triangle_grid.hpp): the
+// the inputs read as integers on a grid per coordinate axis (filter/triangle_grid.hpp): the
 // book's answer, classification, `coplanar` and p = q = 0 alike.
 //
 // Formulation: the book's (book/triangle_triangle.hpp: Moller's interval test with exact zero
@@ -25,9 +25,9 @@
 #pragma once
 
 #include <cdref/book/triangle_triangle.hpp>
-#include <cdref/oracle/triangle_filter.hpp>
-#include <cdref/oracle/triangle_grid.hpp>
-#include <cdref/oracle/triangle_words.hpp>
+#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/filter/triangle_grid.hpp>
+#include <cdref/filter/triangle_words.hpp>
 
 #include "words.hpp"
 
@@ -35,13 +35,13 @@ namespace cdref::robust {
 
 namespace detail {
 
-// At double, the oracle's first stage (oracle/triangle_filter.hpp: a separating plane, then the
+// At double, the oracle's first stage (filter/triangle_filter.hpp: a separating plane, then the
 // six edge-triangle casts) before the double words: 1 (they meet), 0 (disjoint) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it; disjoint triangles have no values (coplanar is
 // false, p = q = 0), so intersect() then returns at once.
 // (Where the static bounds leave it, the same tests with those signs on double words:
-// oracle/triangle_words.hpp.)
+// filter/triangle_words.hpp.)
 template <class F>
 int triangle_triangle_first_stage(const Triangle<F>& a, const Triangle<F>& b) {
   if constexpr (std::is_same_v<F, double>) {
@@ -62,7 +62,7 @@ std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triang
                                                                     int first) {
   if (first == 0) return {TriangleIntersection<F>{}, {false, true}};
   if constexpr (std::is_same_v<F, double> || std::is_same_v<F, float>) {
-    // a separating plane, or a coplanar pair whole, exactly (oracle/triangle_grid.hpp): the
+    // a separating plane, or a coplanar pair whole, exactly (filter/triangle_grid.hpp): the
     // book's answer, p = q = 0 (header)
     const auto dv = [](const Triangle<F>& t) {
       Triangle<double> d;

@@ -18,7 +18,7 @@
 #pragma once
 
 #include <bit>
-#include <cdref/oracle/bounded2.hpp>
+#include <cdref/bounded/bounded2.hpp>
 #include <cstdint>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
@@ -220,7 +220,7 @@ auto on_words(const A& a, const B& b, Fn f, Scale* used = nullptr)
   }
 }
 
-// on_words with lenient signs (oracle/bounded2.hpp): a decision too close to call takes the
+// on_words with lenient signs (bounded/bounded2.hpp): a decision too close to call takes the
 // double word's own sign. For the values alone, where on_words did not complete: near such a
 // boundary every formulation here is continuous (the closest point of a triangle or a box, a
 // cast's entry point where the classification is known), so the branch taken moves the values

@@ -82,15 +82,11 @@ TimedRow::Batch book_row(const std::vector<Inputs>& cases, Mode m) {
 // The truth's formulation at an exact type T (the book, unless the spec says otherwise).
 template <class Spec, class T>
 TimedRow::Batch exact_row(const std::vector<Inputs>& cases, Mode m) {
-  if constexpr (Spec::book_is_truth) {
-    return book_row<Spec, T>(cases, m);
-  } else {
-    auto p = prepare<Spec, T>(cases);
-    if (m == Mode::classify)
-      return batch_over(p, [](const auto& ab) { return Spec::truth_pred(ab.first, ab.second); });
-    return batch_over(p,
-                      [m](const auto& ab) { return finish(Spec::truth(ab.first, ab.second, unsigned(want_all)), m); });
-  }
+  auto p = prepare<Spec, T>(cases);
+  if (m == Mode::classify)
+    return batch_over(p, [](const auto& ab) { return truth_predicate<Spec>(ab.first, ab.second); });
+  return batch_over(
+      p, [m](const auto& ab) { return finish(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m); });
 }
 // exact_row<Spec, CORE::Expr>, instantiated for every query in fuzz/queries/core_rows.cpp alone:
 // the query groups do not include CORE (cdref/exact/core_expr.hpp says what that saves).

@@ -41,8 +41,14 @@
 // recompiles). check<Spec>() below states the required members. What the tests hold every
 // query to, beyond agreement with the exact answer on every family: the classification oracle
 // decides at least 99% of uniform cases at Stage::filter (tests/test_oracle_classify.cpp), the
-// robust tier is certain on at least 99% of them (tests/test_campaign.cpp), and the campaign's
-// digest and cell count (tests/test_campaign.cpp) change with the new query's cells.
+// robust tier is certain on at least 99% of them (tests/test_campaign.cpp), the families
+// include "uniform" and a near-boundary one named near-tangent, near-touching, grazing,
+// watertight or near-edge (the cost report's hard rows run its hardest scale), and each query's
+// cases are pinned by a digest line in tests/test_campaign.cpp (a new query adds its line, which
+// the test prints; no other line changes). A query without a hand-written oracle and robust tier
+// gets both from the staged path: its robust tier is cdref/robust/staged.hpp's decide() and
+// result() around its book (robust/point_triangle.hpp is the example), its oracle oracle_of's
+// staged branch. docs/adding-a-query.md walks through one.
 // describe<Spec>() instantiates every number type the campaign, the case files, the fuzz
 // checks and the cost report need and returns the type-erased QueryInfo.
 #pragma once
@@ -55,7 +61,7 @@
 #include <cdref/exact/staged.hpp>
 #include <cdref/fan.hpp>
 #include <cdref/fuzz/campaign.hpp>
-#include <cdref/oracle/bounded2.hpp>
+#include <cdref/bounded/bounded2.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/decision.hpp>
 #include <cmath>
@@ -391,6 +397,25 @@ consteval bool check() {
   return true;
 }
 
+// ---- the truth's formulation ----
+// The book at an exact type, unless the spec names its own exact formulation
+// (book_is_truth = false: `truth` and `truth_pred`). Every place that asks for the truth
+// asks through these two.
+template <class Spec, class A, class B>
+auto truth_formulation(const A& a, const B& b, unsigned want) {
+  if constexpr (Spec::book_is_truth)
+    return Spec::book(a, b, want);
+  else
+    return Spec::truth(a, b, want);
+}
+template <class Spec, class A, class B>
+bool truth_predicate(const A& a, const B& b) {
+  if constexpr (Spec::book_is_truth)
+    return bool(Spec::book_pred(a, b));
+  else
+    return bool(Spec::truth_pred(a, b));
+}
+
 // ---- the classification oracle ----
 // A spec's own `oracle(a, b, Stage*)` (its hand-written filters: a fast path) where it has
 // one, else the generic staged path on its primitives (cdref/exact/staged.hpp): the truth's
@@ -405,12 +430,7 @@ template <class Spec, class A, class B>
 bool staged_classification(const A& a, const B& b, staged::Stage* st) {
   return staged::evaluate(
       [&]<class T>(staged::at<T>) {
-        const auto x = rebind<T>(a);
-        const auto y = rebind<T>(b);
-        if constexpr (Spec::book_is_truth)
-          return classification(Spec::book(x, y, 0u));
-        else
-          return classification(Spec::truth(x, y, 0u));
+        return classification(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
       },
       st);
 }
@@ -468,16 +488,12 @@ Answer book_at(const Inputs& in, bool values, bool certified = false) {
 // The truth's formulation at T (the book, unless the spec says otherwise).
 template <class Spec, class T, class F>
 Answer truth_at(const Inputs& in, bool values, bool certified = false) {
-  if constexpr (Spec::book_is_truth) {
-    return book_at<Spec, T, F>(in, values, certified);
-  } else {
-    require_finite<Spec, T>(in);
-    const auto [a, b] = Spec::template make<T>(in);
-    Answer r;
-    put<F>(r, Spec::truth(a, b, values ? unsigned(want_all) : 0u), values);
-    r.pred = certified ? r.cls : bool(Spec::truth_pred(a, b));
-    return r;
-  }
+  require_finite<Spec, T>(in);
+  const auto [a, b] = Spec::template make<T>(in);
+  Answer r;
+  put<F>(r, truth_formulation<Spec>(a, b, values ? unsigned(want_all) : 0u), values);
+  r.pred = certified ? r.cls : truth_predicate<Spec>(a, b);
+  return r;
 }
 
 template <class Spec>
@@ -660,10 +676,7 @@ oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
     if (!e.hit) return e;
     const auto enter_at = [&in]<class T>(T*) {
       const auto [x, y] = Spec::template make<T>(in);
-      if constexpr (Spec::book_is_truth)
-        return double(value<double>(entry_value(Spec::book(x, y, unsigned(want_lambda_enter)))));
-      else
-        return double(value<double>(entry_value(Spec::truth(x, y, unsigned(want_lambda_enter)))));
+      return double(value<double>(entry_value(truth_formulation<Spec>(x, y, unsigned(want_lambda_enter)))));
     };
     try {
       e.lambda_enter = enter_at(static_cast<oracle::Bounded2*>(nullptr));
@@ -759,24 +772,14 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
 }
 
 // ---- the generic staged path (cdref/exact/staged.hpp) ----
-// The truth's formulation (the book, unless the spec says otherwise) asked for no outputs, at
-// one number type: its classification.
-template <class Spec, class T>
-bool truth_classification_at(const Inputs& in) {
-  const auto [a, b] = Spec::template make<T>(in);
-  if constexpr (Spec::book_is_truth)
-    return classification(Spec::book(a, b, 0u));
-  else
-    return classification(Spec::truth(a, b, 0u));
-}
 // The exact classification from the truth's own code run through the stages (cls = pred).
 template <class Spec>
 Answer staged_classify_of(const Inputs& in, int* stage) {
   require_finite<Spec, CGAL::Gmpq>(in);
   staged::Stage st;
   Answer r;
-  r.cls = r.pred =
-      staged::evaluate([&in]<class T>(staged::at<T>) { return truth_classification_at<Spec, T>(in); }, &st);
+  const auto [a, b] = Spec::template make<double>(in);
+  r.cls = r.pred = staged_classification<Spec>(a, b, &st);
   if (stage) *stage = int(st);
   return r;
 }
@@ -788,8 +791,9 @@ Answer staged_truth_of(const Inputs& in, int precision, int* stage) {
   require_finite<Spec, CGAL::Gmpq>(in);
   staged::Stage st;
   const auto run = [&]<class F>(F*) {
-    return staged::evaluate([&in]<class T>(staged::at<T>) { return truth_at<Spec, T, F>(in, true, true); }, &st,
-                            std::is_same_v<F, float> ? staged::Stage::bounded : staged::Stage::word);
+    constexpr auto first = std::is_same_v<F, float> ? staged::Stage::bounded : staged::Stage::word;
+    return staged::evaluate<first>([&in]<class T>(staged::at<T>) { return truth_at<Spec, T, F>(in, true, true); },
+                                   &st);
   };
   const Answer r = precision == 24   ? run(static_cast<float*>(nullptr))
                    : precision == 64 ? run(static_cast<long double*>(nullptr))

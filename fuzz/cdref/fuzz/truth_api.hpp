@@ -52,22 +52,16 @@ template <class F, class S> TriangleIntersection<F> rounded(const TriangleInters
 template <class F, class S> Separation<F> rounded(const Separation<S>& r) { Separation<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
 template <class F> bool rounded(bool r) { return r; }
 
-// The truth's formulation at T (the book, unless the spec says otherwise), every output asked.
-template <class Spec, class A, class B>
-auto truth_formulation(const A& a, const B& b) {
-  if constexpr (Spec::book_is_truth)
-    return Spec::book(a, b, unsigned(want_all));
-  else
-    return Spec::truth(a, b, unsigned(want_all));
-}
+// The truth's formulation's result with every output asked, each field rounded to F.
 template <class Spec, class F, class A, class B>
-using TruthResult = decltype(rounded<F>(truth_formulation<Spec>(std::declval<const A&>(), std::declval<const B&>())));
+using TruthResult = decltype(rounded<F>(
+    truth_formulation<Spec>(std::declval<const A&>(), std::declval<const B&>(), unsigned(want_all))));
 
 // Step 4 alone: the truth's formulation at CGAL::Gmpq, each field rounded to F. a and b are
 // checked (finite, in the query's domain) double primitives.
 template <class Spec, class F, class A, class B>
 TruthResult<Spec, F, A, B> exact_result(const A& a, const B& b) {
-  return rounded<F>(truth_formulation<Spec>(rebind<CGAL::Gmpq>(a), rebind<CGAL::Gmpq>(b)));
+  return rounded<F>(truth_formulation<Spec>(rebind<CGAL::Gmpq>(a), rebind<CGAL::Gmpq>(b), unsigned(want_all)));
 }
 
 // Steps 1-4 (see the file's comment).
@@ -88,7 +82,7 @@ TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_use
   // (two lambdas, the other formulation's named only where the spec has it: clang instantiates
   // the parts of a generic lambda that do not depend on its own parameters)
   const auto own = [&] {
-    return rounded<F>(truth_formulation<Spec>(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b)));
+    return rounded<F>(truth_formulation<Spec>(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b), unsigned(want_all)));
   };
   if constexpr (has_oracle_formulation<Spec>) {
     const auto other = [&] {
@@ -120,6 +114,7 @@ TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_use
 template <class P> struct ArgName;
 #define CDREF_ARG_NAME(P, text) \
   template <class T> struct ArgName<P<T>> { static constexpr const char *one = text, *a = text " a", *b = text " b"; };
+CDREF_ARG_NAME(Vec3, "point")
 CDREF_ARG_NAME(Sphere, "sphere")
 CDREF_ARG_NAME(Box, "box")
 CDREF_ARG_NAME(Segment, "segment")
@@ -140,8 +135,8 @@ auto truth_call_at_double(const A& a, const B& b, truth::Path path) {
   cdref::check(b, same ? ArgName<B>::b : ArgName<B>::one);
   return path == truth::Path::exact ? exact_result<Spec, F>(a, b) : oracle_result<Spec, F>(a, b);
 }
-template <class Spec, class F, template <class> class PA, template <class> class PB>
-auto truth_call(const PA<F>& a, const PB<F>& b, truth::Path path) {
+template <class Spec, class F, class A, class B>
+auto truth_call(const A& a, const B& b, truth::Path path) {
   if constexpr (std::is_same_v<F, double>)
     return truth_call_at_double<Spec, F>(a, b, path);
   else

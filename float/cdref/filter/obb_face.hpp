@@ -1,4 +1,4 @@
-// cdref/oracle/obb_face.hpp - the face through which a shot enters (or leaves) an oriented box,
+// cdref/filter/obb_face.hpp - the face through which a shot enters (or leaves) an oriented box,
 // and that face's crossing parameter alone on double words, at double. The oracle's correctly
 // rounded lambda_enter takes the entering face (oracle/enter.hpp, "An oriented box"); the robust
 // casts' first look takes both faces, with the entry point and the normal (robust/obb_cast.hpp).
@@ -50,8 +50,8 @@
 // unturned frame Y_i grows outward through the upper plane).
 #pragma once
 
-#include <cdref/oracle/box_cast_filter.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 #include <optional>

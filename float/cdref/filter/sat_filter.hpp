@@ -1,4 +1,4 @@
-// cdref/oracle/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
+// cdref/filter/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
 // every candidate separating axis of Theorem 3.1 evaluated in double against one static error
 // bound for the whole query, and for a sphere and an oriented box two certificates from one
 // point of the box; for a segment or a ray and an oriented box, Algorithm 3.3 in the box's

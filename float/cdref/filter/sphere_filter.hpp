@@ -1,4 +1,4 @@
-// cdref/oracle/sphere_filter.hpp - the first stage of the classification oracle for a segment
+// cdref/filter/sphere_filter.hpp - the first stage of the classification oracle for a segment
 // or a ray cast on a sphere (Algorithm 3.1), for Algorithm 3.2 and for sphere-box (exact/cdref/oracle/
 // classify.hpp holds the other stages, the polynomials these signs decide and the model of the
 // bounds: u = 2^-53, gamma_K, the range checks). Plain double arithmetic on the query's inputs,
@@ -9,7 +9,7 @@
 // exact stages too.
 #pragma once
 
-#include <cdref/oracle/box_cast_filter.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 

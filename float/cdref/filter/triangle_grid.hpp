@@ -1,4 +1,4 @@
-// cdref/oracle/triangle_grid.hpp - two triangles (book/triangle_triangle.hpp) exactly on
+// cdref/filter/triangle_grid.hpp - two triangles (book/triangle_triangle.hpp) exactly on
 // integers, the inputs read as integers on a grid per coordinate axis (grid.hpp): a plane that
 // separates them, and the whole answer where they lie in one plane. Where it decides it gives
 // the book's answer at an exact type.
@@ -30,8 +30,8 @@
 // next stage too.
 #pragma once
 
-#include <cdref/oracle/grid.hpp>
-#include <cdref/oracle/triangle_filter.hpp>
+#include <cdref/filter/grid.hpp>
+#include <cdref/filter/triangle_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-// cdref/oracle/word_bounds.hpp - double words that carry a rigorous bound on their distance from
+// cdref/bounded/word_bounds.hpp - double words that carry a rigorous bound on their distance from
 // an exact value, and the second stage they give the casts on an oriented box. Shared by the
 // oracle's correctly rounded lambda_enter (exact/cdref/oracle/enter.hpp, whose header derives
 // cross_term, dot_words and the bounds' allowance for underflow) and by the classification of a
@@ -43,7 +43,7 @@
 #pragma once
 
 #include <algorithm>
-#include <cdref/oracle/box_cast_filter.hpp>
+#include <cdref/filter/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/robust/eft.hpp>
 #include <cdref/robust/words.hpp>

@@ -1,4 +1,4 @@
-// cdref/oracle/bounded2.hpp - a double-word number (an unevaluated sum hi + lo of two
+// cdref/bounded/bounded2.hpp - a double-word number (an unevaluated sum hi + lo of two
 // doubles) with a rigorous bound on its error: the second stage of the fast exact oracle,
 // the one that certifies the correct rounding of square roots and quotients.
 //

@@ -1,4 +1,4 @@
-// cdref/oracle/sat_words.hpp - Theorem 3.1 on double words, on the axes the first stage left
+// cdref/filter/sat_words.hpp - Theorem 3.1 on double words, on the axes the first stage left
 // open: the second stage of the Section 3.3 classification oracle for a segment, a triangle or an
 // oriented box against an axis-aligned or an oriented box (exact/cdref/oracle/separating_axes.hpp),
 // and of the robust tier's certified decision on those pairs (robust/separating_axes.hpp).
@@ -47,8 +47,8 @@
 // own second stage first (word_bounds.hpp, obb_cast_words), and a ray is left to the next stage.
 #pragma once
 
-#include <cdref/oracle/sat_filter.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/sat_filter.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cmath>
 
 namespace cdref::oracle::sat_words {

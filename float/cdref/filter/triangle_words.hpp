@@ -1,4 +1,4 @@
-// cdref/oracle/triangle_words.hpp - the orientation form of a ray or segment cast on a triangle
+// cdref/filter/triangle_words.hpp - the orientation form of a ray or segment cast on a triangle
 // on double words: the second stage of the Section 3.4 cast oracles (exact/cdref/oracle/
 // ray_triangle.hpp, and through it the polygon casts), and of the robust tier's certified
 // decision on those casts (robust/ray_triangle.hpp), before the book's whole test on double words.
@@ -29,8 +29,8 @@
 // too: each product is homogeneous of degree 3 in the scaled inputs).
 #pragma once
 
-#include <cdref/oracle/triangle_filter.hpp>
-#include <cdref/oracle/word_bounds.hpp>
+#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/bounded/word_bounds.hpp>
 #include <cmath>
 
 namespace cdref::oracle::ray_triangle {

@@ -1,4 +1,4 @@
-// cdref/oracle/grid.hpp - double inputs as integers on a grid, one grid a coordinate axis, and
+// cdref/filter/grid.hpp - double inputs as integers on a grid, one grid a coordinate axis, and
 // exact signs of polynomials in them: the exact looks of the oracles' first stages
 // (triangle_filter.hpp for the casts on a triangle, sat_grid.hpp for a triangle and a box).
 //

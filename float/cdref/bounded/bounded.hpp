@@ -1,4 +1,4 @@
-// cdref/oracle/bounded.hpp - a double with a rigorous bound on its error: the filter of the
+// cdref/bounded/bounded.hpp - a double with a rigorous bound on its error: the filter of the
 // fast exact oracle.
 //
 // A Bounded value (v, e) says: the exact value x of this quantity satisfies |x - v| <= e.

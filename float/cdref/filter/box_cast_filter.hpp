@@ -1,4 +1,4 @@
-// cdref/oracle/box_cast_filter.hpp - the first stage of the classification oracle for a
+// cdref/filter/box_cast_filter.hpp - the first stage of the classification oracle for a
 // segment or a ray cast on an axis-aligned box (Algorithm 3.3; exact/cdref/oracle/classify.hpp
 // holds the other stages and the model of the bounds: u = 2^-53, gamma_K, the range checks),
 // with the helpers every stage-1 filter there uses. Plain double arithmetic on the query's

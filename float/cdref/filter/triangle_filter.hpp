@@ -1,4 +1,4 @@
-// cdref/oracle/triangle_filter.hpp - the first stage of the Section 3.4 classification oracles:
+// cdref/filter/triangle_filter.hpp - the first stage of the Section 3.4 classification oracles:
 // the orientation form of a ray or segment cast on a triangle, two certificates from one point
 // of a triangle for a sphere, and a plane and six edge casts for two triangles, each evaluated in
 // double against static error bounds. Plain double arithmetic on the query's inputs, so that both
@@ -99,8 +99,8 @@
 #include <bit>
 #include <cstdint>
 #include <cdref/cdref.hpp>
-#include <cdref/oracle/grid.hpp>
-#include <cdref/oracle/minmax.hpp>
+#include <cdref/filter/grid.hpp>
+#include <cdref/filter/minmax.hpp>
 #include <cmath>
 #include <limits>
 

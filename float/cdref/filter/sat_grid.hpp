@@ -1,4 +1,4 @@
-// cdref/oracle/sat_grid.hpp - a triangle, a segment or a ray and an axis-aligned box
+// cdref/filter/sat_grid.hpp - a triangle, a segment or a ray and an axis-aligned box
 // (book/triangle_box.hpp, Akenine-Moller's 13 axes; book/segment_box.hpp, 6 axes) evaluated
 // exactly on integers, the inputs read as integers on a grid per coordinate axis (grid.hpp).
 // Where it applies it gives the book's answer at an exact type: whether they meet and, if not,
@@ -34,7 +34,7 @@
 #pragma once
 
 #include <bit>
-#include <cdref/oracle/grid.hpp>
+#include <cdref/filter/grid.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 #include <cstdint>
