@@ -15,6 +15,7 @@
 #include "book/separating_axes.hpp"
 #include "book/sphere_box.hpp"
 #include "book/sphere_sphere.hpp"
+#include "book/point_triangle.hpp"
 #include "book/sphere_triangle.hpp"
 #include "book/ray_triangle.hpp"
 #include "book/triangle_triangle.hpp"

@@ -141,6 +141,11 @@ Proximity<float> proximity(const Sphere<float>& a, const OrientedBox<float>& b, 
 Proximity<double> proximity(const Sphere<double>& a, const Triangle<double>& b, Path path = Path::oracle);
 /// sphere-triangle at float's rounding.
 Proximity<float> proximity(const Sphere<float>& a, const Triangle<float>& b, Path path = Path::oracle);
+/// point-triangle: the triangle's point closest to p (witness_b and `closest`), its distance, and
+/// `intersect`: p lies on the closed triangle (witness_a is p, depth 0).
+Proximity<double> proximity(const Vec3<double>& p, const Triangle<double>& b, Path path = Path::oracle);
+/// point-triangle at float's rounding.
+Proximity<float> proximity(const Vec3<float>& p, const Triangle<float>& b, Path path = Path::oracle);
 /// ray-triangle-cast: the ray on the closed two-sided triangle, with the barycentric u, v of the entry point.
 TriangleCast<double> cast(const Ray<double>& a, const Triangle<double>& b, Path path = Path::oracle);
 /// ray-triangle-cast at float's rounding.

@@ -26,7 +26,10 @@ def correctly_rounded_sqrt_offset(x, offset, sign, square):
 
 
 def test_every_query_is_a_function_with_help():
-    assert len(cdref.queries()) == 28
+    listed = [line.split(":")[0] for line in subprocess.run([CDREF, "describe"], check=True, capture_output=True,
+                                                             text=True).stdout.splitlines()
+              if line and not line.startswith(" ")]
+    assert cdref.queries() == listed and len(listed) >= 29
     for q in cdref.queries():
         f = getattr(cdref, q.replace("-", "_"))
         assert f.__doc__ and "Arguments" in f.__doc__, q
@@ -34,6 +37,7 @@ def test_every_query_is_a_function_with_help():
     assert "two-sided" in doc and "units of |direction|" in doc
     assert cdref.arguments("ray-sphere-cast") == ["source", "direction", "center", "radius"]
     assert cdref.arguments("polygon-polygon") == ["a_vertices", "b_vertices"]
+    assert cdref.arguments("point-triangle") == ["p", "v0", "v1", "v2"]
     assert cdref.arguments("ray-fan-cast") == ["source", "direction", "closed", "ring", "center"] or \
         cdref.arguments("ray-fan-cast") == ["source", "direction", "closed", "center", "ring"]
 
@@ -76,6 +80,11 @@ def test_other_queries_hand_cases():
     assert tb.intersect is False and tb.axis == 0
     tt = cdref.triangle_triangle((-1, -1, 0), (3, -1, 0), (-1, 3, 0), (0, 0, -1), (0, 0, 1), (1, 0, 0))
     assert tt.intersect and tt.coplanar == 0 and list(tt.p) == [0, 0, 0] and list(tt.q) == [1, 0, 0]
+    pt = cdref.point_triangle(p=(0.25, 0.25, 1), v0=(0, 0, 0), v1=(1, 0, 0), v2=(0, 1, 0))
+    assert pt.intersect is False and pt.distance == 1 and pt.depth == 0
+    assert list(pt.witness_a) == [0.25, 0.25, 1] and list(pt.witness_b) == [0.25, 0.25, 0]
+    assert cdref.point_triangle((0.5, 0, 0), (0, 0, 0), (1, 0, 0), (0, 1, 0)).intersect  # on an edge: closed
+    assert not cdref.point_triangle((0.5, math.nextafter(0, -1), 0), (0, 0, 0), (1, 0, 0), (0, 1, 0)).intersect
 
 
 def test_bad_input_is_named():
