@@ -106,6 +106,7 @@ TEST_CASE("a seed's cases are the same from every compiler (each query's digest 
       {"polygon-box", 45, 0xd73b4b5dbd8c1783u},
       {"polygon-sphere", 45, 0xdeec5f72e74bfe80u},
       {"point-triangle", 73, 0x1f52eda1acb0cf14u},
+      {"polygon-obb", 45, 0x9b5d0098206d6848u},
   };
   std::map<std::string, Expected> table;
   for (const Expected& e : expected) table[e.query] = e;

@@ -43,6 +43,7 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include <cdref/book/polygon_obb.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <random>
 
@@ -218,6 +219,40 @@ TEST_CASE("oriented boxes agree with CGAL's mesh intersection on every family", 
     CHECK(t->yes > 500);
     CHECK(t->no > 500);
   }
+}
+
+TEST_CASE("polygon-obb agrees with CGAL's mesh intersection on the fan triangles on every family",
+          "[sat][cgal][obb][polygon]") {
+  // The polygon is the union of its fan triangles; each meets the box's closed mesh (PMP) or has
+  // a vertex inside it, a zero-area triangle as the segment or point it spans.
+  const Tally t = over_families("polygon-obb", 60, [](const fuzz::Inputs& in) {
+    const OrientedBox<Q> b = qobb(in, 25);
+    if (flat(b)) return std::optional<std::pair<bool, bool>>{};
+    Polygon<Q> p;
+    p.n = int(in[0]);
+    for (int i = 0; i < p.n; ++i) p.vertex[i] = qv(in, 1 + 3 * i);
+    const Mesh m = box_mesh(b);
+    bool cgal = false;
+    for (int k = 0; k < p.triangles() && !cgal; ++k) {
+      const Triangle<Q> tr = p.triangle(k);
+      if (inside(m, tr.vertex[0])) {
+        cgal = true;
+      } else if (const auto span = degenerate_span(tr)) {
+        if (span->source != span->target) {
+          const std::vector<P3> line = {pt(span->source), pt(span->target)};
+          cgal = inside(m, span->source) || inside(m, span->target) || PMP::do_intersect(m, line);
+        }
+      } else {
+        Mesh tm;
+        tm.add_face(tm.add_vertex(pt(tr.vertex[0])), tm.add_vertex(pt(tr.vertex[1])), tm.add_vertex(pt(tr.vertex[2])));
+        cgal = PMP::do_intersect(m, tm);
+      }
+    }
+    return std::optional{std::pair{solid::intersect(p, b), cgal}};
+  });
+  CHECK(t.n >= 2000);
+  CHECK(t.yes > 300);
+  CHECK(t.no > 300);
 }
 
 TEST_CASE("exactly orthonormal oriented boxes: the book, the solid and CGAL's meshes agree", "[sat][cgal][obb]") {

@@ -12,6 +12,38 @@
 #include <cdref/truth.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include "queries/group_boxes.hpp"
+#include "queries/group_obb_casts.hpp"
+#include "queries/group_polygons.hpp"
+#include "queries/group_sat_boxes.hpp"
+#include "queries/group_sat_obbs.hpp"
+#include "queries/group_sphere_obb.hpp"
+#include "queries/group_spheres.hpp"
+#include "queries/group_triangle_casts.hpp"
+#include "queries/group_triangles.hpp"
+#include "queries/groups.hpp"
+
+// Every X(spec, Result, fn, A, B) line of the groups, as the public declaration of <cdref/truth.hpp>
+// it defines: a line without its declaration (or with another signature) does not compile here,
+// a declaration without its definition does not link. (The units that define the functions
+// include cdref/truth/basics.hpp, not truth.hpp, so that a new query's declarations recompile
+// only what calls them.)
+namespace cdref::truth::declared {
+#define CDREF_DECLARED(S, Result, fn, A, B)                                                              \
+  out.push_back(reinterpret_cast<void (*)()>(                                                          \
+      static_cast<Result<double> (*)(const A<double>&, const B<double>&, Path)>(&truth::fn)));         \
+  out.push_back(reinterpret_cast<void (*)()>(static_cast<Result<float> (*)(const A<float>&, const B<float>&, Path)>(&truth::fn)));
+#define CDREF_DECLARED_GROUP(fn, list) list(CDREF_DECLARED)
+inline std::vector<void (*)()> functions() {
+  std::vector<void (*)()> out;
+  CDREF_QUERY_GROUPS(CDREF_DECLARED_GROUP)
+  return out;
+}
+#undef CDREF_DECLARED_GROUP
+#undef CDREF_DECLARED
+}  // namespace cdref::truth::declared
 
 namespace cdref_test_truth {
 
@@ -31,6 +63,12 @@ bool rounds_to(F x, const Q& offset, int sign, const Q& square) {
   const bool above_a = a <= 0 || a * a <= square;
   const bool below_b = b >= 0 && b * b >= square;
   return above_a && below_b;
+}
+
+TEST_CASE("truth: every query's two functions are declared in <cdref/truth.hpp> and defined", "[truth]") {
+  const std::vector<void (*)()> fns = truth::declared::functions();
+  CHECK(fns.size() == 2 * fuzz::all_queries().size());
+  for (void (*f)() : fns) CHECK(f != nullptr);
 }
 
 TEST_CASE("truth: every field of the oracle's answer equals the exact path's, on every family", "[truth]") {

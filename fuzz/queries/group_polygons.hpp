@@ -4,6 +4,7 @@
 // group and core_rows.cpp gives each query its CORE::Expr row.
 #pragma once
 
+#include "polygon_obb.hpp"
 #include "polygons.hpp"
 
 #define CDREF_POLYGON_QUERIES(X)                                \
@@ -11,4 +12,5 @@
   X(PolygonCast<false>, Cast, cast, Segment, Polygon)           \
   X(PolygonPolygon, detail::Bool, intersect, Polygon, Polygon)  \
   X(PolygonBox, detail::Bool, intersect, Polygon, Box)          \
-  X(PolygonSphere, Proximity, proximity, Sphere, Polygon)
+  X(PolygonSphere, Proximity, proximity, Sphere, Polygon)       \
+  X(PolygonObb, detail::Bool, intersect, Polygon, OrientedBox)

@@ -12,10 +12,12 @@
 // that includes CORE) instantiates its CORE::Expr row of the cost report.
 //
 // What an edit recompiles: a spec's header (or an algorithm only its queries include), its
-// group's unit, core_rows.cpp and the test unit whose files include that spec to test its hand
-// filters directly (tests/test_oracle_classify.cpp, test_campaign.cpp, test_triangles.cpp); a
-// group's header, its unit and core_rows.cpp; this file, every group, the
-// registry and core_rows.cpp; cdref/fuzz/describe.hpp, spec.hpp, campaign.hpp or a header every
+// group's unit, core_rows.cpp and the test units whose files include that spec (the hand
+// filters' tests in test_oracle_classify.cpp, test_campaign.cpp, test_triangles.cpp; the
+// query's own test; test_truth.cpp, which checks every line's public declaration); a group's
+// header, its unit, core_rows.cpp and test_truth.cpp; a query's declarations in
+// <cdref/truth.hpp>, the units that call them (the tests, users' code), no group (the groups
+// include cdref/truth/basics.hpp); this file, every group, the registry and core_rows.cpp; cdref/fuzz/describe.hpp, spec.hpp, campaign.hpp or a header every
 // spec includes (cdref.hpp, results.hpp, the number types), every group and most of the library.
 // The groups are listed heaviest first (CMakeLists.txt lists their units in this order, so that
 // the longest compiles start first).

@@ -38,6 +38,7 @@ def test_every_query_is_a_function_with_help():
     assert cdref.arguments("ray-sphere-cast") == ["source", "direction", "center", "radius"]
     assert cdref.arguments("polygon-polygon") == ["a_vertices", "b_vertices"]
     assert cdref.arguments("point-triangle") == ["p", "v0", "v1", "v2"]
+    assert cdref.arguments("polygon-obb") == ["vertices", "center", "extent", "axis0", "axis1", "axis2"]
     assert cdref.arguments("ray-fan-cast") == ["source", "direction", "closed", "ring", "center"] or \
         cdref.arguments("ray-fan-cast") == ["source", "direction", "closed", "center", "ring"]
 
@@ -85,6 +86,12 @@ def test_other_queries_hand_cases():
     assert list(pt.witness_a) == [0.25, 0.25, 1] and list(pt.witness_b) == [0.25, 0.25, 0]
     assert cdref.point_triangle((0.5, 0, 0), (0, 0, 0), (1, 0, 0), (0, 1, 0)).intersect  # on an edge: closed
     assert not cdref.point_triangle((0.5, math.nextafter(0, -1), 0), (0, 0, 0), (1, 0, 0), (0, 1, 0)).intersect
+    # a unit square at z = 1 against a box of half-extent 1 turned 45 degrees about z: touching its top face
+    r = math.sqrt(0.5)
+    sq1 = [(0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    assert cdref.polygon_obb(sq1, (0, 0, 0), (1, 1, 1), (r, r, 0), (-r, r, 0), (0, 0, 1)).intersect
+    sq2 = [(0, 0, 1.5), (1, 0, 1.5), (1, 1, 1.5), (0, 1, 1.5)]
+    assert not cdref.polygon_obb(sq2, (0, 0, 0), (1, 1, 1), (r, r, 0), (-r, r, 0), (0, 0, 1)).intersect
 
 
 def test_bad_input_is_named():

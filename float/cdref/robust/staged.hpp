@@ -35,6 +35,7 @@
 #include <cdref/robust/decision.hpp>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <type_traits>
 
 namespace cdref::staged {
@@ -71,30 +72,41 @@ auto certify(Fn&& fn, Stage* stage = nullptr) -> std::optional<decltype(fn(at<or
 }
 
 namespace detail {
+// two members equal (NaN equals nothing: such an input is refused by the checks)
 template <class X>
-bool fits_double(const X& x) {
-  if constexpr (std::is_same_v<X, int> || std::is_same_v<X, bool>) {
-    return true;
-  } else if constexpr (std::is_floating_point_v<X>) {
-    return X(double(x)) == x || x != x;  // NaN: the input checks refuse it
-  } else if constexpr (requires { x.rows(); }) {
-    return fits_double(x[0]) && fits_double(x[1]) && fits_double(x[2]);
+bool same(const X& a, const X& b) {
+  if constexpr (std::is_arithmetic_v<X>) {
+    return a == b;
+  } else if constexpr (requires { a.rows(); }) {
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
   } else {
-    for (const auto& e : x)
-      if (!fits_double(e)) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (!same(a[i], b[i])) return false;
     return true;
   }
 }
 }  // namespace detail
 
-/// Whether every coordinate of a primitive (or a point) is a double exactly: the bounded stages'
-/// inputs. Always for float and double.
-template <class P>
+/// Whether every coordinate of a primitive (or a point) over F is a double exactly: the bounded
+/// stages' inputs. Always for float and double; a long double primitive is compared with its
+/// round trip through double (rebind, which leaves a polygon's or a fan's unused slots zero).
+template <class F, class P>
 bool fits_double(const P& p) {
-  if constexpr (requires { p.rows(); })
-    return detail::fits_double(p);
-  else
-    return std::apply([](const auto&... m) { return (detail::fits_double(m) && ...); }, members(p));
+  if constexpr (!std::is_same_v<F, long double>) {
+    return true;
+  } else {
+    const P back = rebind<F>(rebind<double>(p));
+    const P orig = rebind<F>(p);
+    if constexpr (requires { p.rows(); }) {
+      return detail::same(back, orig);
+    } else {
+      const auto x = members(back);
+      const auto y = members(orig);
+      return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return (detail::same(std::get<I>(x), std::get<I>(y)) && ...);
+      }(std::make_index_sequence<std::tuple_size_v<decltype(x)>>{});
+    }
+  }
 }
 
 /// A bounded value rounded correctly to F, or oracle::uncertain where the bound cannot tell.
@@ -133,7 +145,7 @@ bool rounded(bool r) {
 /// bounded stages' answer, certain, where one decides; else fn at F, uncertain.
 template <class F, class Fn, class A, class B>
 robust::Decision decide(Fn&& fn, const A& a, const B& b) {
-  if (fits_double(a) && fits_double(b)) {
+  if (fits_double<F>(a) && fits_double<F>(b)) {
     const auto x = rebind<double>(a);
     const auto y = rebind<double>(b);
     if (const auto r = certify([&]<class T>(at<T>) { return bool(fn(rebind<T>(x), rebind<T>(y))); }))
@@ -168,7 +180,7 @@ auto result(Cls&& cls, Fn&& fn, const A& a, const B& b) -> decltype(fn(a, b)) {
   const robust::Decision d = decide<F>(cls, a, b);
   decltype(fn(a, b)) out;
   bool values = false;
-  if (fits_double(a) && fits_double(b)) {
+  if (fits_double<F>(a) && fits_double<F>(b)) {
     const auto x = rebind<double>(a);
     const auto y = rebind<double>(b);
     if (auto r = certify<std::is_same_v<F, float> ? Stage::bounded : Stage::word>(

@@ -20,7 +20,7 @@
 
 #include <cdref/fields.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/truth.hpp>
+#include <cdref/truth/basics.hpp>
 #include <string>
 #include <type_traits>
 
