@@ -20,6 +20,7 @@
 #include "book/ray_triangle.hpp"
 #include "book/triangle_triangle.hpp"
 #include "book/polygon.hpp"
+#include "book/polygon_obb.hpp"
 #include "book/triangle_box.hpp"
 #include "error.hpp"
 #include "fan.hpp"

@@ -236,15 +236,9 @@ inline constexpr const char* sat_help =
 // rounded correctly to F).
 template <class F, class S>
 long double value(const S& x) {
-  if constexpr (std::is_same_v<S, oracle::Bounded2> || std::is_same_v<S, oracle::Bounded>) {
-    // the filter: certain, or it throws
-    if constexpr (std::is_same_v<F, float>)
-      return x.rounded_float();
-    else if constexpr (std::is_same_v<F, double>)
-      return x.rounded();
-    else
-      return x.rounded_long_double();
-  } else if constexpr (!number_traits<S>::is_exact)
+  if constexpr (std::is_same_v<S, oracle::Bounded2> || std::is_same_v<S, oracle::Bounded>)
+    return staged::rounded_value<F>(x);  // certain, or it throws
+  else if constexpr (!number_traits<S>::is_exact)
     return static_cast<long double>(x);
   else if constexpr (std::is_same_v<F, long double>)
     return exact::round_long_double(x);
