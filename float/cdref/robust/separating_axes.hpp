@@ -574,19 +574,26 @@ bool obb_xx(Rational& xx, const Vec3<F>& q, const OrientedBox<F>& b) {
   return true;
 }
 
+// The proximity on double words relative to the sphere's centre (words.hpp, about_centre), one
+// type for every F (words.hpp, HotWords).
+struct SphereObbWords : HotWords {
+  unsigned w;
+  template <class S, class B>
+  auto operator()(const S& x, const B& y) const {
+    const unsigned want = w;
+    return about_centre(x, y, want, [want](const auto& a, const auto& c) { return solid::proximity(a, c, want); },
+                        [](auto box, const auto& c) {
+                          box.center = std::decay_t<decltype(c)>(box.center - c);
+                          return box;
+                        });
+  }
+};
+
 template <class F>
 std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w,
                                                  WordValues* kept = nullptr) {
-  // (on the double words relative to the sphere's centre: words.hpp, about_centre)
   return proximity_on_words(
-      s, b,
-      [w](const auto& x, const auto& y) {
-        return about_centre(x, y, w, [w](const auto& a, const auto& c) { return solid::proximity(a, c, w); },
-                            [](auto box, const auto& c) {
-                              box.center = std::decay_t<decltype(c)>(box.center - c);
-                              return box;
-                            });
-      },
+      s, b, SphereObbWords{{}, w},
       [](const auto& x, const auto& y) { return solid::intersect(x, y); }, kept);
 }
 

@@ -188,20 +188,27 @@ void triangle_xx(Rational& xx, const Vec3<F>& c, const Triangle<F>& t) {
   }
 }
 
+// The proximity on double words relative to the centre (words.hpp, about_centre), one type for
+// every F (words.hpp, HotWords).
+struct SphereTriangleWords : HotWords {
+  unsigned w;
+  template <class S, class T>
+  auto operator()(const S& x, const T& y) const {
+    const unsigned want = w;
+    return about_centre(x, y, want, [want](const auto& a, const auto& b) { return proximity_by_face(a, b, want); },
+                        [](auto tri, const auto& c) {
+                          for (auto& v : tri.vertex) v = std::decay_t<decltype(c)>(v - c);
+                          return tri;
+                        });
+  }
+};
+
 // The double words alone (the oracle's second stage).
 template <class F>
 std::pair<Proximity<F>, Decision> sphere_triangle_words(const Sphere<F>& s, const Triangle<F>& t, unsigned w,
                                                         WordValues* kept = nullptr) {
-  // (on the double words relative to the centre: words.hpp, about_centre)
   return proximity_on_words(
-      s, t,
-      [w](const auto& x, const auto& y) {
-        return about_centre(x, y, w, [w](const auto& a, const auto& b) { return proximity_by_face(a, b, w); },
-                            [](auto tri, const auto& c) {
-                              for (auto& v : tri.vertex) v = std::decay_t<decltype(c)>(v - c);
-                              return tri;
-                            });
-      },
+      s, t, SphereTriangleWords{{}, w},
       [](const auto& x, const auto& y) { return book::intersect(x, y); }, kept);
 }
 // Proximity's values from the double words, its classification from them where they are
