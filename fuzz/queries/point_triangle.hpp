@@ -208,11 +208,7 @@ struct PointTriangle {
   template <class P3, class T3>
   static auto cgal_squared_distance(const P3& p, const T3& t) {
     if (!t.is_degenerate()) return CGAL::squared_distance(p, t);
-    const auto a = t.vertex(0), b = t.vertex(1), c = t.vertex(2);
-    auto far = CGAL::squared_distance(a, b);
-    auto s0 = a, s1 = b;
-    if (CGAL::squared_distance(a, c) > far) far = CGAL::squared_distance(a, c), s1 = c;
-    if (CGAL::squared_distance(b, c) > far) s0 = b, s1 = c;
+    const auto [s0, s1] = spec::cgal_span(t);
     using Seg = typename CGAL::Kernel_traits<P3>::Kernel::Segment_3;
     return s0 == s1 ? CGAL::squared_distance(p, s0) : CGAL::squared_distance(p, Seg(s0, s1));
   }
@@ -226,10 +222,7 @@ struct PointTriangle {
   template <class P3, class T3>
   static bool cgal(const P3& p, const T3& t) {
     if (!t.is_degenerate()) return t.has_on(p);
-    const auto a = t.vertex(0), b = t.vertex(1), c = t.vertex(2);
-    auto s0 = a, s1 = b;
-    if (CGAL::compare_distance(a, c, a, b) == CGAL::LARGER) s1 = c;
-    if (CGAL::compare_distance(b, c, s0, s1) == CGAL::LARGER) s0 = b, s1 = c;
+    const auto [s0, s1] = spec::cgal_span(t);
     using Seg = typename CGAL::Kernel_traits<P3>::Kernel::Segment_3;
     return s0 == s1 ? p == s0 : Seg(s0, s1).has_on(p);
   }

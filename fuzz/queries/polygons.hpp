@@ -232,11 +232,7 @@ struct PolygonBox {
         if (CGAL::do_intersect(t, box)) return true;
         continue;
       }
-      auto s0 = t.vertex(0), s1 = t.vertex(1);
-      auto far = CGAL::squared_distance(s0, s1);
-      if (CGAL::squared_distance(t.vertex(0), t.vertex(2)) > far)
-        s1 = t.vertex(2), far = CGAL::squared_distance(t.vertex(0), t.vertex(2));
-      if (CGAL::squared_distance(t.vertex(1), t.vertex(2)) > far) s0 = t.vertex(1), s1 = t.vertex(2);
+      const auto [s0, s1] = spec::cgal_span(t);
       if (s0 == s1 ? box.has_on_bounded_side(s0) || box.has_on_boundary(s0)
                    : CGAL::do_intersect(typename K::Segment_3(s0, s1), box))
         return true;

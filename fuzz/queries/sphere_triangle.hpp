@@ -75,12 +75,8 @@ struct SphereTriangle {
   template <class S3, class T3>
   static bool cgal(const S3& s, const T3& t) {
     if (t.is_degenerate()) {
-      const auto a = t.vertex(0), b = t.vertex(1), c = t.vertex(2);
-      auto far = CGAL::squared_distance(a, b);
-      auto s0 = a, s1 = b;
-      if (CGAL::squared_distance(a, c) > far) far = CGAL::squared_distance(a, c), s1 = c;
-      if (CGAL::squared_distance(b, c) > far) s0 = b, s1 = c;
-      using Seg = decltype(typename CGAL::Kernel_traits<std::decay_t<decltype(a)>>::Kernel::Segment_3(s0, s1));
+      const auto [s0, s1] = spec::cgal_span(t);
+      using Seg = typename CGAL::Kernel_traits<T3>::Kernel::Segment_3;
       return s0 == s1 ? CGAL::squared_distance(s.center(), s0) <= s.squared_radius()
                       : CGAL::squared_distance(s.center(), Seg(s0, s1)) <= s.squared_radius();
     }

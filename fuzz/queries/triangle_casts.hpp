@@ -91,11 +91,7 @@ struct TriangleCast {
       if (shot.is_degenerate() && !t.is_degenerate()) return t.has_on(shot.source());
     }
     if (!t.is_degenerate()) return CGAL::do_intersect(shot, t);
-    const auto a = t.vertex(0), b = t.vertex(1), c = t.vertex(2);
-    auto far = CGAL::squared_distance(a, b);
-    auto s0 = a, s1 = b;
-    if (CGAL::squared_distance(a, c) > far) far = CGAL::squared_distance(a, c), s1 = c;
-    if (CGAL::squared_distance(b, c) > far) s0 = b, s1 = c;
+    const auto [s0, s1] = spec::cgal_span(t);
     if (s0 == s1) return shot.has_on(s0);
     if constexpr (std::is_same_v<S3, typename K::Segment_3>) {
       if (shot.is_degenerate()) return typename K::Segment_3(s0, s1).has_on(shot.source());

@@ -82,11 +82,7 @@ struct TriangleTriangle {
   static bool cgal(const T3& a, const T3& b) {
     using K = typename CGAL::Kernel_traits<T3>::Kernel;
     auto span = [](const T3& t) {
-      auto s0 = t.vertex(0), s1 = t.vertex(1);
-      auto far = CGAL::squared_distance(s0, s1);
-      if (CGAL::squared_distance(t.vertex(0), t.vertex(2)) > far)
-        s1 = t.vertex(2), far = CGAL::squared_distance(t.vertex(0), t.vertex(2));
-      if (CGAL::squared_distance(t.vertex(1), t.vertex(2)) > far) s0 = t.vertex(1), s1 = t.vertex(2);
+      const auto [s0, s1] = spec::cgal_span(t);
       return typename K::Segment_3(s0, s1);
     };
     const bool da = a.is_degenerate(), db = b.is_degenerate();

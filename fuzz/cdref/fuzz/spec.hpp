@@ -60,6 +60,7 @@
 #include <cdref/exact/long_double.hpp>
 #include <cdref/exact/staged.hpp>
 #include <cdref/fan.hpp>
+#include <cdref/fields.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/bounded/bounded2.hpp>
 #include <cdref/oracle/stage.hpp>
@@ -105,6 +106,17 @@ template <class K>
 typename K::Vector_3 cgal_vector(const Inputs& in, int i) {
   using FT = typename K::FT;
   return typename K::Vector_3(FT(in[i]), FT(in[i + 1]), FT(in[i + 2]));
+}
+// How cdref reads a zero-area CGAL triangle, for the cross-checks: the segment between its two
+// farthest-apart vertices (ties to the first pair in the order v0v1, v0v2, v1v2; compared with
+// CGAL's compare_distance, exact in every kernel), a point where the two coincide.
+template <class T3>
+auto cgal_span(const T3& t) {
+  const auto a = t.vertex(0), b = t.vertex(1), c = t.vertex(2);
+  auto s0 = a, s1 = b;
+  if (compare_distance(a, c, s0, s1) == CGAL::LARGER) s1 = c;
+  if (compare_distance(b, c, s0, s1) == CGAL::LARGER) s0 = b, s1 = c;
+  return std::pair{s0, s1};
 }
 template <class K>
 typename K::Sphere_3 cgal_ball(const Inputs& in, int c, int r) {
@@ -246,34 +258,13 @@ long double value(const S& x) {
     return static_cast<long double>(round_to<F>(x));
 }
 
-// A query's result's classification (Answer::cls).
-template <class S>
-bool classification(const Cast<S>& c) {  // (a TriangleCast too)
-  return c.hit;
-}
-template <class S>
-bool classification(const FanCast<S>& c) {
-  return c.first.hit;
-}
-template <class S>
-bool classification(const TriangleIntersection<S>& r) {
-  return r.intersect;
-}
-template <class S>
-bool classification(const Proximity<S>& p) {
-  return p.intersect;
-}
-inline bool classification(bool intersect) { return intersect; }
-template <class S>
-bool classification(const Separation<S>& s) {
-  return s.intersect;
-}
+// A query's result's classification (Answer::cls) is fields.hpp's classification_of.
 
 // A query's result into an Answer: its classification, and with `values` its outputs in
 // schema order.
 template <class F, class S>
 void put(Answer& a, const Cast<S>& c, bool values) {
-  a.cls = classification(c);
+  a.cls = classification_of(c);
   if (!values) return;
   a.v[0] = value<F>(c.lambda_enter);
   a.v[1] = value<F>(c.lambda_exit);
@@ -291,7 +282,7 @@ void put(Answer& a, const TriangleCast<S>& c, bool values) {
 }
 template <class F, class S>
 void put(Answer& a, const FanCast<S>& c, bool values) {
-  a.cls = classification(c);
+  a.cls = classification_of(c);
   if (!values) return;
   a.v[0] = value<F>(c.first.lambda_enter);
   for (int i = 0; i < 3; ++i) a.v[1 + i] = value<F>(c.first.point[i]);
@@ -300,7 +291,7 @@ void put(Answer& a, const FanCast<S>& c, bool values) {
 // two triangles: the classification; coplanar (a label), p and q
 template <class F, class S>
 void put(Answer& a, const TriangleIntersection<S>& r, bool values) {
-  a.cls = classification(r);
+  a.cls = classification_of(r);
   if (!values) return;
   a.v[0] = r.coplanar ? 1 : 0;
   for (int i = 0; i < 3; ++i) {
@@ -310,7 +301,7 @@ void put(Answer& a, const TriangleIntersection<S>& r, bool values) {
 }
 template <class F, class S>
 void put(Answer& a, const Proximity<S>& p, bool values) {
-  a.cls = classification(p);
+  a.cls = classification_of(p);
   if (!values) return;
   a.v[0] = value<F>(p.distance);
   a.v[1] = value<F>(p.depth);
@@ -327,7 +318,7 @@ void put(Answer& a, bool intersect, bool) {
 // separating axis (a label; -1 when they intersect).
 template <class F, class S>
 void put(Answer& a, const Separation<S>& s, bool values) {
-  a.cls = classification(s);
+  a.cls = classification_of(s);
   if (values) a.v[0] = s.axis;
 }
 
@@ -373,7 +364,7 @@ consteval bool check() {
     }, "a spec needs the book: `book(a, b, unsigned want)` (the full query), `book_pred(a, b)` (the other "
        "formulation of its classification) and `bare(a, b)` (book::unchecked), templates over the number type");
     static_assert(requires(const P& p) {
-      classification(Spec::book(p.first, p.second, 0u));
+      classification_of(Spec::book(p.first, p.second, 0u));
     }, "the book's result must be a Cast, TriangleCast, FanCast, Proximity, Separation, TriangleIntersection or "
        "bool (spec.hpp: classification and put)");
     static_assert(requires(const P& p) {
@@ -424,7 +415,7 @@ template <class Spec, class A, class B>
 bool staged_classification(const A& a, const B& b, staged::Stage* st) {
   return staged::evaluate(
       [&]<class T>(staged::at<T>) {
-        return classification(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
+        return classification_of(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
       },
       st);
 }
@@ -549,7 +540,7 @@ void book_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
   verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
     require_finite<Spec, T>(x);
     const auto [a, b] = Spec::template make<T>(x);
-    v.cls = classification(Spec::book(a, b, 0u));
+    v.cls = classification_of(Spec::book(a, b, 0u));
     v.pred = bool(Spec::book_pred(a, b));
   });
 }
@@ -557,7 +548,7 @@ template <class Spec, class F>
 void stable_classification_block(const Inputs* in, std::size_t n, Verdict* out) {
   verdicts(in, n, out, [](const Inputs& x, Verdict& v) {
     const auto [a, b] = Spec::template make<F>(x);
-    v.cls = classification(Spec::stable(a, b, 0u));
+    v.cls = classification_of(Spec::stable(a, b, 0u));
     v.pred = Spec::stable_pred(a, b);
   });
 }

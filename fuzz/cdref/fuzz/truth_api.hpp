@@ -26,30 +26,12 @@
 
 namespace cdref::fuzz::spec {
 
-// ---- a result rounded to F, field by field ----
-template <class F, class S>
-F round_value(const S& x) {
-  return static_cast<F>(value<F>(x));
+// ---- a result rounded to F, field by field (staged.hpp's rounded_by; spec.hpp's value: exact
+// values rounded correctly, bounded ones where certain, or oracle::uncertain) ----
+template <class F, template <class> class R, class S>
+R<F> rounded(const R<S>& r) {
+  return staged::rounded_by<F>(r, [](const auto& x) { return static_cast<F>(value<F>(x)); });
 }
-template <class F>
-struct Rounder {
-  template <class X, class Y>
-  void operator()(const char*, const X& x, Y& y) const {
-    if constexpr (std::is_same_v<X, bool> || std::is_same_v<X, int>) {
-      y = x;
-    } else if constexpr (requires { x.rows(); }) {
-      for (int i = 0; i < 3; ++i) y[i] = round_value<F>(x[i]);
-    } else {
-      y = round_value<F>(x);
-    }
-  }
-};
-template <class F, class S> Cast<F> rounded(const Cast<S>& r) { Cast<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
-template <class F, class S> TriangleCast<F> rounded(const TriangleCast<S>& r) { TriangleCast<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
-template <class F, class S> FanCast<F> rounded(const FanCast<S>& r) { FanCast<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
-template <class F, class S> Proximity<F> rounded(const Proximity<S>& r) { Proximity<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
-template <class F, class S> TriangleIntersection<F> rounded(const TriangleIntersection<S>& r) { TriangleIntersection<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
-template <class F, class S> Separation<F> rounded(const Separation<S>& r) { Separation<F> o; zip_fields(r, o, Rounder<F>{}); return o; }
 template <class F> bool rounded(bool r) { return r; }
 
 // The truth's formulation's result with every output asked, each field rounded to F.
