@@ -258,10 +258,8 @@ long double value(const S& x) {
     return static_cast<long double>(round_to<F>(x));
 }
 
-// A query's result's classification (Answer::cls) is fields.hpp's classification_of.
-
-// A query's result into an Answer: its classification, and with `values` its outputs in
-// schema order.
+// A query's result into an Answer: its classification (fields.hpp's classification_of), and
+// with `values` its outputs in schema order.
 template <class F, class S>
 void put(Answer& a, const Cast<S>& c, bool values) {
   a.cls = classification_of(c);
@@ -366,7 +364,7 @@ consteval bool check() {
     static_assert(requires(const P& p) {
       classification_of(Spec::book(p.first, p.second, 0u));
     }, "the book's result must be a Cast, TriangleCast, FanCast, Proximity, Separation, TriangleIntersection or "
-       "bool (spec.hpp: classification and put)");
+       "bool (fields.hpp: classification_of; spec.hpp: put)");
     static_assert(requires(const P& p) {
       Spec::robust(p.first, p.second);
       { Spec::robust_pred(p.first, p.second) } -> std::convertible_to<bool>;
