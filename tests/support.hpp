@@ -107,47 +107,19 @@ Vec3<T> v3(double x, double y, double z) {
   return Vec3<T>(from_double<T>(x), from_double<T>(y), from_double<T>(z));
 }
 
-// ---- primitives written in doubles, moved to T (rounded) or to Gmpq (exactly) ----
-template <class T>
-Sphere<T> convert_prim(const Sphere<double>& p) {
-  return {v3<T>(p.center[0], p.center[1], p.center[2]), from_double<T>(p.radius)};
-}
-template <class T>
-Box<T> convert_prim(const Box<double>& p) {
-  return {v3<T>(p.center[0], p.center[1], p.center[2]), v3<T>(p.extent[0], p.extent[1], p.extent[2])};
-}
-template <class T>
-Segment<T> convert_prim(const Segment<double>& p) {
-  return {v3<T>(p.source[0], p.source[1], p.source[2]), v3<T>(p.target[0], p.target[1], p.target[2])};
-}
-template <class T>
-Triangle<T> convert_prim(const Triangle<double>& p) {
-  auto c = [](const Vec3<double>& v) { return v3<T>(v[0], v[1], v[2]); };
-  return {{c(p.vertex[0]), c(p.vertex[1]), c(p.vertex[2])}};
+// ---- primitives written in doubles, moved to T (rounded) or to Gmpq (exactly): fields.hpp's
+// rebind_with, so that every primitive it describes is covered ----
+template <class T, class P>
+auto convert_prim(const P& p) {
+  return rebind_with<T>(p, [](double x) { return from_double<T>(x); });
 }
 template <class T>
 Vec3<Q> exact_vec(const Vec3<T>& v) {
   return Vec3<Q>(exact_q(v[0]), exact_q(v[1]), exact_q(v[2]));
 }
-template <class T>
-Sphere<Q> convert_prim_exact(const Sphere<T>& p) {
-  return {exact_vec(p.center), exact_q(p.radius)};
-}
-template <class T>
-Box<Q> convert_prim_exact(const Box<T>& p) {
-  return {exact_vec(p.center), exact_vec(p.extent)};
-}
-template <class T>
-Segment<Q> convert_prim_exact(const Segment<T>& p) {
-  return {exact_vec(p.source), exact_vec(p.target)};
-}
-template <class T>
-Ray<Q> convert_prim_exact(const Ray<T>& p) {
-  return {exact_vec(p.source), exact_vec(p.direction)};
-}
-template <class T>
-Triangle<Q> convert_prim_exact(const Triangle<T>& p) {
-  return {{exact_vec(p.vertex[0]), exact_vec(p.vertex[1]), exact_vec(p.vertex[2])}};
+template <class P>
+auto convert_prim_exact(const P& p) {
+  return rebind_with<Q>(p, [](const auto& x) { return exact_q(x); });
 }
 template <class T>
 bool finite_in(const Vec3<double>& v) {
@@ -155,23 +127,17 @@ bool finite_in(const Vec3<double>& v) {
     if (!number_traits<T>::is_finite(from_double<T>(v[i]))) return false;
   return true;
 }
-template <class T>
-bool prim_finite(const Sphere<double>& p) {
-  return finite_in<T>(p.center) && number_traits<T>::is_finite(from_double<T>(p.radius));
-}
-template <class T>
-bool prim_finite(const Box<double>& p) {
-  return finite_in<T>(p.center) && finite_in<T>(p.extent);
-}
-
-template <class T>
-bool prim_finite(const Triangle<double>& p) {
-  return finite_in<T>(p.vertex[0]) && finite_in<T>(p.vertex[1]) && finite_in<T>(p.vertex[2]);
-}
-
-template <class T>
-bool prim_finite(const Segment<double>& p) {
-  return finite_in<T>(p.source) && finite_in<T>(p.target);
+// whether every coordinate of a primitive written in doubles is finite in T
+template <class T, class P>
+bool prim_finite(const P& p) {
+  bool finite = true;
+  for_each_value(p, [&](const auto& x) {
+    if constexpr (requires { x.rows(); })
+      finite = finite && finite_in<T>(x);
+    else
+      finite = finite && number_traits<T>::is_finite(from_double<T>(x));
+  });
+  return finite;
 }
 
 // A pair of primitives written in doubles, for the proximity checker.

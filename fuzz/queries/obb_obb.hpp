@@ -76,7 +76,7 @@ struct ObbObb {
             [test](Query, const Inputs& in) {
               const auto [a, b] = make<double>(in);
               Answer r;
-              spec::put<double>(r, test(a, b), true);
+              spec::put<ObbObb, double>(r, test(a, b), true);
               r.pred = book_pred(a, b);
               return r;
             },

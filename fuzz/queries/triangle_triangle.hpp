@@ -103,7 +103,7 @@ struct TriangleTriangle {
              [](Query, const Inputs& in) {
                const auto [a, b] = make<double>(in);
                Answer r;
-               spec::put<double>(r, cdref::book::intersect(a, b, 1e-6), true);
+               spec::put<TriangleTriangle, double>(r, cdref::book::intersect(a, b, 1e-6), true);
                r.pred = r.cls;
                return r;
              },

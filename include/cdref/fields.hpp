@@ -1,20 +1,39 @@
 // cdref/fields.hpp - the members of every primitive and every result, for code that treats
-// them all alike: converting a primitive to another number type, rounding a result, comparing
-// two results field by field.
+// them all alike: converting a primitive to another number type, scaling it, rounding a result,
+// comparing two results field by field. A primitive is described here once (members, lengths,
+// directions); every generic operation below and in the robust tier derives from that.
 //
 //   members(p)             the primitive's members as a tuple of references (std::tie), in
 //                          declaration order;
+//   lengths(p)             the members that scale with the primitive (its coordinates, extents,
+//                          radii, a ray's direction; a polygon's and a fan's first n vertices as
+//                          a span), as a tuple of references;
+//   directions(p)          the members that do not (an oriented box's unit axes; empty for the
+//                          others);
+//   for_each_length(p, f), for_each_value(p, f)
+//                          f(x) for every scalar and every point among the lengths (and the
+//                          directions, for_each_value), arrays and spans element by element;
 //   rebind<T>(p)           the same primitive over T, each coordinate converted by T(x) (exact
 //                          from double to every exact type cdref uses, and to float with
-//                          rounding);
+//                          rounding); rebind_with<T>(p, conv) converts each by conv(x);
 //   zip_fields(a, b, f)    for two results of one kind (Cast, TriangleCast, FanCast, Proximity,
 //                          TriangleIntersection, Separation), possibly over different number
 //                          types, calls f(name, a's field, b's field) for each field, named as the
 //                          case files' answer columns name it ("lambda_enter", "witness_a", ...).
-//                          A FanCast's fields are its first hit's, then "hits".
+//                          A FanCast's fields are its first hit's, then "hits";
+//   rounded_by<F>(r, round) a result over any number type with each field converted to F by
+//                          round(x) (a bool or an int field is its own).
+//
+// A new primitive gives its members() and lengths() here (and directions() if it has any): the
+// robust tier's scaling, its double-word lift, the input conversions and the tests' helpers
+// then handle it. The functions are found by argument-dependent lookup where they are used, so
+// a primitive declared in a query's own header (in namespace cdref) can give them there.
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
+#include <span>
 #include <tuple>
 #include <type_traits>
 
@@ -25,77 +44,132 @@
 namespace cdref {
 
 // ---- primitives ----
-/// A primitive's members as a tuple of references (std::tie), in declaration order.
-template <class T> auto members(Sphere<T>& p) { return std::tie(p.center, p.radius); }
-template <class T> auto members(const Sphere<T>& p) { return std::tie(p.center, p.radius); }
-template <class T> auto members(Box<T>& p) { return std::tie(p.center, p.extent); }
-template <class T> auto members(const Box<T>& p) { return std::tie(p.center, p.extent); }
-template <class T> auto members(Segment<T>& p) { return std::tie(p.source, p.target); }
-template <class T> auto members(const Segment<T>& p) { return std::tie(p.source, p.target); }
-template <class T> auto members(Ray<T>& p) { return std::tie(p.source, p.direction); }
-template <class T> auto members(const Ray<T>& p) { return std::tie(p.source, p.direction); }
-template <class T> auto members(Triangle<T>& p) { return std::tie(p.vertex); }
-template <class T> auto members(const Triangle<T>& p) { return std::tie(p.vertex); }
-template <class T> auto members(Polygon<T>& p) { return std::tie(p.vertex, p.n); }
-template <class T> auto members(const Polygon<T>& p) { return std::tie(p.vertex, p.n); }
-template <class T> auto members(OrientedBox<T>& p) { return std::tie(p.center, p.extent, p.axis); }
-template <class T> auto members(const OrientedBox<T>& p) { return std::tie(p.center, p.extent, p.axis); }
-template <class T> auto members(Fan<T>& p) { return std::tie(p.center, p.ring, p.n, p.closed); }
-template <class T> auto members(const Fan<T>& p) { return std::tie(p.center, p.ring, p.n, p.closed); }
+namespace detail {
+template <template <class> class K, class T>
+void kind_of(const K<T>&);
+}  // namespace detail
+/// P is a K<T> for some T, const or not (a primitive's description below takes either).
+template <class P, template <class> class K>
+concept is_a = requires(const P& p) { detail::kind_of<K>(p); };
+
+/// A primitive's members as a tuple of references (std::tie), in declaration order; and its
+/// lengths, the members that scale with it (see the file's comment): one pair of lines a
+/// primitive.
+template <is_a<Sphere> P> auto members(P& p) { return std::tie(p.center, p.radius); }
+template <is_a<Sphere> P> auto lengths(P& p) { return std::tie(p.center, p.radius); }
+template <is_a<Box> P> auto members(P& p) { return std::tie(p.center, p.extent); }
+template <is_a<Box> P> auto lengths(P& p) { return std::tie(p.center, p.extent); }
+template <is_a<Segment> P> auto members(P& p) { return std::tie(p.source, p.target); }
+template <is_a<Segment> P> auto lengths(P& p) { return std::tie(p.source, p.target); }
+template <is_a<Ray> P> auto members(P& p) { return std::tie(p.source, p.direction); }
+template <is_a<Ray> P> auto lengths(P& p) { return std::tie(p.source, p.direction); }
+template <is_a<Triangle> P> auto members(P& p) { return std::tie(p.vertex); }
+template <is_a<Triangle> P> auto lengths(P& p) { return std::tie(p.vertex); }
+template <is_a<OrientedBox> P> auto members(P& p) { return std::tie(p.center, p.extent, p.axis); }
+template <is_a<OrientedBox> P> auto lengths(P& p) { return std::tie(p.center, p.extent); }
+template <is_a<Polygon> P> auto members(P& p) { return std::tie(p.vertex, p.n); }
+template <is_a<Polygon> P> auto lengths(P& p) { return std::make_tuple(std::span(p.vertex.data(), std::size_t(p.n))); }
+template <is_a<Fan> P> auto members(P& p) { return std::tie(p.center, p.ring, p.n, p.closed); }
+template <is_a<Fan> P> auto lengths(P& p) { return std::make_tuple(std::ref(p.center), std::span(p.ring.data(), std::size_t(p.n))); }
+
+/// The members of a primitive that do not scale with it: an oriented box's unit axes.
+template <class T> auto directions(OrientedBox<T>& p) { return std::tie(p.axis); }
+template <class T> auto directions(const OrientedBox<T>& p) { return std::tie(p.axis); }
+/// ... none for the other primitives.
+template <class P> std::tuple<> directions(const P&) { return {}; }
 
 namespace detail {
-// one member converted: a coordinate by T(x), a vector and an array element-wise, a count or a
-// flag copied
-template <class D, class S>
-void convert_member(D& d, const S& s) {
+// f(x) for a scalar or a point x, and for each element of an array or a span of them
+template <class X, class Fn>
+void each_value(X&& x, Fn& f) {
+  using D = std::remove_cvref_t<X>;
+  if constexpr (requires { x.rows(); } || std::is_arithmetic_v<D> || !requires { x.size(); x[0]; }) {
+    f(x);
+  } else {
+    for (auto&& e : x) each_value(e, f);
+  }
+}
+template <class Tuple, class Fn>
+void each_in(Tuple&& t, Fn& f) {
+  std::apply([&](auto&&... x) { (each_value(x, f), ...); }, std::forward<Tuple>(t));
+}
+}  // namespace detail
+
+/// f(x) for every scalar and point among p's lengths, in declaration order.
+template <class P, class Fn>
+void for_each_length(P& p, Fn&& f) {
+  detail::each_in(lengths(p), f);
+}
+/// f(x) for every scalar and point among p's lengths, then among its directions.
+template <class P, class Fn>
+void for_each_value(P& p, Fn&& f) {
+  detail::each_in(lengths(p), f);
+  detail::each_in(directions(p), f);
+}
+
+template <class T, template <class> class P, class U, class Conv>
+P<T> rebind_with(const P<U>& p, Conv&& conv);
+
+namespace detail {
+// one member converted: a coordinate by conv(x), a vector and an array element-wise, a nested
+// primitive by rebind_with, a count or a flag copied
+template <class T, class D, class S, class Conv>
+void convert_member(D& d, const S& s, Conv& conv) {
   if constexpr (std::is_same_v<S, int> || std::is_same_v<S, bool>) {
     d = s;
-  } else if constexpr (requires { s.size(); s[0]; typename S::value_type; } && !requires { s.rows(); }) {
-    for (std::size_t i = 0; i < s.size(); ++i) convert_member(d[i], s[i]);
   } else if constexpr (requires { s.rows(); }) {
-    for (int i = 0; i < 3; ++i) d[i] = typename D::Scalar(s[i]);
+    for (int i = 0; i < 3; ++i) d[i] = conv(s[i]);
+  } else if constexpr (requires { s.size(); s[0]; typename S::value_type; }) {
+    for (std::size_t i = 0; i < s.size(); ++i) convert_member<T>(d[i], s[i], conv);
+  } else if constexpr (requires { members(s); }) {
+    d = rebind_with<T>(s, conv);
   } else {
-    d = D(s);
+    d = conv(s);
   }
 }
 }  // namespace detail
 
-/// The primitive p over the number type T (each coordinate converted by T(x)).
-template <class T, template <class> class P, class U>
-P<T> rebind(const P<U>& p) {
+/// The primitive p over the number type T, each coordinate converted by conv(x) (a count or a
+/// flag copied).
+template <class T, template <class> class P, class U, class Conv>
+P<T> rebind_with(const P<U>& p, Conv&& conv) {
   P<T> out{};
   auto dst = members(out);
   const auto src = members(p);
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (detail::convert_member(std::get<I>(dst), std::get<I>(src)), ...);
+    (detail::convert_member<T>(std::get<I>(dst), std::get<I>(src), conv), ...);
   }(std::make_index_sequence<std::tuple_size_v<decltype(src)>>{});
   return out;
 }
-
-/// A point over T (a Vec3 as a query's argument), each coordinate converted by T(x).
-template <class T, class U>
-Vec3<T> rebind(const Vec3<U>& p) {
-  return Vec3<T>(T(p[0]), T(p[1]), T(p[2]));
+/// A point over T, each coordinate converted by conv(x).
+template <class T, class U, class Conv>
+Vec3<T> rebind_with(const Vec3<U>& p, Conv&& conv) {
+  return Vec3<T>(conv(p[0]), conv(p[1]), conv(p[2]));
 }
 /// A polygon over T: its n vertices converted, the unused ones zero (they may hold anything).
-template <class T, class U>
-Polygon<T> rebind(const Polygon<U>& p) {
+template <class T, class U, class Conv>
+Polygon<T> rebind_with(const Polygon<U>& p, Conv&& conv) {
   Polygon<T> out;
   out.n = p.n;
   for (int k = 0; k < Polygon<T>::max_vertices; ++k)
-    out.vertex[k] = k < p.n ? Vec3<T>(T(p.vertex[k][0]), T(p.vertex[k][1]), T(p.vertex[k][2])) : zero_vec<T>();
+    out.vertex[k] = k < p.n ? rebind_with<T>(p.vertex[k], conv) : zero_vec<T>();
   return out;
 }
 /// A fan over T: its n ring vertices converted, the unused ones zero.
-template <class T, class U>
-Fan<T> rebind(const Fan<U>& f) {
+template <class T, class U, class Conv>
+Fan<T> rebind_with(const Fan<U>& f, Conv&& conv) {
   Fan<T> out;
   out.n = f.n;
   out.closed = f.closed;
-  out.center = Vec3<T>(T(f.center[0]), T(f.center[1]), T(f.center[2]));
-  for (int k = 0; k < Fan<T>::max_ring; ++k)
-    out.ring[k] = k < f.n ? Vec3<T>(T(f.ring[k][0]), T(f.ring[k][1]), T(f.ring[k][2])) : zero_vec<T>();
+  out.center = rebind_with<T>(f.center, conv);
+  for (int k = 0; k < Fan<T>::max_ring; ++k) out.ring[k] = k < f.n ? rebind_with<T>(f.ring[k], conv) : zero_vec<T>();
   return out;
+}
+
+/// The primitive (or the point) p over the number type T, each coordinate converted by T(x).
+template <class T, class P>
+auto rebind(const P& p) {
+  return rebind_with<T>(p, [](const auto& x) { return T(x); });
 }
 
 // ---- results ----
@@ -156,5 +230,23 @@ template <class S> bool classification_of(const Proximity<S>& r) { return r.inte
 template <class S> bool classification_of(const TriangleIntersection<S>& r) { return r.intersect; }
 template <class S> bool classification_of(const Separation<S>& r) { return r.intersect; }
 inline bool classification_of(bool r) { return r; }
+
+/// A result over any number type S, each field converted to F by round(x) (a value of S to F);
+/// a bool or an int field is its own. One field-wise conversion for every result type: the
+/// robust tier's rounding of its bounded and its double results, and the truth API's.
+template <class F, template <class> class R, class S, class Round>
+R<F> rounded_by(const R<S>& r, Round round) {
+  R<F> out;
+  zip_fields(r, out, [&](const char*, const auto& x, auto& y) {
+    using X = std::remove_cvref_t<decltype(x)>;
+    if constexpr (std::is_same_v<X, bool> || std::is_same_v<X, int>)
+      y = x;
+    else if constexpr (requires { x.rows(); })
+      for (int i = 0; i < 3; ++i) y[i] = round(x[i]);
+    else
+      y = round(x);
+  });
+  return out;
+}
 
 }  // namespace cdref

@@ -11,6 +11,7 @@
 // error bound of the decision boundary" is checked.
 #pragma once
 
+#include <cdref/fields.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <algorithm>
@@ -43,20 +44,16 @@ template <class F>
 bool near_range_end(const Vec3<F>& v) {
   return near_range_end(v[0]) || near_range_end(v[1]) || near_range_end(v[2]);
 }
-template <class F>
-bool near_range_end(const Sphere<F>& s) { return near_range_end(s.center) || near_range_end(s.radius); }
-template <class F>
-bool near_range_end(const Box<F>& b) { return near_range_end(b.center) || near_range_end(b.extent); }
-template <class F>
-bool near_range_end(const Segment<F>& s) { return near_range_end(s.source) || near_range_end(s.target); }
-template <class F>
-bool near_range_end(const Ray<F>& r) { return near_range_end(r.source) || near_range_end(r.direction); }
-template <class F> F scalar_of(const Sphere<F>&);
-template <class F> F scalar_of(const Box<F>&);
-template <class F> F scalar_of(const Segment<F>&);
-template <class F> F scalar_of(const Ray<F>&);
-template <class F> F scalar_of(const Triangle<F>&);
-template <class F> F scalar_of(const OrientedBox<F>&);
+/// ... of any primitive: any of its coordinates (fields.hpp's for_each_value).
+template <template <class> class P, class F>
+bool near_range_end(const P<F>& p) {
+  bool near = false;
+  for_each_value(p, [&](const auto& x) { near = near || near_range_end(x); });
+  return near;
+}
+// A primitive's number type (in unevaluated contexts).
+template <template <class> class P, class F>
+F scalar_of(const P<F>&);
 }  // namespace detail
 
 namespace detail {
@@ -82,15 +79,9 @@ template <class F>
 void span_of(const Vec3<F>& v, Span<F>& s) {
   for (int i = 0; i < 3; ++i) s.add(v[i], i);
 }
-template <class F> void span_of(const Sphere<F>& s, Span<F>& o) { span_of(s.center, o); span_of(s.radius, o); }
-template <class F> void span_of(const Box<F>& b, Span<F>& o) { span_of(b.center, o); span_of(b.extent, o); }
-template <class F> void span_of(const Segment<F>& s, Span<F>& o) { span_of(s.source, o); span_of(s.target, o); }
-template <class F> void span_of(const Ray<F>& r, Span<F>& o) { span_of(r.source, o); span_of(r.direction, o); }
-template <class F> void span_of(const Triangle<F>& t, Span<F>& o) { for (const auto& v : t.vertex) span_of(v, o); }
-template <class F> void span_of(const OrientedBox<F>& b, Span<F>& o) {
-  span_of(b.center, o);
-  span_of(b.extent, o);
-  for (const auto& a : b.axis) span_of(a, o);
+template <template <class> class P, class F>
+void span_of(const P<F>& p, Span<F>& o) {
+  for_each_value(p, [&](const auto& x) { span_of(x, o); });
 }
 }  // namespace detail
 
@@ -154,24 +145,15 @@ Decision within_range(Decision d, const A& a, const B& b) {
 // ray-sphere-cast --query segment-sphere-cast --query segment-sphere --impl robust-float`), and
 // the box casts' entry point 1.3e4 at 10^8 box sizes.
 namespace detail {
-inline Vec3<double> widened(const Vec3<float>& v) { return Vec3<double>(double(v[0]), double(v[1]), double(v[2])); }
-inline Segment<double> widened(const Segment<float>& s) { return {widened(s.source), widened(s.target)}; }
-inline Ray<double> widened(const Ray<float>& r) { return {widened(r.source), widened(r.direction)}; }
-inline Sphere<double> widened(const Sphere<float>& s) { return {widened(s.center), double(s.radius)}; }
-inline Box<double> widened(const Box<float>& b) { return {widened(b.center), widened(b.extent)}; }
-inline Vec3<float> rounded(const Vec3<double>& v) { return Vec3<float>(float(v[0]), float(v[1]), float(v[2])); }
-inline Cast<float> rounded(const Cast<double>& c) {
-  Cast<float> r;
-  r.hit = c.hit, r.enters = c.enters, r.unbounded_exit = c.unbounded_exit;
-  r.lambda_enter = float(c.lambda_enter), r.lambda_exit = float(c.lambda_exit);
-  r.point = rounded(c.point), r.normal = rounded(c.normal);
-  return r;
+// a float primitive as the same primitive over double (exact)
+template <class P>
+auto widened(const P& p) {
+  return rebind<double>(p);
 }
-inline Proximity<float> rounded(const Proximity<double>& d) {
-  Proximity<float> r;
-  r.intersect = d.intersect, r.distance = float(d.distance), r.depth = float(d.depth);
-  r.on_a = rounded(d.on_a), r.on_b = rounded(d.on_b), r.closest = rounded(d.closest);
-  return r;
+// a double result with each value rounded to float
+template <template <class> class R>
+R<float> rounded(const R<double>& r) {
+  return rounded_by<float>(r, [](double x) { return float(x); });
 }
 }  // namespace detail
 

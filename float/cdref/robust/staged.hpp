@@ -120,27 +120,8 @@ F rounded_value(const B& x) {
     return x.rounded_long_double();
 }
 
-/// A result over any number type S, each field rounded to F by round(x) (a value of S to F;
-/// fields.hpp's zip_fields); a bool or an int field is its own. One field-wise rounding for
-/// every result type: rounded() below, and the truth API's (fuzz/truth_api.hpp), which
-/// rounds the exact types too.
-template <class F, template <class> class R, class S, class Round>
-R<F> rounded_by(const R<S>& r, Round round) {
-  R<F> out;
-  zip_fields(r, out, [&](const char*, const auto& x, auto& y) {
-    using X = std::remove_cvref_t<decltype(x)>;
-    if constexpr (std::is_same_v<X, bool> || std::is_same_v<X, int>)
-      y = x;
-    else if constexpr (requires { x.rows(); })
-      for (int i = 0; i < 3; ++i) y[i] = round(x[i]);
-    else
-      y = round(x);
-  });
-  return out;
-}
-
-/// A result over a bounded type, each field rounded correctly to F, or oracle::uncertain
-/// where one cannot be; a bool is its own.
+/// A result over a bounded type, each field rounded correctly to F (fields.hpp's rounded_by), or
+/// oracle::uncertain where one cannot be; a bool is its own.
 template <class F, template <class> class R, class B>
 R<F> rounded(const R<B>& r) {
   return rounded_by<F>(r, [](const auto& x) { return rounded_value<F>(x); });

@@ -77,27 +77,20 @@ struct Words {
     return w ? *w : W(0.0);
   }
 };
-template <class F>
-Segment<W> lift_words(const Segment<F>& s, Words& w) { return {w(s.source), w(s.target)}; }
-template <class F>
-Ray<W> lift_words(const Ray<F>& r, Words& w) { return {w(r.source), w(r.direction)}; }
-template <class F>
-Triangle<W> lift_words(const Triangle<F>& t, Words& w) { return {{w(t.vertex[0]), w(t.vertex[1]), w(t.vertex[2])}}; }
-template <class F>
-Box<W> lift_words(const Box<F>& b, Words& w) { return {w(b.center), w(b.extent)}; }
-template <class F>
-OrientedBox<W> lift_words(const OrientedBox<F>& b, Words& w) {
-  return {w(b.center), w(b.extent), {w(b.axis[0]), w(b.axis[1]), w(b.axis[2])}};
+// A primitive as exact double words (fields.hpp's rebind_with: its description there).
+template <class P>
+auto lift_words(const P& p, Words& w) {
+  return rebind_with<W>(p, w);
 }
-template <class F>
-Sphere<W> lift_words(const Sphere<F>& s, Words& w) { return {w(s.center), w(s.radius)}; }
 // Two triangles as one argument (a shot's entries into two triangles compared: ray_triangle.hpp).
 template <class T>
 struct TrianglePair {
   Triangle<T> a, b;
 };
-template <class F>
-TrianglePair<W> lift_words(const TrianglePair<F>& t, Words& w) { return {lift_words(t.a, w), lift_words(t.b, w)}; }
+template <class T> auto members(TrianglePair<T>& t) { return std::tie(t.a, t.b); }
+template <class T> auto members(const TrianglePair<T>& t) { return std::tie(t.a, t.b); }
+template <class T> auto lengths(TrianglePair<T>& t) { return std::tuple_cat(lengths(t.a), lengths(t.b)); }
+template <class T> auto lengths(const TrianglePair<T>& t) { return std::tuple_cat(lengths(t.a), lengths(t.b)); }
 
 // A double word's value in F (hi + lo rounded to F).
 template <class F>
@@ -139,54 +132,40 @@ template <class F>
 void largest(F x, F& m) { m = std::max(m, F(std::fabs(x))); }
 template <class F>
 void largest(const Vec3<F>& v, F& m) { for (int i = 0; i < 3; ++i) largest(v[i], m); }
-template <class F> void largest(const Segment<F>& s, F& m) { largest(s.source, m), largest(s.target, m); }
-template <class F> void largest(const Ray<F>& r, F& m) { largest(r.source, m), largest(r.direction, m); }
-template <class F> void largest(const Triangle<F>& t, F& m) { for (const auto& v : t.vertex) largest(v, m); }
-template <class F> void largest(const Box<F>& b, F& m) { largest(b.center, m), largest(b.extent, m); }
-template <class F> void largest(const OrientedBox<F>& b, F& m) { largest(b.center, m), largest(b.extent, m); }
-template <class F> void largest(const Sphere<F>& s, F& m) { largest(s.center, m), largest(s.radius, m); }
-template <class F> Segment<F> scaled(const Segment<F>& s, const Scale& c) { return {c.len(s.source), c.len(s.target)}; }
-template <class F> Ray<F> scaled(const Ray<F>& r, const Scale& c) { return {c.len(r.source), c.len(r.direction)}; }
-template <class F>
-Triangle<F> scaled(const Triangle<F>& t, const Scale& c) {
-  return {{c.len(t.vertex[0]), c.len(t.vertex[1]), c.len(t.vertex[2])}};
+// ... the largest magnitude among a primitive's lengths (fields.hpp's for_each_length; an
+// oriented box's axes are not lengths)
+template <template <class> class P, class F>
+void largest(const P<F>& p, F& m) {
+  for_each_length(p, [&](const auto& x) { largest(x, m); });
 }
-template <class F> Box<F> scaled(const Box<F>& b, const Scale& c) { return {c.len(b.center), c.len(b.extent)}; }
-template <class F>
-OrientedBox<F> scaled(const OrientedBox<F>& b, const Scale& c) {
-  return {c.len(b.center), c.len(b.extent), b.axis};
-}
-template <class F> Sphere<F> scaled(const Sphere<F>& s, const Scale& c) { return {c.len(s.center), c.len(s.radius)}; }
-template <class F> void largest(const TrianglePair<F>& t, F& m) { largest(t.a, m), largest(t.b, m); }
-template <class F> void largest(const Polygon<F>& p, F& m) { for (int i = 0; i < p.n; ++i) largest(p.vertex[i], m); }
-template <class F>
-Polygon<F> scaled(Polygon<F> p, const Scale& c) {
-  for (int i = 0; i < p.n; ++i) p.vertex[i] = c.len(p.vertex[i]);
+// A primitive with every length scaled by 2^k.
+template <template <class> class P, class F>
+P<F> scaled(P<F> p, const Scale& c) {
+  for_each_length(p, [&](auto& x) { x = c.len(x); });
   return p;
 }
-template <class F> TrianglePair<F> scaled(const TrianglePair<F>& t, const Scale& c) { return {scaled(t.a, c), scaled(t.b, c)}; }
+// Whether two primitives have the same lengths (a scaling's round trip is exact).
 template <class F> bool same(F x, F y) { return x == y; }
 template <class F> bool same(const Vec3<F>& x, const Vec3<F>& y) { return x == y; }
-template <class F> bool same(const Segment<F>& x, const Segment<F>& y) { return same(x.source, y.source) && same(x.target, y.target); }
-template <class F> bool same(const Ray<F>& x, const Ray<F>& y) { return same(x.source, y.source) && same(x.direction, y.direction); }
-template <class F>
-bool same(const Triangle<F>& x, const Triangle<F>& y) {
-  return same(x.vertex[0], y.vertex[0]) && same(x.vertex[1], y.vertex[1]) && same(x.vertex[2], y.vertex[2]);
+template <class X, class Y>
+bool same_member(const X& x, const Y& y) {
+  if constexpr (requires { x.rows(); } || !requires { x.size(); x[0]; }) {
+    return same(x, y);
+  } else {
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (!same_member(x[i], y[i])) return false;
+    return true;
+  }
 }
-template <class F> bool same(const Box<F>& x, const Box<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
-template <class F>
-bool same(const OrientedBox<F>& x, const OrientedBox<F>& y) { return same(x.center, y.center) && same(x.extent, y.extent); }
-template <class F> bool same(const Sphere<F>& x, const Sphere<F>& y) { return same(x.center, y.center) && same(x.radius, y.radius); }
-template <class F> bool same(const TrianglePair<F>& x, const TrianglePair<F>& y) { return same(x.a, y.a) && same(x.b, y.b); }
-template <class F>
-bool same(const Polygon<F>& x, const Polygon<F>& y) {
-  for (int i = 0; i < x.n; ++i)
-    if (!same(x.vertex[i], y.vertex[i])) return false;
-  return x.n == y.n;
+template <template <class> class P, class F>
+bool same(const P<F>& x, const P<F>& y) {
+  const auto lx = lengths(x);
+  const auto ly = lengths(y);
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return (same_member(std::get<I>(lx), std::get<I>(ly)) && ...);
+  }(std::make_index_sequence<std::tuple_size_v<decltype(lx)>>{});
 }
-template <class F> F scalar_of(const Triangle<F>&);
-template <class F> F scalar_of(const OrientedBox<F>&);
-template <class F> F scalar_of(const Polygon<F>&);
 
 template <class A, class B>
 Scale scale_of(const A& a, const B& b) {
@@ -215,30 +194,25 @@ struct HotWords {};
 // its formulation at W two or three times over, at float, double and long double: 1.2 MB of
 // code each for sphere-triangle and sphere-obb, and two thirds of their groups' compile time.)
 // Where the CPU has the FMA extension (CDREF_FMA_CLONES) a copy compiled for it runs, so that
-// std::fma in the double-word products is the instruction: flattened for a HotWords formulation
-// (every call in it inlined, as inside the caller before), with the compiler's usual inlining
-// for the others.
+// std::fma in the double-word products is the instruction: eft.hpp's with_fma (every call
+// flattened into it, as inside the caller before) for a HotWords formulation, a copy with the
+// compiler's usual inlining for the others.
 #if CDREF_FMA_CLONES
 template <class Fn, class AW, class BW>
 [[gnu::target("fma"), gnu::noinline]] auto words_call_fused(const Fn& f, const AW& a, const BW& b) {
   return f(a, b);
 }
-template <class Fn, class AW, class BW>
-[[gnu::target("fma"), gnu::flatten, gnu::noinline]] auto words_call_flat(const Fn& f, const AW& a, const BW& b) {
-  return f(a, b);
-}
 #endif
 template <class Fn, class AW, class BW>
 [[gnu::noinline]] auto words_call(const Fn& f, const AW& a, const BW& b) {
+  if constexpr (std::is_base_of_v<HotWords, Fn>) {
+    return with_fma([&] { return f(a, b); });
+  } else {
 #if CDREF_FMA_CLONES
-  if (cpu_fma()) {
-    if constexpr (std::is_base_of_v<HotWords, Fn>)
-      return words_call_flat(f, a, b);
-    else
-      return words_call_fused(f, a, b);
-  }
+    if (cpu_fma()) return words_call_fused(f, a, b);
 #endif
-  return f(a, b);
+    return f(a, b);
+  }
 }
 
 // Runs f on the primitives as double words (scaled as above); nothing when they are not

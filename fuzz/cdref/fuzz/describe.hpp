@@ -18,29 +18,34 @@ namespace cdref::fuzz::spec {
 // correctly to double (exact types).
 enum class Mode { full, classify, first_rounded };
 
-template <class S>
-bool finish(const Cast<S>& c, Mode m) {
-  if (m == Mode::first_rounded) return c.hit != (round_double(c.lambda_enter) < 0);  // never negative
-  return c.hit;
-}
-template <class S>
-bool finish(const Proximity<S>& p, Mode m) {
-  if (m == Mode::first_rounded) return p.intersect != (round_double(p.distance) < 0);  // never negative
-  return p.intersect;
-}
-inline bool finish(bool intersect, Mode) { return intersect; }
-template <class S>
-bool finish(const TriangleIntersection<S>& r, Mode m) {
-  if (m == Mode::first_rounded) return r.intersect != (round_double(r.p[0]) > round_double(r.q[0]));  // never
-  return r.intersect;
-}
-template <class S>
-bool finish(const FanCast<S>& c, Mode m) {
-  return finish(static_cast<const Cast<S>&>(c.first), m);
-}
-template <class S>
-bool finish(const Separation<S>& s, Mode) {
-  return s.intersect;
+// A row's answer from a query's result: its classification; with Mode::first_rounded, after
+// rounding its first output that is not a label (the first value column, spec.hpp's columns_of)
+// correctly to double, the rounded value kept from the optimizer by a comparison that never
+// holds (an exact value is never NaN).
+template <class Spec, class R>
+bool finish(const R& r, Mode m) {
+  const bool c = classification_of(r);
+  if constexpr (!std::is_same_v<R, bool>) {
+    if (m != Mode::first_rounded) return c;
+    const std::vector<int>& col = columns_of<Spec, R>();
+    std::size_t i = 0;
+    bool done = false, never = false;
+    zip_fields(r, r, [&](const char*, const auto& x, const auto&) {
+      using X = std::remove_cvref_t<decltype(x)>;
+      if (col[i++] < 0 || done) return;
+      if constexpr (!std::is_same_v<X, bool> && !std::is_same_v<X, int>) {
+        double v;
+        if constexpr (requires { x.rows(); })
+          v = round_double(x[0]);
+        else
+          v = round_double(x);
+        never = v != v;
+        done = true;
+      }
+    });
+    return c != never;
+  }
+  return c;
 }
 
 template <class Spec, class T>
@@ -77,7 +82,7 @@ TimedRow::Batch book_row(const std::vector<Inputs>& cases, Mode m) {
   auto p = prepare<Spec, T>(cases);
   if (m == Mode::classify)
     return batch_over(p, [](const auto& ab) { return Spec::book_pred(ab.first, ab.second); });
-  return batch_over(p, [m](const auto& ab) { return finish(Spec::book(ab.first, ab.second, unsigned(want_all)), m); });
+  return batch_over(p, [m](const auto& ab) { return finish<Spec>(Spec::book(ab.first, ab.second, unsigned(want_all)), m); });
 }
 // The truth's formulation at an exact type T (the book, unless the spec says otherwise).
 template <class Spec, class T>
@@ -86,7 +91,7 @@ TimedRow::Batch exact_row(const std::vector<Inputs>& cases, Mode m) {
   if (m == Mode::classify)
     return batch_over(p, [](const auto& ab) { return truth_predicate<Spec>(ab.first, ab.second); });
   return batch_over(
-      p, [m](const auto& ab) { return finish(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m); });
+      p, [m](const auto& ab) { return finish<Spec>(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m); });
 }
 // exact_row<Spec, CORE::Expr>, instantiated for every query in fuzz/queries/core_rows.cpp alone:
 // the query groups do not include CORE (cdref/exact/core_expr.hpp says what that saves).
@@ -104,12 +109,12 @@ TimedRow::Batch stable_row(const std::vector<Inputs>& cases, Mode m) {
   auto p = prepare<Spec, F>(cases);
   if (m == Mode::classify)
     return batch_over(p, [](const auto& ab) { return Spec::stable_pred(ab.first, ab.second); });
-  return batch_over(p, [m](const auto& ab) { return finish(Spec::stable(ab.first, ab.second, unsigned(want_all)), m); });
+  return batch_over(p, [m](const auto& ab) { return finish<Spec>(Spec::stable(ab.first, ab.second, unsigned(want_all)), m); });
 }
 template <class Spec, class T>
 TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
   auto p = prepare<Spec, T>(cases);
-  return batch_over(p, [](const auto& ab) { return finish(Spec::robust(ab.first, ab.second), Mode::full); });
+  return batch_over(p, [](const auto& ab) { return finish<Spec>(Spec::robust(ab.first, ab.second), Mode::full); });
 }
 
 // Rows (each answers the same prepared inputs; a row that computes a query's outputs asks

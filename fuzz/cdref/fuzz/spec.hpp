@@ -258,66 +258,63 @@ long double value(const S& x) {
     return static_cast<long double>(round_to<F>(x));
 }
 
+// The answer columns of a result type R under a spec's output groups (Spec::outputs()): for each
+// field of R in fields.hpp's zip_fields order, the first of its columns in Answer::v, or -1
+// where no output group names it (a cast's hit, a proximity's closest point). Computed once per
+// spec and result type; a group no field carries, or whose width is not its field's, is a
+// mistake in the spec, named when the spec is first used.
+template <class Spec, class R>
+const std::vector<int>& columns_of() {
+  static const std::vector<int> cols = [] {
+    const std::vector<Output> outs = Spec::outputs();
+    std::vector<int> c;
+    std::vector<bool> found(outs.size(), false);
+    const R r{};
+    zip_fields(r, r, [&](const char* name, const auto& x, const auto&) {
+      constexpr int width = requires { x.rows(); } ? 3 : 1;
+      int at = 0, col = -1;
+      for (std::size_t g = 0; g < outs.size(); at += outs[g].width, ++g)
+        if (outs[g].name == name) {
+          if (outs[g].width != width)
+            throw std::logic_error(std::string(Spec::name) + ": output " + name + " has width " +
+                                   std::to_string(outs[g].width) + ", its field " + std::to_string(width));
+          col = at;
+          found[g] = true;
+          break;
+        }
+      c.push_back(col);
+    });
+    for (std::size_t g = 0; g < outs.size(); ++g)
+      if (!found[g]) throw std::logic_error(std::string(Spec::name) + ": no field of its result is named " + outs[g].name);
+    return c;
+  }();
+  return cols;
+}
+
 // A query's result into an Answer: its classification (fields.hpp's classification_of), and
-// with `values` its outputs in schema order.
-template <class F, class S>
-void put(Answer& a, const Cast<S>& c, bool values) {
-  a.cls = classification_of(c);
-  if (!values) return;
-  a.v[0] = value<F>(c.lambda_enter);
-  a.v[1] = value<F>(c.lambda_exit);
-  for (int i = 0; i < 3; ++i) {
-    a.v[2 + i] = value<F>(c.point[i]);
-    a.v[5 + i] = value<F>(c.normal[i]);
-  }
-}
-template <class F, class S>
-void put(Answer& a, const TriangleCast<S>& c, bool values) {
-  put<F>(a, static_cast<const Cast<S>&>(c), values);
-  if (!values) return;
-  a.v[8] = value<F>(c.u);
-  a.v[9] = value<F>(c.v);
-}
-template <class F, class S>
-void put(Answer& a, const FanCast<S>& c, bool values) {
-  a.cls = classification_of(c);
-  if (!values) return;
-  a.v[0] = value<F>(c.first.lambda_enter);
-  for (int i = 0; i < 3; ++i) a.v[1 + i] = value<F>(c.first.point[i]);
-  a.v[4] = c.hits;
-}
-// two triangles: the classification; coplanar (a label), p and q
-template <class F, class S>
-void put(Answer& a, const TriangleIntersection<S>& r, bool values) {
+// with `values` its outputs in the spec's column order (columns_of): a label (a flag or an
+// index) as its number, every other value as the implementation of type F reports it (value).
+template <class Spec, class F, class R>
+void put(Answer& a, const R& r, bool values) {
   a.cls = classification_of(r);
-  if (!values) return;
-  a.v[0] = r.coplanar ? 1 : 0;
-  for (int i = 0; i < 3; ++i) {
-    a.v[1 + i] = value<F>(r.p[i]);
-    a.v[4 + i] = value<F>(r.q[i]);
+  if constexpr (!std::is_same_v<R, bool>) {
+    if (!values) return;
+    const std::vector<int>& col = columns_of<Spec, R>();
+    std::size_t i = 0;
+    zip_fields(r, r, [&](const char*, const auto& x, const auto&) {
+      const int c = col[i++];
+      if (c < 0) return;
+      using X = std::remove_cvref_t<decltype(x)>;
+      if constexpr (std::is_same_v<X, bool>)
+        a.v[c] = x ? 1 : 0;
+      else if constexpr (std::is_same_v<X, int>)
+        a.v[c] = x;
+      else if constexpr (requires { x.rows(); })
+        for (int k = 0; k < 3; ++k) a.v[c + k] = value<F>(x[k]);
+      else
+        a.v[c] = value<F>(x);
+    });
   }
-}
-template <class F, class S>
-void put(Answer& a, const Proximity<S>& p, bool values) {
-  a.cls = classification_of(p);
-  if (!values) return;
-  a.v[0] = value<F>(p.distance);
-  a.v[1] = value<F>(p.depth);
-  for (int i = 0; i < 3; ++i) {
-    a.v[2 + i] = value<F>(p.on_a[i]);
-    a.v[5 + i] = value<F>(p.on_b[i]);
-  }
-}
-template <class F>
-void put(Answer& a, bool intersect, bool) {
-  a.cls = intersect;
-}
-// A separating-axis test: its classification and, when apart, the index of the first
-// separating axis (a label; -1 when they intersect).
-template <class F, class S>
-void put(Answer& a, const Separation<S>& s, bool values) {
-  a.cls = classification_of(s);
-  if (values) a.v[0] = s.axis;
 }
 
 // ---- what a spec must have ----
@@ -463,7 +460,7 @@ Answer book_at(const Inputs& in, bool values, bool certified = false) {
   require_finite<Spec, T>(in);
   const auto [a, b] = Spec::template make<T>(in);
   Answer r;
-  put<F>(r, Spec::book(a, b, values ? unsigned(want_all) : 0u), values);
+  put<Spec, F>(r, Spec::book(a, b, values ? unsigned(want_all) : 0u), values);
   r.pred = certified ? r.cls : bool(Spec::book_pred(a, b));
   return r;
 }
@@ -474,7 +471,7 @@ Answer truth_at(const Inputs& in, bool values, bool certified = false) {
   require_finite<Spec, T>(in);
   const auto [a, b] = Spec::template make<T>(in);
   Answer r;
-  put<F>(r, truth_formulation<Spec>(a, b, values ? unsigned(want_all) : 0u), values);
+  put<Spec, F>(r, truth_formulation<Spec>(a, b, values ? unsigned(want_all) : 0u), values);
   r.pred = certified ? r.cls : truth_predicate<Spec>(a, b);
   return r;
 }
@@ -496,7 +493,7 @@ template <class Spec, class F>
 Answer robust_at(const Inputs& in) {
   const auto [a, b] = Spec::template make<F>(in);
   Answer r;
-  put<F>(r, Spec::robust(a, b), true);
+  put<Spec, F>(r, Spec::robust(a, b), true);
   r.pred = Spec::robust_pred(a, b);
   const robust::Decision d = Spec::robust_decide(a, b);
   if (d.value != r.cls)
@@ -512,7 +509,7 @@ template <class Spec, class F>
 Answer stable_at(const Inputs& in, bool values = true) {
   const auto [a, b] = Spec::template make<F>(in);
   Answer r;
-  put<F>(r, Spec::stable(a, b, values ? unsigned(want_all) : 0u), values);
+  put<Spec, F>(r, Spec::stable(a, b, values ? unsigned(want_all) : 0u), values);
   r.pred = Spec::stable_pred(a, b);
   return r;
 }
@@ -586,7 +583,7 @@ Answer formulation_at(const Inputs& in) {
   require_finite<Spec, T>(in);
   const auto [a, b] = Spec::template make<T>(in);
   Answer r;
-  put<F>(r, Spec::oracle_formulation(a, b, unsigned(want_all)), true);
+  put<Spec, F>(r, Spec::oracle_formulation(a, b, unsigned(want_all)), true);
   r.pred = r.cls;
   return r;
 }
@@ -714,7 +711,7 @@ bool oracle_rounded_of(const Inputs& in, Answer& r) {
     const auto [a, b] = Spec::template make<double>(in);
     RobustResult<Spec> p;
     if (!Spec::oracle_rounded(a, b, p)) return false;
-    put<double>(r, p, true);
+    put<Spec, double>(r, p, true);
     r.pred = r.cls;
     return true;
   } catch (const invalid_input&) {

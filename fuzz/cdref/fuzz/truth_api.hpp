@@ -26,11 +26,11 @@
 
 namespace cdref::fuzz::spec {
 
-// ---- a result rounded to F, field by field (staged.hpp's rounded_by; spec.hpp's value: exact
+// ---- a result rounded to F, field by field (fields.hpp's rounded_by; spec.hpp's value: exact
 // values rounded correctly, bounded ones where certain, or oracle::uncertain) ----
 template <class F, template <class> class R, class S>
 R<F> rounded(const R<S>& r) {
-  return staged::rounded_by<F>(r, [](const auto& x) { return static_cast<F>(value<F>(x)); });
+  return rounded_by<F>(r, [](const auto& x) { return static_cast<F>(value<F>(x)); });
 }
 template <class F> bool rounded(bool r) { return r; }
 
