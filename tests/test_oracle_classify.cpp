@@ -974,7 +974,7 @@ TEST_CASE("the oriented-box casts' double words decide as the solid at Gmpq, and
 namespace {
 // Every (entering, exiting) plane pair of Algorithm 3.3 that the box casts' second stage compares
 // (hit_box_logic's), on double words (bounded/word_bounds.hpp, AabbWords) against the exact
-// expansions (classify.hpp, BoxExact) on the same scaled inputs.
+// expansions (oracle/box_casts.hpp, BoxExact) on the same scaled inputs.
 template <bool Ray>
 void aabb_pairs_on_every_family(std::uint64_t& decided, std::uint64_t& left, std::uint64_t& near_decided) {
   using Q = queries::BoxCast<Ray>;
@@ -2862,7 +2862,7 @@ TEST_CASE("the sphere filter's sigma decides only with the exact sign, its crude
 
 TEST_CASE("sphere-box on double words decides only with the exact sign, down to exact touching",
           "[oracle-classify][sphere-box]") {
-  // Sphere-box's second stage (staged::sphere_box_words, classify.hpp). A box of extents 2^-20
+  // Sphere-box's second stage (staged::sphere_box_words, oracle/sphere_box.hpp). A box of extents 2^-20
   // to 2^20 around a centre up to 2^40 of its size from the origin (so that centre - box centre
   // cancels), a sphere touching a face, an edge or a corner to within +-2^-j of its radius for j
   // up to 60, and one case in eight placed to touch exactly (small dyadic inputs along one axis,
@@ -2929,7 +2929,7 @@ TEST_CASE("sphere-box on double words decides only with the exact sign, down to 
 
 TEST_CASE("sigma on double words decides only with the exact sign, within about u^2 of tangency",
           "[oracle-classify][sphere-cast]") {
-  // The sphere casts' and Algorithm 3.2's second stage (staged::sigma_words, classify.hpp).
+  // The sphere casts' and Algorithm 3.2's second stage (staged::sigma_words, oracle/sphere_casts.hpp).
   // Lines at d = rho (1 + delta) from the centre, delta = +-2^-j for j up to 60, the source
   // displaced along the line by up to 2^59 radii (so that the cross product's terms are up to
   // 2^59 times the result: its cancellation is what the bound must cover), radii from 2^-20 to

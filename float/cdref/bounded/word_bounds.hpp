@@ -192,7 +192,7 @@ int entering_order(const Word (&sL)[3], const Word (&sU)[3], const Word (&d)[3],
 
 // The plane pairs of Algorithm 3.3 on an axis-aligned box on double words: the oracle's second
 // stage of the box casts tries them between the filter's signs and the expansions
-// (exact/cdref/oracle/classify.hpp, BoxStaged). Y_i = s_i - c_i is an exact pair (Two-Sum), +-h_i
+// (exact/cdref/oracle/box_casts.hpp, BoxStaged). Y_i = s_i - c_i is an exact pair (Two-Sum), +-h_i
 // added by add_words; d_i = t_i - s_i an exact pair (a segment) or the direction. Their bounds
 // are of order u^2 of the magnitudes: only pairs within about that of a tie are left to the
 // expansions. Range: every input at most 2^100 (BoxStaged runs on scaled inputs).
@@ -289,7 +289,7 @@ inline int obb_cast_words(const Ray<double>& r, const OrientedBox<double>& b) {
 // same parameter), which leaves the case to the next stage; hit_box_logic then decides from the
 // signs exactly as the book does (box_cast_filter.hpp). The robust tier's certified decision
 // (robust/ray_box.hpp) runs it between the oracle's first stage and its own certificate; the
-// oracle's stage 2 (exact/cdref/oracle/classify.hpp, BoxStaged) takes the same plane pairs with
+// oracle's stage 2 (exact/cdref/oracle/box_casts.hpp, BoxStaged) takes the same plane pairs with
 // the exact expansions behind them. Range: in_word_range below (the scaling by a power of two
 // changes no sign).
 template <class Mul>

@@ -1,6 +1,6 @@
 // cdref/filter/box_cast_filter.hpp - the first stage of the classification oracle for a
-// segment or a ray cast on an axis-aligned box (Algorithm 3.3; exact/cdref/oracle/classify.hpp
-// holds the other stages and the model of the bounds: u = 2^-53, gamma_K, the range checks),
+// segment or a ray cast on an axis-aligned box (Algorithm 3.3; exact/cdref/oracle/box_casts.hpp
+// holds the other stages, oracle/expansions.hpp the model of the bounds: u = 2^-53, gamma_K, the range checks),
 // with the helpers every stage-1 filter there uses. Plain double arithmetic on the query's
 // inputs, so that both the oracle and the robust tier's certified decisions at double
 // (robust/ray_box.hpp, and segment-box and ray-box in robust/separating_axes.hpp) run it first:

@@ -1,7 +1,7 @@
 // cdref/filter/sphere_filter.hpp - the first stage of the classification oracle for a segment
 // or a ray cast on a sphere (Algorithm 3.1), for Algorithm 3.2 and for sphere-box (exact/cdref/oracle/
-// classify.hpp holds the other stages, the polynomials these signs decide and the model of the
-// bounds: u = 2^-53, gamma_K, the range checks). Plain double arithmetic on the query's inputs,
+// sphere_casts.hpp and sphere_box.hpp hold the other stages and the polynomials these signs
+// decide, expansions.hpp the model of the bounds: u = 2^-53, gamma_K, the range checks). Plain double arithmetic on the query's inputs,
 // so that both the oracle and the robust tier's certified decisions at double
 // (robust/ray_sphere.hpp, robust/segment_sphere.hpp, robust/sphere_box.hpp) run it first: where it decides (1 a hit,
 // 0 a miss; `unknown` leaves the case to the next stage), its answer is the book's at an exact
