@@ -4,7 +4,7 @@
 // inputs; expansions.hpp: the model of the three stages):
 //   box-box         per axis |a - b| <= ea + eb <=> sign(ea + eb - |a - b|) >= 0.
 //
-// Included by <cdref/oracle/classify.hpp>, which runs the stages (include that).
+// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -54,10 +54,5 @@ inline int expansion(const Box<double>& a0, const Box<double>& b0) {
 inline bool rational(const Box<double>& a, const Box<double>& b) { return book::intersect(toq(a), toq(b)); }
 
 }  // namespace staged
-
-// the oracle of this query (the stages in order: classify.hpp's filter_first)
-inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
-  return staged::filter_first(used, a, "box A", b, "box B");
-}
 
 }  // namespace cdref::oracle

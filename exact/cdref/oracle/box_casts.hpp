@@ -14,7 +14,7 @@
 //                   n = -(s - c) -+ h (3 inputs), d = |target - source| or |direction|.
 //                   Ties between planes change which plane the book keeps, never the decision.
 //
-// Included by <cdref/oracle/classify.hpp>, which runs the stages (include that).
+// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -112,13 +112,5 @@ inline bool rational(const Segment<double>& s, const Box<double>& b) { return bo
 inline bool rational(const Ray<double>& s, const Box<double>& b) { return book::hit(toq(s), toq(b)); }
 
 }  // namespace staged
-
-// the oracle of this query (the stages in order: classify.hpp's filter_first)
-inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
-  return staged::filter_first(used, seg, "segment", box, "box");
-}
-inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used = nullptr) {
-  return staged::filter_first(used, ray, "ray", box, "box");
-}
 
 }  // namespace cdref::oracle

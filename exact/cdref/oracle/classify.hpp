@@ -1,7 +1,10 @@
 // cdref/oracle/classify.hpp - the fast exact classification oracle for sphere-sphere, the
 // sphere casts, segment-sphere, box-box, the box casts and sphere-box at double inputs: each
-// query's stages in its own file (expansions.hpp says what they share and how each is exact), run
-// here in order: the filter, the double words or the expansions, then the rationals.
+// query's stages are in its own file (sphere_sphere.hpp, sphere_casts.hpp, box_box.hpp,
+// box_casts.hpp, sphere_box.hpp; expansions.hpp says what they share and how each is exact);
+// this file runs them in order (the filter, the double words or the expansions, then the
+// rationals) and gives each query's classify(). A header that needs one query's stages alone
+// (separating_axes.hpp takes sphere-box's) includes that query's file, not this one.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -119,4 +122,32 @@ bool filter_first(Stage* used, const A& a, const char* na, const B& b, const cha
 }
 
 }  // namespace staged
+
+// ---- the oracle: validation as the book does it (after the filter where it is folded into
+// the filter's range tests, above), then the stages ----
+inline bool classify(const Sphere<double>& a, const Sphere<double>& b, Stage* used = nullptr) {
+  return staged::filter_first(used, a, "sphere A", b, "sphere B");
+}
+inline bool classify(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", sp, "sphere");
+}
+inline bool classify(const Ray<double>& ray, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, ray, "ray", sp, "sphere");
+}
+inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", sp, "sphere", staged::alg32{});
+}
+inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
+  return staged::filter_first(used, a, "box A", b, "box B");
+}
+inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", box, "box");
+}
+inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, ray, "ray", box, "box");
+}
+inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, sp, "sphere", box, "box");
+}
+
 }  // namespace cdref::oracle

@@ -360,11 +360,6 @@ int signed_squares(const double (&X)[N], const double (&L)[N], const double (&ep
 using rational_inputs::toq;
 inline int certain_or_unknown(robust::Decision d) { return d.certain ? int(d.value) : unknown; }
 
-// The stages in order after the input checks (classify.hpp defines it, after every query's
-// stages: a query's classify() calls it).
-template <class A, class B, class... Tag>
-bool filter_first(Stage* used, const A& a, const char* na, const B& b, const char* nb, Tag... tag);
-
 }  // namespace staged
 
 }  // namespace cdref::oracle

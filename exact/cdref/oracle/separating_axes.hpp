@@ -37,7 +37,7 @@
 #include <cdref/cdref.hpp>
 #include <cdref/exact/rationals.hpp>
 #include <cdref/bounded/bounded.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/sphere_box.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/filter/sat_filter.hpp>
 #include <cdref/filter/sat_words.hpp>
@@ -145,7 +145,7 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 namespace sphere_obb {
 // (as_axis_aligned: filter/sat_filter.hpp)
 // Stage 2: an axis-aligned box takes sphere-box's second stage and then its exact sign on
-// expansions (classify.hpp: unknown only out of its scaled range); any other box the two
+// expansions (oracle/sphere_box.hpp: unknown only out of its scaled range); any other box the two
 // certificates on double words, then the robust tier's evaluation of the whole formulation.
 inline int double_word(const Sphere<double>& s, const OrientedBox<double>& b) {
   if (Box<double> box; as_axis_aligned(b, box)) {

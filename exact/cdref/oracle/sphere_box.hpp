@@ -6,7 +6,7 @@
 //   sphere-box      v_i = clamp(c_i, -h_i, h_i) - c_i, |v|^2 <= rho^2 with c = centre - box
 //                   centre. |v_i| = max(0, |c_i| - h_i) whichever branch the book takes.
 //
-// Included by <cdref/oracle/classify.hpp>, which runs the stages (include that).
+// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -119,10 +119,5 @@ inline int double_word(const Sphere<double>& a, const Box<double>& b) {
 }
 
 }  // namespace staged
-
-// the oracle of this query (the stages in order: classify.hpp's filter_first)
-inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
-  return staged::filter_first(used, sp, "sphere", box, "box");
-}
 
 }  // namespace cdref::oracle

@@ -18,7 +18,7 @@
 //                   agree on every input (the test checks it on every family); the oracle keeps
 //                   both branch structures and both names.
 //
-// Included by <cdref/oracle/classify.hpp>, which runs the stages (include that).
+// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -280,16 +280,5 @@ inline int double_word(const Segment<double>& s, const Sphere<double>& b, alg32)
 }
 
 }  // namespace staged
-
-// the oracle of this query (the stages in order: classify.hpp's filter_first)
-inline bool classify(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
-  return staged::filter_first(used, seg, "segment", sp, "sphere");
-}
-inline bool classify(const Ray<double>& ray, const Sphere<double>& sp, Stage* used = nullptr) {
-  return staged::filter_first(used, ray, "ray", sp, "sphere");
-}
-inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
-  return staged::filter_first(used, seg, "segment", sp, "sphere", staged::alg32{});
-}
 
 }  // namespace cdref::oracle

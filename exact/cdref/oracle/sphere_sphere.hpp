@@ -4,7 +4,7 @@
 // inputs; expansions.hpp: the model of the three stages):
 //   sphere-sphere   S^2 - |D|^2 >= 0, D = cA - cB, S = rhoA + rhoB.
 //
-// Included by <cdref/oracle/classify.hpp>, which runs the stages (include that).
+// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
@@ -56,10 +56,5 @@ inline bool rational(const Sphere<double>& a, const Sphere<double>& b) { return 
 inline int double_word(const Sphere<double>& a, const Sphere<double>& b) { return certain_or_unknown(robust::decide(a, b)); }
 
 }  // namespace staged
-
-// the oracle of this query (the stages in order: classify.hpp's filter_first)
-inline bool classify(const Sphere<double>& a, const Sphere<double>& b, Stage* used = nullptr) {
-  return staged::filter_first(used, a, "sphere A", b, "sphere B");
-}
 
 }  // namespace cdref::oracle
