@@ -47,6 +47,9 @@ namespace cdref {
 namespace detail {
 template <template <class> class K, class T>
 void kind_of(const K<T>&);
+// the vertices a polygon or a fan uses: n, kept within its array (a polygon not yet checked may
+// say anything: nothing outside the array is read)
+constexpr std::size_t in_use(int n, int max) { return std::size_t(n < 0 ? 0 : n > max ? max : n); }
 }  // namespace detail
 /// P is a K<T> for some T, const or not (a primitive's description below takes either).
 template <class P, template <class> class K>
@@ -68,9 +71,9 @@ template <is_a<Triangle> P> auto lengths(P& p) { return std::tie(p.vertex); }
 template <is_a<OrientedBox> P> auto members(P& p) { return std::tie(p.center, p.extent, p.axis); }
 template <is_a<OrientedBox> P> auto lengths(P& p) { return std::tie(p.center, p.extent); }
 template <is_a<Polygon> P> auto members(P& p) { return std::tie(p.vertex, p.n); }
-template <is_a<Polygon> P> auto lengths(P& p) { return std::make_tuple(std::span(p.vertex.data(), std::size_t(p.n))); }
+template <is_a<Polygon> P> auto lengths(P& p) { return std::make_tuple(std::span(p.vertex.data(), detail::in_use(p.n, p.max_vertices))); }
 template <is_a<Fan> P> auto members(P& p) { return std::tie(p.center, p.ring, p.n, p.closed); }
-template <is_a<Fan> P> auto lengths(P& p) { return std::make_tuple(std::ref(p.center), std::span(p.ring.data(), std::size_t(p.n))); }
+template <is_a<Fan> P> auto lengths(P& p) { return std::make_tuple(std::ref(p.center), std::span(p.ring.data(), detail::in_use(p.n, p.max_ring))); }
 
 /// The members of a primitive that do not scale with it: an oriented box's unit axes.
 template <class T> auto directions(OrientedBox<T>& p) { return std::tie(p.axis); }
