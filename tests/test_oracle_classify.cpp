@@ -8,7 +8,10 @@
 #include <catch2/catch.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/oracle/classify.hpp>
-#include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/enter_box.hpp>
+#include <cdref/oracle/enter_obb.hpp>
+#include <cdref/oracle/enter_sphere.hpp>
+#include <cdref/oracle/enter_triangle.hpp>
 #include <cdref/oracle/sphere_triangle.hpp>
 #include <cdref/oracle/triangle_triangle.hpp>
 #include <cdref/bounded/word_bounds.hpp>
@@ -441,7 +444,7 @@ TEST_CASE("oracle::enter and every cast's lambda_enter oracle equal the truth on
   }
 }
 
-// The oriented box's entering face alone (oracle/enter.hpp, one_face_entry) needs no
+// The oriented box's entering face alone (oracle/enter_obb.hpp, one_face_entry) needs no
 // robust::in_certified_range: its bounds carry the underflow of every product and sum. Boxes
 // and shots whose inputs span more than that range allows (a component 2^-1000 or 2^-700 beside
 // ones of order 1, a box far from the origin): where the one face answers, its value is the

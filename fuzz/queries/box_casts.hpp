@@ -5,7 +5,7 @@
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
 #include <cdref/oracle/classify.hpp>
-#include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/enter_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/stable/ray_box.hpp>
 

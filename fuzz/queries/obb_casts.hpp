@@ -5,7 +5,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/enter_obb.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cdref/stable/obb.hpp>

@@ -10,7 +10,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/enter_triangle.hpp>
 #include <cdref/oracle/polygon.hpp>
 #include <cdref/robust/polygon.hpp>
 #include <cdref/stable/polygon.hpp>

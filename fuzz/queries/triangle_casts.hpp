@@ -8,7 +8,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/enter.hpp>
+#include <cdref/oracle/enter_triangle.hpp>
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/robust/ray_triangle.hpp>
 #include <cdref/stable/ray_triangle.hpp>

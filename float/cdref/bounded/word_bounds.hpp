@@ -1,6 +1,6 @@
 // cdref/bounded/word_bounds.hpp - double words that carry a rigorous bound on their distance from
 // an exact value, and the second stage they give the casts on an oriented box. Shared by the
-// oracle's correctly rounded lambda_enter (exact/cdref/oracle/enter.hpp, whose header derives
+// oracle's correctly rounded lambda_enter (exact/cdref/oracle/enter_triangle.hpp, whose header derives
 // cross_term, dot_words and the bounds' allowance for underflow) and by the classification of a
 // segment or a ray cast on an oriented box (the oracle's stage 2, exact/cdref/oracle/
 // separating_axes.hpp, and the robust tier's certified decision, robust/separating_axes.hpp).
@@ -69,10 +69,10 @@ struct Word {
 };
 
 // The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
-// where the operands lie in [2^-600, 2^600] or one is zero, as in oracle/enter.hpp's paths, both
+// where the operands lie in [2^-600, 2^600] or one is zero, as in the oracle's enter paths, both
 // give the same pair; ObbWords has no lower range guard, and a product whose error term
 // underflows may differ between the two by less than the 2^-1022 each bound allows for it). A build without -mfma has std::fma as a library call, so the paths built on these
-// (oracle/enter.hpp's sphere, oriented-box and triangle paths, about 7, 60 and 20 products a
+// (oracle/enter_sphere.hpp, enter_obb.hpp and enter_triangle.hpp, about 7, 60 and 20 products a
 // call; the oriented-box casts' classification below) are compiled twice and the fused copy is
 // taken where the CPU has the instruction (robust::cpu_fma).
 using robust::FusedProduct;

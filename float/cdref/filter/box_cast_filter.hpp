@@ -307,7 +307,7 @@ struct ObbFilter {
   int dir_sign(int i) const { return sign_of(d[i], ed[i]); }  // a ray's; never a certain 0
   // |d~_i - n_i . (t - s)| (a segment) or |d~_i - n_i . r| (a ray): a ray's ed_i; a segment's
   // d~ = fl(Y~(t) - Y~(s)) carries X's rounding and the difference besides (gamma_6 of each
-  // n+ . |X| and u |d~|, |d~| <= (1 + 7u) d+): 8u d+ (oracle/enter.hpp takes D from here)
+  // n+ . |X| and u |d~|, |d~| <= (1 + 7u) d+): 8u d+ (oracle/enter_obb.hpp takes D from here)
   double d_bound(int i) const { return bounded ? 8 * u * dp[i] + fd : ed[i]; }
   // sign(lambda_a - lambda_b): a an entering plane, b an exiting one (2i lower, 2i + 1 upper)
   int compare(int a, int b) const {
@@ -320,7 +320,7 @@ struct ObbFilter {
   // sign(lambda_a - lambda_b) for two entering planes of different axes, on a shot that hits:
   // each is crossed, so d has the sign of its role (entering the lower plane d > 0, the upper
   // d < 0), and lambda_a - lambda_b = (N_a d_j - N_b d_i) / (d_i d_j), the same expression and
-  // bound as compare() (oracle/enter.hpp picks the entering face with it)
+  // bound as compare() (oracle/enter_obb.hpp picks the entering face with it)
   int compare_entering(int a, int b) const {
     const int i = a / 2, j = b / 2;
     const double Na = -(a % 2 == 0 ? sL[i] : sU[i]), Nb = -(b % 2 == 0 ? sL[j] : sU[j]);
@@ -385,7 +385,7 @@ struct ObbFilter {
     return pairs(bs, bt);
   }
 };
-// The filter on a shot and an oriented box; the caller may keep it (oracle/enter.hpp picks the
+// The filter on a shot and an oriented box; the caller may keep it (oracle/enter_obb.hpp picks the
 // entering face from its signs).
 template <class Shot>
 ObbFilter obb_filter(const Shot& x, const OrientedBox<double>& box) {

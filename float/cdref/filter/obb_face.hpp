@@ -1,6 +1,6 @@
 // cdref/filter/obb_face.hpp - the face through which a shot enters (or leaves) an oriented box,
 // and that face's crossing parameter alone on double words, at double. The oracle's correctly
-// rounded lambda_enter takes the entering face (oracle/enter.hpp, "An oriented box"); the robust
+// rounded lambda_enter takes the entering face (oracle/enter_obb.hpp, "An oriented box"); the robust
 // casts' first look takes both faces, with the entry point and the normal (robust/obb_cast.hpp).
 //
 // The faces. The cast filter (box_cast_filter.hpp, ObbFilter: Algorithm 3.3 in the box's
