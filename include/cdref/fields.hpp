@@ -110,6 +110,40 @@ void for_each_value(P& p, Fn&& f) {
   detail::each_in(directions(p), f);
 }
 
+/// Whether a and b are equal member by member: a scalar by == (NaN equals nothing), a point
+/// coordinate by coordinate, an array or a span element by element (two spans of different
+/// lengths differ).
+template <class X, class Y>
+bool same_value(const X& a, const Y& b) {
+  using D = std::remove_cvref_t<X>;
+  if constexpr (requires { a.rows(); } || std::is_arithmetic_v<D> || !requires { a.size(); a[0]; }) {
+    return a == b;
+  } else {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (!same_value(a[i], b[i])) return false;
+    return true;
+  }
+}
+namespace detail {
+template <class TX, class TY>
+bool same_in(const TX& x, const TY& y) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return (same_value(std::get<I>(x), std::get<I>(y)) && ...);
+  }(std::make_index_sequence<std::tuple_size_v<TX>>{});
+}
+}  // namespace detail
+/// Whether two primitives of one kind have the same lengths (a scaling's round trip was exact).
+template <class P>
+bool same_lengths(const P& a, const P& b) {
+  return detail::same_in(lengths(a), lengths(b));
+}
+/// Whether two primitives of one kind have the same members (a conversion's round trip was exact).
+template <class P>
+bool same_members(const P& a, const P& b) {
+  return detail::same_in(members(a), members(b));
+}
+
 template <class T, template <class> class P, class U, class Conv>
 P<T> rebind_with(const P<U>& p, Conv&& conv);
 

@@ -71,22 +71,6 @@ auto certify(Fn&& fn, Stage* stage = nullptr) -> std::optional<decltype(fn(at<or
   return std::nullopt;
 }
 
-namespace detail {
-// two members equal (NaN equals nothing: such an input is refused by the checks)
-template <class X>
-bool same(const X& a, const X& b) {
-  if constexpr (std::is_arithmetic_v<X>) {
-    return a == b;
-  } else if constexpr (requires { a.rows(); }) {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-  } else {
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (!same(a[i], b[i])) return false;
-    return true;
-  }
-}
-}  // namespace detail
-
 /// Whether every coordinate of a primitive (or a point) over F is a double exactly: the bounded
 /// stages' inputs. Always for float and double; a long double primitive is compared with its
 /// round trip through double (rebind, which leaves a polygon's or a fan's unused slots zero).
@@ -97,15 +81,10 @@ bool fits_double(const P& p) {
   } else {
     const P back = rebind<F>(rebind<double>(p));
     const P orig = rebind<F>(p);
-    if constexpr (requires { p.rows(); }) {
-      return detail::same(back, orig);
-    } else {
-      const auto x = members(back);
-      const auto y = members(orig);
-      return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return (detail::same(std::get<I>(x), std::get<I>(y)) && ...);
-      }(std::make_index_sequence<std::tuple_size_v<decltype(x)>>{});
-    }
+    if constexpr (requires { p.rows(); })
+      return same_value(back, orig);
+    else
+      return same_members(back, orig);
   }
 }
 

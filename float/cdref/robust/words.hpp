@@ -144,29 +144,6 @@ P<F> scaled(P<F> p, const Scale& c) {
   for_each_length(p, [&](auto& x) { x = c.len(x); });
   return p;
 }
-// Whether two primitives have the same lengths (a scaling's round trip is exact).
-template <class F> bool same(F x, F y) { return x == y; }
-template <class F> bool same(const Vec3<F>& x, const Vec3<F>& y) { return x == y; }
-template <class X, class Y>
-bool same_member(const X& x, const Y& y) {
-  if constexpr (requires { x.rows(); } || !requires { x.size(); x[0]; }) {
-    return same(x, y);
-  } else {
-    if (x.size() != y.size()) return false;
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (!same_member(x[i], y[i])) return false;
-    return true;
-  }
-}
-template <template <class> class P, class F>
-bool same(const P<F>& x, const P<F>& y) {
-  const auto lx = lengths(x);
-  const auto ly = lengths(y);
-  return [&]<std::size_t... I>(std::index_sequence<I...>) {
-    return (same_member(std::get<I>(lx), std::get<I>(ly)) && ...);
-  }(std::make_index_sequence<std::tuple_size_v<decltype(lx)>>{});
-}
-
 template <class A, class B>
 Scale scale_of(const A& a, const B& b) {
   using F = std::decay_t<decltype(scalar_of(a))>;
@@ -177,7 +154,7 @@ Scale scale_of(const A& a, const B& b) {
   if (m > F(0) && std::isfinite(m)) {
     sc.k = -exponent_of(m);
     const Scale back{-sc.k};
-    if (!same(scaled(scaled(a, sc), back), a) || !same(scaled(scaled(b, sc), back), b)) sc.k = 0;
+    if (!same_lengths(scaled(scaled(a, sc), back), a) || !same_lengths(scaled(scaled(b, sc), back), b)) sc.k = 0;
   }
   return sc;
 }
