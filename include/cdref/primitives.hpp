@@ -237,8 +237,8 @@ void check(const Segment<T>& s, const char* name = "segment") {
   detail::check_finite(s.target, name, "target");
 }
 
-/// Checks a primitive before a query: A ray: finite source and direction, the direction not the zero vector.
-/// Throws cdref::invalid_input naming the argument (`name`), the field and the value.
+/// Checks a primitive before a query: A ray: finite source and direction, the direction not the
+/// zero vector. Throws cdref::invalid_input naming the argument (`name`), the field and the value.
 template <class T>
 void check(const Ray<T>& r, const char* name = "ray") {
   detail::check_finite(r.source, name, "source");
@@ -288,8 +288,9 @@ int checked_orientation(const OrientedBox<T>& b, const char* name = "oriented bo
     detail::fail(name, "axes are linearly dependent (det[a0 a1 a2] = 0 exactly)");
   return det;
 }
-/// Checks a primitive before a query: An oriented box: finite centre, extents >= 0, finite and linearly independent axes (decided exactly).
-/// Throws cdref::invalid_input naming the argument (`name`), the field and the value.
+/// Checks a primitive before a query: An oriented box: finite centre, extents >= 0, finite and
+/// linearly independent axes (decided exactly). Throws cdref::invalid_input naming the argument
+/// (`name`), the field and the value.
 template <class T>
 void check(const OrientedBox<T>& b, const char* name = "oriented box") {
   checked_orientation(b, name);

@@ -9,7 +9,8 @@
 
 namespace cdref::book {
 
-/// Whether the closed axis-aligned box (min-max) and axis-aligned box (min-max) share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed axis-aligned box (min-max) and axis-aligned box (min-max) share a point
+/// (touching counts). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const MinMaxBox<T>& a, const MinMaxBox<T>& b) {
   check(a, "box A");
@@ -32,7 +33,8 @@ bool intersect(const Box<T>& a, const Box<T>& b) {
 }
 }  // namespace unchecked
 
-/// Whether the closed axis-aligned box and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed axis-aligned box and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Box<T>& a, const Box<T>& b) {
   check(a, "box A");

@@ -148,8 +148,9 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
 }
 }  // namespace unchecked
 
-/// Theorem 3.1 on the segment and the oriented box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the segment and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
@@ -157,15 +158,17 @@ Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   return unchecked::separate(seg, b);
 }
 /// Theorem 3.1 on the ray and the oriented box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
   return unchecked::separate(ray, b);
 }
-/// Theorem 3.1 on the triangle and the oriented box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the triangle and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   check(tri, "triangle");
@@ -173,19 +176,22 @@ Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   return unchecked::separate(tri, b);
 }
 
-/// Whether the closed segment and oriented box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed segment and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Segment<T>& seg, const OrientedBox<T>& b) {
   return separate(seg, b).intersect;
 }
-/// Whether the closed triangle and oriented box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed triangle and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Triangle<T>& tri, const OrientedBox<T>& b) {
   return separate(tri, b).intersect;
 }
 
-/// The segment (lambda in [0, 1]) cast on the closed oriented box: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The segment (lambda in [0, 1]) cast on the closed oriented box: hit, entry and exit parameters,
+/// entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(seg, "segment");
@@ -193,8 +199,9 @@ Cast<T> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_c
   return detail::cast_in_frame(seg.source, Vec3<T>(seg.target - seg.source), b, true, w);
 }
 
-/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box: hit, entry and
+/// exit parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(ray, "ray");
@@ -202,21 +209,24 @@ Cast<T> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast)
   return detail::cast_in_frame(ray.source, ray.direction, b, false, w);
 }
 
-/// Whether the segment meets the closed oriented box: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed oriented box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
   return unchecked::hit(seg, b);
 }
-/// Whether the ray meets the closed oriented box: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed oriented box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
   return unchecked::hit(ray, b);
 }
-/// Whether the closed sphere and oriented box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed sphere and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   check(sp, "sphere");
@@ -224,8 +234,9 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   return unchecked::intersect(sp, b);
 }
 
-/// Distance, penetration depth and witness points of the sphere and the oriented box (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the oriented box (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
   check(sp, "sphere");

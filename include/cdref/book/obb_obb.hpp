@@ -92,8 +92,9 @@ Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
 }
 }  // namespace unchecked
 
-/// Theorem 3.1 on the oriented box and the oriented box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the oriented box and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   check(a, "oriented box A");
@@ -101,7 +102,8 @@ Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return unchecked::separate(a, b);
 }
 
-/// Whether the closed oriented box and oriented box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed oriented box and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return separate(a, b).intersect;

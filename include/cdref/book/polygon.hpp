@@ -78,16 +78,18 @@ int nearest_triangle(const Polygon<T>& p, const Vec3<T>& c) {
 
 }  // namespace detail
 
-/// The segment (lambda in [0, 1]) cast on the closed polygon: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The segment (lambda in [0, 1]) cast on the closed polygon: hit, entry and exit parameters, entry
+/// point and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Cast<sqrt_t<T>> cast(const Segment<T>& s, const Polygon<T>& p, unsigned w = want_all) {
   check(s, "segment");
   check(p);
   return detail::polygon_cast(p, [&](const Triangle<T>& t) { return cast(s, t, w | want_lambda_enter | want_lambda_exit); });
 }
-/// The ray (lambda >= 0 in units of |direction|) cast on the closed polygon: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed polygon: hit, entry and exit
+/// parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<sqrt_t<T>> cast(const Ray<T>& r, const Polygon<T>& p, unsigned w = want_all) {
   check(r, "ray");
@@ -130,14 +132,16 @@ bool intersect(const Polygon<T>& a, const Polygon<T>& b) {
 }
 }  // namespace unchecked
 
-/// Whether the segment meets the closed polygon: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed polygon: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& s, const Polygon<T>& p) {
   check(s, "segment");
   check(p);
   return unchecked::hit(s, p);
 }
-/// Whether the ray meets the closed polygon: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed polygon: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& r, const Polygon<T>& p) {
   check(r, "ray");
@@ -145,15 +149,17 @@ bool hit(const Ray<T>& r, const Polygon<T>& p) {
   return unchecked::hit(r, p);
 }
 
-/// Distance, penetration depth and witness points of the sphere and the polygon (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the polygon (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& s, const Polygon<T>& p, unsigned w = want_proximity) {
   check(s, "sphere");
   check(p);
   return proximity(s, p.triangle(detail::nearest_triangle(p, s.center)), w);
 }
-/// Whether the closed sphere and polygon share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed sphere and polygon share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& s, const Polygon<T>& p) {
   check(s, "sphere");
@@ -161,7 +167,8 @@ bool intersect(const Sphere<T>& s, const Polygon<T>& p) {
   return unchecked::intersect(s, p);
 }
 
-/// Whether the closed polygon and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed polygon and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Polygon<T>& p, const Box<T>& b) {
   check(p);
@@ -169,7 +176,8 @@ bool intersect(const Polygon<T>& p, const Box<T>& b) {
   return unchecked::intersect(p, b);
 }
 
-/// Whether the closed polygon and polygon share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed polygon and polygon share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Polygon<T>& a, const Polygon<T>& b) {
   check(a, "polygon A");

@@ -136,14 +136,16 @@ bool hit(const Ray<T>& ray, const Box<T>& box) {
 }
 }  // namespace unchecked
 
-/// Whether the segment meets the closed axis-aligned box: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed axis-aligned box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const Box<T>& box) {
   check(seg, "segment");
   check(box, "box");
   return unchecked::hit(seg, box);
 }
-/// Whether the ray meets the closed axis-aligned box: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed axis-aligned box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const Box<T>& box) {
   check(ray, "ray");
@@ -151,8 +153,9 @@ bool hit(const Ray<T>& ray, const Box<T>& box) {
   return unchecked::hit(ray, box);
 }
 
-/// The segment (lambda in [0, 1]) cast on the closed axis-aligned box: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The segment (lambda in [0, 1]) cast on the closed axis-aligned box: hit, entry and exit
+/// parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Segment<T>& seg, const Box<T>& box, unsigned w = want_cast) {
   check(seg, "segment");
@@ -163,8 +166,9 @@ Cast<T> cast(const Segment<T>& seg, const Box<T>& box, unsigned w = want_cast) {
                                 detail::outcode(t, box.extent), true, w);
 }
 
-/// The ray (lambda >= 0 in units of |direction|) cast on the closed axis-aligned box: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed axis-aligned box: hit, entry
+/// and exit parameters, entry point and normal (only what the mask `w` asks for is computed).
+/// Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Ray<T>& ray, const Box<T>& box, unsigned w = want_cast) {
   check(ray, "ray");

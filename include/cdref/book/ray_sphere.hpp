@@ -127,14 +127,16 @@ bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
 }
 }  // namespace unchecked
 
-/// Whether the segment meets the closed sphere: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed sphere: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const Sphere<T>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
   return unchecked::hit(seg, sp);
 }
-/// Whether the ray meets the closed sphere: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed sphere: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
   check(ray, "ray");

@@ -212,16 +212,18 @@ bool hit_triangle(const Vec3<T>& s, const Vec3<T>& d, const Triangle<T>& tri, bo
 
 }  // namespace detail
 
-/// The segment (lambda in [0, 1]) cast on the closed triangle: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The segment (lambda in [0, 1]) cast on the closed triangle: hit, entry and exit parameters,
+/// entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleCast<sqrt_t<T>> cast(const Segment<T>& seg, const Triangle<T>& tri, unsigned w = want_all) {
   check(seg, "segment");
   check(tri, "triangle");
   return detail::cast_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true, w);
 }
-/// The ray (lambda >= 0 in units of |direction|) cast on the closed triangle: hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed triangle: hit, entry and exit
+/// parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleCast<sqrt_t<T>> cast(const Ray<T>& ray, const Triangle<T>& tri, unsigned w = want_all) {
   check(ray, "ray");
@@ -243,14 +245,16 @@ bool hit(const Ray<T>& ray, const Triangle<T>& tri) {
 }
 }  // namespace unchecked
 
-/// Whether the segment meets the closed triangle: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed triangle: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const Triangle<T>& tri) {
   check(seg, "segment");
   check(tri, "triangle");
   return detail::hit_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true);
 }
-/// Whether the ray meets the closed triangle: the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed triangle: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const Triangle<T>& tri) {
   check(ray, "ray");

@@ -90,8 +90,9 @@ Separation<T> separate(const Ray<T>& ray, const Box<T>& box) {
 }
 }  // namespace unchecked
 
-/// Theorem 3.1 on the segment and the axis-aligned box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the segment and the axis-aligned box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const Box<T>& box) {
   check(seg, "segment");
@@ -99,8 +100,9 @@ Separation<T> separate(const Segment<T>& seg, const Box<T>& box) {
   return detail::segment_box(seg, box);
 }
 
-/// Theorem 3.1 on the ray and the axis-aligned box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the ray and the axis-aligned box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const Box<T>& box) {
   check(ray, "ray");
@@ -108,13 +110,15 @@ Separation<T> separate(const Ray<T>& ray, const Box<T>& box) {
   return detail::ray_box(ray, box);
 }
 
-/// Whether the closed segment and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed segment and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Segment<T>& seg, const Box<T>& box) {
   return separate(seg, box).intersect;
 }
 
-/// Whether the closed ray and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed ray and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Ray<T>& ray, const Box<T>& box) {
   return separate(ray, box).intersect;

@@ -58,7 +58,8 @@ bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
 }
 }  // namespace unchecked
 
-/// Whether the closed segment and sphere share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed segment and sphere share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   check(seg, "segment");
@@ -66,8 +67,9 @@ bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   return unchecked::intersect(seg, sp);
 }
 
-/// Distance, penetration depth and witness points of the segment and the sphere (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the segment and the sphere (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Segment<T>& seg, const Sphere<T>& sp, unsigned w = want_proximity) {
   using S = sqrt_t<T>;

@@ -101,7 +101,8 @@ bool intersect(const Sphere<T>& sp, const Box<T>& box) {
 }
 }  // namespace unchecked
 
-/// Whether the closed sphere and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed sphere and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   check(sp, "sphere");
@@ -109,8 +110,9 @@ bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   return detail::sphere_box_intersect(sp, box);
 }
 
-/// Distance, penetration depth and witness points of the sphere and the axis-aligned box (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the axis-aligned box (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned w = want_proximity) {
   check(sp, "sphere");

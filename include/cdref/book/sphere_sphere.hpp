@@ -22,7 +22,8 @@ bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
 }
 }  // namespace unchecked
 
-/// Whether the closed sphere and sphere share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed sphere and sphere share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   check(a, "sphere A");
@@ -30,8 +31,9 @@ bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   return unchecked::intersect(a, b);
 }
 
-/// Distance, penetration depth and witness points of the sphere and the sphere (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the sphere (a cdref::Proximity;
+/// only what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& a, const Sphere<T>& b, unsigned w = want_proximity) {
   using S = sqrt_t<T>;

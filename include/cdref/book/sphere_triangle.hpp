@@ -46,7 +46,8 @@ bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
 }
 }  // namespace unchecked
 
-/// Whether the closed sphere and triangle share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed sphere and triangle share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   check(sp, "sphere");
@@ -92,8 +93,9 @@ Proximity<sqrt_t<T>> sphere_triangle_outputs(const Sphere<T>& sp, const Triangle
 
 }  // namespace detail
 
-/// Distance, penetration depth and witness points of the sphere and the triangle (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the triangle (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Triangle<T>& tri, unsigned w = want_proximity) {
   check(sp, "sphere");

@@ -96,8 +96,9 @@ Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
 }
 }  // namespace unchecked
 
-/// Theorem 3.1 on the triangle and the axis-aligned box: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the triangle and the axis-aligned box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   check(tri, "triangle");
@@ -105,7 +106,8 @@ Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   return unchecked::separate(tri, box);
 }
 
-/// Whether the closed triangle and axis-aligned box share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed triangle and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Triangle<T>& tri, const Box<T>& box) {
   return separate(tri, box).intersect;

@@ -175,7 +175,8 @@ TriangleIntersection<T> intersect_triangles(const Triangle<T>& A, const Triangle
 
 }  // namespace detail
 
-/// Whether the closed triangle and triangle share a point (touching counts). Throws cdref::invalid_input naming a bad argument.
+/// Whether the closed triangle and triangle share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleIntersection<T> intersect(const Triangle<T>& a, const Triangle<T>& b, const T& eps = T(0)) {
   check(a, "triangle A");
@@ -199,7 +200,8 @@ Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
 }  // namespace unchecked
 
 /// Theorem 3.1 on the triangle and the triangle: whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
   check(a, "triangle A");

@@ -250,20 +250,23 @@ template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return book::separate_polytopes(a, b, "oriented box A", "oriented box B");
 }
-/// Theorem 3.1 on the segment and the oriented box taken as the solid its axes define (a parallelepiped): whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the segment and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Segment<T>& s, const OrientedBox<T>& b) {
   return book::separate_polytopes(s, b, "segment", "oriented box");
 }
-/// Theorem 3.1 on the ray and the oriented box taken as the solid its axes define (a parallelepiped): whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the ray and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Ray<T>& r, const OrientedBox<T>& b) {
   return book::separate_polytopes(r, b, "ray", "oriented box");
 }
-/// Theorem 3.1 on the triangle and the oriented box taken as the solid its axes define (a parallelepiped): whether they intersect, else the first separating
-/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
+/// Theorem 3.1 on the triangle and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& t, const OrientedBox<T>& b) {
   return book::separate_polytopes(t, b, "triangle", "oriented box");
@@ -276,22 +279,27 @@ Cast<sqrt_t<T>> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w 
   check(b, "oriented box");
   return detail::cast_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true, w);
 }
-/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box taken as the solid its axes define (a parallelepiped): hit, entry and exit parameters, entry point
-/// and normal (only what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box taken as the solid
+/// its axes define (a parallelepiped): hit, entry and exit parameters, entry point and normal (only
+/// what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<sqrt_t<T>> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(ray, "ray");
   check(b, "oriented box");
   return detail::cast_solid(ray.source, ray.direction, b, false, w);
 }
-/// Whether the segment meets the closed oriented box taken as the solid its axes define (a parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the segment meets the closed oriented box taken as the solid its axes define (a
+/// parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad
+/// argument.
 template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
   return detail::hit_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true);
 }
-/// Whether the ray meets the closed oriented box taken as the solid its axes define (a parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad argument.
+/// Whether the ray meets the closed oriented box taken as the solid its axes define (a
+/// parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad
+/// argument.
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
@@ -312,8 +320,9 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   return detail::closest_outside(b, f, sp.center, U, static_cast<Vec3<T>*>(nullptr)) <= sp.radius * sp.radius;
 }
 
-/// Distance, penetration depth and witness points of the sphere and the oriented box taken as the solid its axes define (a parallelepiped) (a cdref::Proximity; only
-/// what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
+/// Distance, penetration depth and witness points of the sphere and the oriented box taken as the
+/// solid its axes define (a parallelepiped) (a cdref::Proximity; only what the mask `w` asks for is
+/// computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
   using S = sqrt_t<T>;
