@@ -1,8 +1,9 @@
-// cdref/cdref.hpp - the generic core: primitives, number traits and every algorithm of
-// Sections 3.1-3.4 as the chapter writes it (namespace cdref::book), the oriented box as the
-// solid its inputs define (namespace cdref::solid), for any number type that has
-// number_traits. Include <cdref/exact.hpp> for the exact CGAL types and
-// <cdref/float/mpfr.hpp> for MPFR.
+/// \file
+/// cdref/cdref.hpp - the generic core: primitives, number traits and every algorithm of
+/// Sections 3.1-3.4 as the chapter writes it (namespace cdref::book), the oriented box as the
+/// solid its inputs define (namespace cdref::solid), for any number type that has
+/// number_traits. Include <cdref/exact.hpp> for the exact CGAL types and
+/// <cdref/float/mpfr.hpp> for MPFR.
 #pragma once
 
 #include "book/box_box.hpp"

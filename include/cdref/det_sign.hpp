@@ -1,28 +1,29 @@
-// cdref/det_sign.hpp - the exact sign of a 3x3 determinant det[a b c] = a . (b x c), for
-// any number type cdref runs on. An oriented box's axes must be linearly independent, and
-// "independent" is decided exactly: no tolerance, whatever the inputs' type.
-//
-//   exact types          the determinant in T, compared with 0;
-//   IEEE types, MPFR     a filter first: d~ = fl(a . (b x c)) with the absolute permanent
-//                        p~ = fl(|a| . (|b| x |c|)). Each of the six products of three
-//                        factors carries at most 3 roundings, the cross product's differences
-//                        one more and the dot product's two sums two more: |d~ - d| <=
-//                        gamma_6 p <= 7u p~ (the rounding of p~ itself is within the margin)
-//                        while nothing overflows; an underflowing product is off by at most
-//                        half the smallest subnormal eta. The three final products' are off by
-//                        that much; the cross product's six are multiplied afterwards by a
-//                        component of a, so their error reaches |a_i| eta for component i (the
-//                        fuzz target found a frame with two equal axes of size 2^1020 and a
-//                        subnormal third, whose determinant 0 the bound 16 eta alone called
-//                        negative). So |d~| > 8u p~ + 16 eta + 2 eta (|a_0| + |a_1| + |a_2|)
-//                        decides the sign (each eta |a_i| is exact or rounds below eta); at
-//                        float, double and long double the bound takes 2^64 eta for eta, a
-//                        normal number (see below). Otherwise (near a
-//                        degenerate frame, or p~ not finite) the inputs are converted exactly
-//                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
-//                        exactly;
-//   other types          (the oracle's filter types) the determinant in T, whose comparison
-//                        is certain or throws oracle::uncertain.
+/// \file
+/// cdref/det_sign.hpp - the exact sign of a 3x3 determinant det[a b c] = a . (b x c), for
+/// any number type cdref runs on. An oriented box's axes must be linearly independent, and
+/// "independent" is decided exactly: no tolerance, whatever the inputs' type.
+///
+///   exact types          the determinant in T, compared with 0;
+///   IEEE types, MPFR     a filter first: d~ = fl(a . (b x c)) with the absolute permanent
+///                        p~ = fl(|a| . (|b| x |c|)). Each of the six products of three
+///                        factors carries at most 3 roundings, the cross product's differences
+///                        one more and the dot product's two sums two more: |d~ - d| <=
+///                        gamma_6 p <= 7u p~ (the rounding of p~ itself is within the margin)
+///                        while nothing overflows; an underflowing product is off by at most
+///                        half the smallest subnormal eta. The three final products' are off by
+///                        that much; the cross product's six are multiplied afterwards by a
+///                        component of a, so their error reaches |a_i| eta for component i (the
+///                        fuzz target found a frame with two equal axes of size 2^1020 and a
+///                        subnormal third, whose determinant 0 the bound 16 eta alone called
+///                        negative). So |d~| > 8u p~ + 16 eta + 2 eta (|a_0| + |a_1| + |a_2|)
+///                        decides the sign (each eta |a_i| is exact or rounds below eta); at
+///                        float, double and long double the bound takes 2^64 eta for eta, a
+///                        normal number (see below). Otherwise (near a
+///                        degenerate frame, or p~ not finite) the inputs are converted exactly
+///                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
+///                        exactly;
+///   other types          (the oracle's filter types) the determinant in T, whose comparison
+///                        is certain or throws oracle::uncertain.
 #pragma once
 
 #include <gmp.h>
@@ -38,7 +39,7 @@ namespace cdref {
 
 namespace detail {
 
-// det[a b c] over GMP rationals, from exact conversions of the entries.
+/// det[a b c] over GMP rationals, from exact conversions of the entries.
 template <class T>
 [[gnu::noinline, gnu::cold]] int det3_sign_rational(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   mpq_t m[9], t, u, d;
@@ -75,6 +76,8 @@ T abs_of(const T& x) {
 
 }  // namespace detail
 
+/// The sign of det[a b c] = a . (b x c), decided exactly (-1, 0 or 1): a float filter, then GMP
+/// rationals where the filter cannot decide.
 template <class T>
 int det3_sign(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   if constexpr (std::is_floating_point_v<T>) {

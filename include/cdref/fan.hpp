@@ -1,12 +1,13 @@
-// cdref/fan.hpp - a fan of triangles around a shared vertex: the mesh-level shot of Section 3.4
-// (ray-fan-cast, segment-fan-cast), where a shot that slips between two triangles of a closed
-// mesh through their shared edge or vertex is a leak.
-//
-//   Fan<T>      triangles (center, ring[k], ring[k + 1]) for k < n - 1, and (center, ring[n - 1],
-//               ring[0]) when closed: n = 2 to 8 ring vertices, closed needs n >= 3. Each
-//               triangle is closed and two-sided (primitives.hpp), so neighbours share their edge.
-//   FanCast<S>  the first hit over the fan (smallest lambda_enter, the first triangle on ties) and
-//               the number of triangles the shot hits.
+/// \file
+/// cdref/fan.hpp - a fan of triangles around a shared vertex: the mesh-level shot of Section 3.4
+/// (ray-fan-cast, segment-fan-cast), where a shot that slips between two triangles of a closed
+/// mesh through their shared edge or vertex is a leak.
+///
+///   `Fan<T>`    triangles (center, ring[k], ring[k + 1]) for k < n - 1, and (center, ring[n - 1],
+///               ring[0]) when closed: n = 2 to 8 ring vertices, closed needs n >= 3. Each
+///               triangle is closed and two-sided (primitives.hpp), so neighbours share their edge.
+///   `FanCast<S>` the first hit over the fan (smallest lambda_enter, the first triangle on ties) and
+///               the number of triangles the shot hits.
 #pragma once
 
 #include <array>
@@ -17,6 +18,7 @@
 
 namespace cdref {
 
+/// A fan of n triangles around `center` (see the file's comment).
 template <class T>
 struct Fan {
   static constexpr int max_ring = 8;  ///< at most this many ring vertices

@@ -1,33 +1,34 @@
-// cdref/fields.hpp - the members of every primitive and every result, for code that treats
-// them all alike: converting a primitive to another number type, scaling it, rounding a result,
-// comparing two results field by field. A primitive is described here once (members, lengths,
-// directions); every generic operation below and in the robust tier derives from that.
-//
-//   members(p)             the primitive's members as a tuple of references (std::tie), in
-//                          declaration order;
-//   lengths(p)             the members that scale with the primitive (its coordinates, extents,
-//                          radii, a ray's direction; a polygon's and a fan's first n vertices as
-//                          a span), as a tuple of references;
-//   directions(p)          the members that do not (an oriented box's unit axes; empty for the
-//                          others);
-//   for_each_length(p, f), for_each_value(p, f)
-//                          f(x) for every scalar and every point among the lengths (and the
-//                          directions, for_each_value), arrays and spans element by element;
-//   rebind<T>(p)           the same primitive over T, each coordinate converted by T(x) (exact
-//                          from double to every exact type cdref uses, and to float with
-//                          rounding); rebind_with<T>(p, conv) converts each by conv(x);
-//   zip_fields(a, b, f)    for two results of one kind (Cast, TriangleCast, FanCast, Proximity,
-//                          TriangleIntersection, Separation), possibly over different number
-//                          types, calls f(name, a's field, b's field) for each field, named as the
-//                          case files' answer columns name it ("lambda_enter", "witness_a", ...).
-//                          A FanCast's fields are its first hit's, then "hits";
-//   rounded_by<F>(r, round) a result over any number type with each field converted to F by
-//                          round(x) (a bool or an int field is its own).
-//
-// A new primitive gives its members() and lengths() here (and directions() if it has any): the
-// robust tier's scaling, its double-word lift, the input conversions and the tests' helpers
-// then handle it. The functions are found by argument-dependent lookup where they are used, so
-// a primitive declared in a query's own header (in namespace cdref) can give them there.
+/// \file
+/// cdref/fields.hpp - the members of every primitive and every result, for code that treats
+/// them all alike: converting a primitive to another number type, scaling it, rounding a result,
+/// comparing two results field by field. A primitive is described here once (members, lengths,
+/// directions); every generic operation below and in the robust tier derives from that.
+///
+///   members(p)             the primitive's members as a tuple of references (std::tie), in
+///                          declaration order;
+///   lengths(p)             the members that scale with the primitive (its coordinates, extents,
+///                          radii, a ray's direction; a polygon's and a fan's first n vertices as
+///                          a span), as a tuple of references;
+///   directions(p)          the members that do not (an oriented box's unit axes; empty for the
+///                          others);
+///   for_each_length(p, f), for_each_value(p, f)
+///                          f(x) for every scalar and every point among the lengths (and the
+///                          directions, for_each_value), arrays and spans element by element;
+///   rebind<T>(p)           the same primitive over T, each coordinate converted by T(x) (exact
+///                          from double to every exact type cdref uses, and to float with
+///                          rounding); rebind_with<T>(p, conv) converts each by conv(x);
+///   zip_fields(a, b, f)    for two results of one kind (Cast, TriangleCast, FanCast, Proximity,
+///                          TriangleIntersection, Separation), possibly over different number
+///                          types, calls f(name, a's field, b's field) for each field, named as the
+///                          case files' answer columns name it ("lambda_enter", "witness_a", ...).
+///                          A FanCast's fields are its first hit's, then "hits";
+///   rounded_by<F>(r, round) a result over any number type with each field converted to F by
+///                          round(x) (a bool or an int field is its own).
+///
+/// A new primitive gives its members() and lengths() here (and directions() if it has any): the
+/// robust tier's scaling, its double-word lift, the input conversions and the tests' helpers
+/// then handle it. The functions are found by argument-dependent lookup where they are used, so
+/// a primitive declared in a query's own header (in namespace cdref) can give them there.
 #pragma once
 
 #include <array>
@@ -43,12 +44,12 @@
 
 namespace cdref {
 
-// ---- primitives ----
+/// ---- primitives ----
 namespace detail {
 template <template <class> class K, class T>
 void kind_of(const K<T>&);
-// the vertices a polygon or a fan uses: n, kept within its array (a polygon not yet checked may
-// say anything: nothing outside the array is read)
+/// the vertices a polygon or a fan uses: n, kept within its array (a polygon not yet checked may
+/// say anything: nothing outside the array is read)
 constexpr std::size_t in_use(int n, int max) { return std::size_t(n < 0 ? 0 : n > max ? max : n); }
 }  // namespace detail
 /// P is a K<T> for some T, const or not (a primitive's description below takes either).
@@ -59,6 +60,7 @@ concept is_a = requires(const P& p) { detail::kind_of<K>(p); };
 /// lengths, the members that scale with it (see the file's comment): one pair of lines a
 /// primitive.
 template <is_a<Sphere> P> auto members(P& p) { return std::tie(p.center, p.radius); }
+/// A primitive's lengths: the members that scale with it (one overload a primitive, beside members()).
 template <is_a<Sphere> P> auto lengths(P& p) { return std::tie(p.center, p.radius); }
 template <is_a<Box> P> auto members(P& p) { return std::tie(p.center, p.extent); }
 template <is_a<Box> P> auto lengths(P& p) { return std::tie(p.center, p.extent); }
@@ -77,12 +79,13 @@ template <is_a<Fan> P> auto lengths(P& p) { return std::make_tuple(std::ref(p.ce
 
 /// The members of a primitive that do not scale with it: an oriented box's unit axes.
 template <class T> auto directions(OrientedBox<T>& p) { return std::tie(p.axis); }
+/// The same, for a const oriented box.
 template <class T> auto directions(const OrientedBox<T>& p) { return std::tie(p.axis); }
 /// ... none for the other primitives.
 template <class P> std::tuple<> directions(const P&) { return {}; }
 
 namespace detail {
-// f(x) for a scalar or a point x, and for each element of an array or a span of them
+/// f(x) for a scalar or a point x, and for each element of an array or a span of them
 template <class X, class Fn>
 void each_value(X&& x, Fn& f) {
   using D = std::remove_cvref_t<X>;
@@ -148,8 +151,8 @@ template <class T, template <class> class P, class U, class Conv>
 P<T> rebind_with(const P<U>& p, Conv&& conv);
 
 namespace detail {
-// one member converted: a coordinate by conv(x), a vector and an array element-wise, a nested
-// primitive by rebind_with, a count or a flag copied
+/// one member converted: a coordinate by conv(x), a vector and an array element-wise, a nested
+/// primitive by rebind_with, a count or a flag copied
 template <class T, class D, class S, class Conv>
 void convert_member(D& d, const S& s, Conv& conv) {
   if constexpr (std::is_same_v<S, int> || std::is_same_v<S, bool>) {
@@ -209,7 +212,7 @@ auto rebind(const P& p) {
   return rebind_with<T>(p, [](const auto& x) { return T(x); });
 }
 
-// ---- results ----
+/// ---- results ----
 /// Calls f(name, a.field, b.field) for each field of two casts (see the file's comment).
 template <class S, class B, class Fn>
 void zip_fields(const Cast<S>& a, B&& b, Fn&& f) {
@@ -262,11 +265,11 @@ void zip_fields(const Separation<S>& a, B&& b, Fn&& f) {
 
 /// The classification of any result: hit for a cast, intersect otherwise (a bool is its own).
 template <class S> bool classification_of(const Cast<S>& r) { return r.hit; }
-template <class S> bool classification_of(const FanCast<S>& r) { return r.first.hit; }
-template <class S> bool classification_of(const Proximity<S>& r) { return r.intersect; }
-template <class S> bool classification_of(const TriangleIntersection<S>& r) { return r.intersect; }
-template <class S> bool classification_of(const Separation<S>& r) { return r.intersect; }
-inline bool classification_of(bool r) { return r; }
+template <class S> bool classification_of(const FanCast<S>& r) { return r.first.hit; }  ///< as above
+template <class S> bool classification_of(const Proximity<S>& r) { return r.intersect; }  ///< as above
+template <class S> bool classification_of(const TriangleIntersection<S>& r) { return r.intersect; }  ///< as above
+template <class S> bool classification_of(const Separation<S>& r) { return r.intersect; }  ///< as above
+inline bool classification_of(bool r) { return r; }  ///< as above
 
 /// A result over any number type S, each field converted to F by round(x) (a value of S to F);
 /// a bool or an int field is its own. One field-wise conversion for every result type: the

@@ -1,43 +1,44 @@
-// cdref/truth.hpp - the exact answer for one input, in one call.
-//
-// For every query of Sections 3.1-3.4, a function over the primitives in double (or float) that
-// returns the query's result (Cast, TriangleCast, FanCast, Proximity, TriangleIntersection,
-// Separation, or a bool) with the classification decided exactly and every value correctly
-// rounded to the caller's type (round to nearest, ties to even): lambda_enter, lambda_exit, point,
-// normal, u, v, distance, depth, both witnesses, the closest point, the ends of a
-// triangle-triangle intersection, the separating axis and its direction. The inputs are taken as
-// the exact numbers their doubles (floats) denote.
-//
-//   #include <cdref/truth.hpp>           // link cdref::cdref (find_package(cdref))
-//   const cdref::Ray<double> ray{{0, 0, -5}, {0, 0, 1}};
-//   const cdref::Sphere<double> ball{{0.1, 0, 0}, 1};
-//   const cdref::Cast<double> c = cdref::truth::cast(ray, ball);
-//   // c.hit, c.lambda_enter (the double nearest 5 - sqrt(0.99)), c.point, c.normal, ...
-//
-// The names are the book tier's (cdref::book::cast, proximity, separate, intersect), and so are
-// the meanings: each function's result is the book's algorithm evaluated on exact numbers, then
-// rounded. The conventions of each query (closed solids, lambda in units of |direction| for a
-// ray and of target - source for a segment, which witness is which) are documented at the
-// result structs (results.hpp, fan.hpp) and the book's headers (book/*.hpp). Where the chapter's
-// pair is symmetric both argument orders are offered (a proximity's witnesses follow the
-// arguments: witness_a is on the first).
-//
-// How: the fast exact oracle (a float filter with a proven error bound, then double words with
-// rigorous bounds, then exact rationals only where those cannot decide or round), so a call
-// costs about what `cdref report`'s "oracle, every output" row says, typically a few hundred
-// nanoseconds, not the microseconds of the book at an exact type. Path::exact skips the filters
-// and evaluates the book at CGAL::Gmpq for every input: the same answer, for cross-checking.
-//
-// Errors: an input outside the query's domain throws cdref::invalid_input naming the argument
-// and what is wrong ("sphere radius is negative (-1)", "ray direction is the zero vector",
-// "oriented box axes are linearly dependent ...", "polygon has 9 vertices ..."; two arguments of
-// one kind are named "... a" and "... b"). A degenerate but meaningful input is answered with
-// its documented meaning: a zero radius is a point, a zero extent a flat box, a zero-area
-// triangle the segment or point it spans, a segment with source = target a point.
-//
-// This header includes only cdref's core (Eigen, no CGAL): the exact machinery is in the
-// library. The exact value itself, beyond its rounding, is the book at an exact type
-// (<cdref/cdref.hpp> with <cdref/exact.hpp>): examples/truth_exact.cpp shows it.
+/// \file
+/// cdref/truth.hpp - the exact answer for one input, in one call.
+///
+/// For every query of Sections 3.1-3.4, a function over the primitives in double (or float) that
+/// returns the query's result (Cast, TriangleCast, FanCast, Proximity, TriangleIntersection,
+/// Separation, or a bool) with the classification decided exactly and every value correctly
+/// rounded to the caller's type (round to nearest, ties to even): lambda_enter, lambda_exit, point,
+/// normal, u, v, distance, depth, both witnesses, the closest point, the ends of a
+/// triangle-triangle intersection, the separating axis and its direction. The inputs are taken as
+/// the exact numbers their doubles (floats) denote.
+///
+///   #include <cdref/truth.hpp>           // link cdref::cdref (find_package(cdref))
+///   const cdref::Ray<double> ray{{0, 0, -5}, {0, 0, 1}};
+///   const cdref::Sphere<double> ball{{0.1, 0, 0}, 1};
+///   const cdref::Cast<double> c = cdref::truth::cast(ray, ball);
+///   // c.hit, c.lambda_enter (the double nearest 5 - sqrt(0.99)), c.point, c.normal, ...
+///
+/// The names are the book tier's (cdref::book::cast, proximity, separate, intersect), and so are
+/// the meanings: each function's result is the book's algorithm evaluated on exact numbers, then
+/// rounded. The conventions of each query (closed solids, lambda in units of |direction| for a
+/// ray and of target - source for a segment, which witness is which) are documented at the
+/// result structs (results.hpp, fan.hpp) and the book's headers (book/*.hpp). Where the chapter's
+/// pair is symmetric both argument orders are offered (a proximity's witnesses follow the
+/// arguments: witness_a is on the first).
+///
+/// How: the fast exact oracle (a float filter with a proven error bound, then double words with
+/// rigorous bounds, then exact rationals only where those cannot decide or round), so a call
+/// costs about what `cdref report`'s "oracle, every output" row says, typically a few hundred
+/// nanoseconds, not the microseconds of the book at an exact type. Path::exact skips the filters
+/// and evaluates the book at CGAL::Gmpq for every input: the same answer, for cross-checking.
+///
+/// Errors: an input outside the query's domain throws cdref::invalid_input naming the argument
+/// and what is wrong ("sphere radius is negative (-1)", "ray direction is the zero vector",
+/// "oriented box axes are linearly dependent ...", "polygon has 9 vertices ..."; two arguments of
+/// one kind are named "... a" and "... b"). A degenerate but meaningful input is answered with
+/// its documented meaning: a zero radius is a point, a zero extent a flat box, a zero-area
+/// triangle the segment or point it spans, a segment with source = target a point.
+///
+/// This header includes only cdref's core (Eigen, no CGAL): the exact machinery is in the
+/// library. The exact value itself, beyond its rounding, is the book at an exact type
+/// (<cdref/cdref.hpp> with <cdref/exact.hpp>): examples/truth_exact.cpp shows it.
 #pragma once
 
 #include "truth/basics.hpp"
@@ -46,7 +47,7 @@ namespace cdref::truth {
 
 // Path (oracle or exact), detail::Bool and the comparison tools: cdref/truth/basics.hpp.
 
-// ---- Section 3.1: spheres ----
+/// ---- Section 3.1: spheres ----
 /// sphere-sphere: distance, penetration depth and witnesses of two closed balls.
 Proximity<double> proximity(const Sphere<double>& a, const Sphere<double>& b, Path path = Path::oracle);
 /// sphere-sphere at float's rounding.
@@ -64,7 +65,7 @@ Proximity<double> proximity(const Segment<double>& a, const Sphere<double>& b, P
 /// segment-sphere at float's rounding.
 Proximity<float> proximity(const Segment<float>& a, const Sphere<float>& b, Path path = Path::oracle);
 
-// ---- Section 3.2: axis-aligned boxes ----
+/// ---- Section 3.2: axis-aligned boxes ----
 /// box-box: whether two closed axis-aligned boxes share a point.
 bool intersect(const Box<double>& a, const Box<double>& b, Path path = Path::oracle);
 /// box-box on float inputs (a classification: the same as at double).
@@ -82,7 +83,7 @@ Proximity<double> proximity(const Sphere<double>& a, const Box<double>& b, Path 
 /// sphere-box at float's rounding.
 Proximity<float> proximity(const Sphere<float>& a, const Box<float>& b, Path path = Path::oracle);
 
-// ---- Section 3.3: separating axes ----
+/// ---- Section 3.3: separating axes ----
 /// segment-box (Theorem 3.1): whether they meet, else the first separating axis and its direction.
 Separation<double> separate(const Segment<double>& a, const Box<double>& b, Path path = Path::oracle);
 /// segment-box at float's rounding.
@@ -120,7 +121,7 @@ Proximity<double> proximity(const Sphere<double>& a, const OrientedBox<double>& 
 /// sphere-obb at float's rounding.
 Proximity<float> proximity(const Sphere<float>& a, const OrientedBox<float>& b, Path path = Path::oracle);
 
-// ---- Section 3.4: triangles and polygons ----
+/// ---- Section 3.4: triangles and polygons ----
 /// sphere-triangle: the ball against the closed triangle; `closest` is the triangle's point nearest the centre.
 Proximity<double> proximity(const Sphere<double>& a, const Triangle<double>& b, Path path = Path::oracle);
 /// sphere-triangle at float's rounding.
@@ -176,7 +177,7 @@ Proximity<double> proximity(const Sphere<double>& a, const Polygon<double>& b, P
 /// polygon-sphere at float's rounding.
 Proximity<float> proximity(const Sphere<float>& a, const Polygon<float>& b, Path path = Path::oracle);
 
-// ---- the other argument order of the symmetric pairs ----
+/// ---- the other argument order of the symmetric pairs ----
 /// box-sphere: sphere-box with the witnesses swapped (witness_a on the box).
 template <class F> Proximity<F> proximity(const Box<F>& a, const Sphere<F>& b, Path path = Path::oracle) { return detail::swapped(proximity(b, a, path)); }
 /// obb-sphere: sphere-obb with the witnesses swapped.
@@ -204,7 +205,7 @@ template <class F> bool intersect(const OrientedBox<F>& a, const Polygon<F>& b, 
 /// triangle-point: point-triangle with the witnesses swapped (witness_a the closest point).
 template <class F> Proximity<F> proximity(const Triangle<F>& a, const Vec3<F>& b, Path path = Path::oracle) { return detail::swapped(proximity(b, a, path)); }
 
-// ---- any pair, by its primitives ----
+/// ---- any pair, by its primitives ----
 /// The query on (a, b) whatever its kind: cast, proximity, separate or intersect, as declared
 /// above for that pair of primitives (the generic entry of the test matchers).
 template <class A, class B>

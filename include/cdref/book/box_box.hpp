@@ -1,13 +1,16 @@
-// cdref/book/box_box.hpp - Section 3.2: axis-aligned box-box.
-//   min-max:       [p1, q1] and [p2, q2] meet iff p1 <= q2 and p2 <= q1 (every axis);
-//   centre-extent: [c1 - h1, c1 + h1] and [c2 - h2, c2 + h2] meet iff |c1 - c2| <= h1 + h2.
-// Boxes are closed: touching faces, edges or corners intersect.
+/// \file
+/// cdref/book/box_box.hpp - Section 3.2: axis-aligned box-box.
+///   min-max:       [p1, q1] and [p2, q2] meet iff p1 <= q2 and p2 <= q1 (every axis);
+///   centre-extent: [c1 - h1, c1 + h1] and [c2 - h2, c2 + h2] meet iff |c1 - c2| <= h1 + h2.
+/// Boxes are closed: touching faces, edges or corners intersect.
 #pragma once
 
 #include "common.hpp"
 
 namespace cdref::book {
 
+/// Whether the closed axis-aligned box (min-max) and axis-aligned box (min-max) share a point
+/// (touching counts). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const MinMaxBox<T>& a, const MinMaxBox<T>& b) {
   check(a, "box A");
@@ -18,7 +21,7 @@ bool intersect(const MinMaxBox<T>& a, const MinMaxBox<T>& b) {
 }
 
 namespace unchecked {
-// The centre-extent test on input already checked (see common.hpp).
+/// The centre-extent test on input already checked (see common.hpp).
 template <class T>
 bool intersect(const Box<T>& a, const Box<T>& b) {
   for (int i = 0; i < 3; ++i) {
@@ -30,6 +33,8 @@ bool intersect(const Box<T>& a, const Box<T>& b) {
 }
 }  // namespace unchecked
 
+/// Whether the closed axis-aligned box and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Box<T>& a, const Box<T>& b) {
   check(a, "box A");

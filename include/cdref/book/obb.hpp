@@ -1,25 +1,26 @@
-// cdref/book/obb.hpp - the chapter's tests on an oriented box as engines write them: the
-// other primitive moved into the box's frame (p -> (a_0 . (p - c), a_1 . (p - c),
-// a_2 . (p - c))), then the axis-aligned test of Sections 3.2-3.3 on the box [-h, h].
-//   separate(Segment | Ray | Triangle, OrientedBox)   segment_box.hpp / triangle_box.hpp in
-//                                                     the frame (6 or 13 axes, same order:
-//                                                     the box's faces are its axes a_i);
-//   cast / hit(Segment | Ray, OrientedBox)            Algorithm 3.3 in the frame; lambda is
-//                                                     the same in both frames, the entry
-//                                                     point s + lambda r is computed in world
-//                                                     coordinates, the normal is -+a_i for the
-//                                                     entering face (x-, x+, y-, ... order);
-//   proximity / intersect(Sphere, OrientedBox)        Section 3.2.2 in the frame, witnesses
-//                                                     and the closest point mapped back
-//                                                     (c + sum_i p_i a_i).
-// The moved primitive is not checked again: at a float type its coordinates may overflow where
-// the inputs do not, and the answer then drifts (as every float formulation does), it is not
-// refused. Moving into the frame with the transpose inverts the frame only when it is
-// orthonormal.
-// Axes given as floats are orthonormal only to rounding, and the box is then the
-// parallelepiped they span (primitives.hpp): these formulations approximate that solid even
-// at an exact type. The solid's own answers are in cdref/solid/obb.hpp.
-// Separation::direction is in world coordinates.
+/// \file
+/// cdref/book/obb.hpp - the chapter's tests on an oriented box as engines write them: the
+/// other primitive moved into the box's frame (p -> (a_0 . (p - c), a_1 . (p - c),
+/// a_2 . (p - c))), then the axis-aligned test of Sections 3.2-3.3 on the box [-h, h].
+///   separate(Segment | Ray | Triangle, OrientedBox)   segment_box.hpp / triangle_box.hpp in
+///                                                     the frame (6 or 13 axes, same order:
+///                                                     the box's faces are its axes a_i);
+///   cast / hit(Segment | Ray, OrientedBox)            Algorithm 3.3 in the frame; lambda is
+///                                                     the same in both frames, the entry
+///                                                     point s + lambda r is computed in world
+///                                                     coordinates, the normal is -+a_i for the
+///                                                     entering face (x-, x+, y-, ... order);
+///   proximity / intersect(Sphere, OrientedBox)        Section 3.2.2 in the frame, witnesses
+///                                                     and the closest point mapped back
+///                                                     (c + sum_i p_i a_i).
+/// The moved primitive is not checked again: at a float type its coordinates may overflow where
+/// the inputs do not, and the answer then drifts (as every float formulation does), it is not
+/// refused. Moving into the frame with the transpose inverts the frame only when it is
+/// orthonormal.
+/// Axes given as floats are orthonormal only to rounding, and the box is then the
+/// parallelepiped they span (primitives.hpp): these formulations approximate that solid even
+/// at an exact type. The solid's own answers are in cdref/solid/obb.hpp.
+/// Separation::direction is in world coordinates.
 #pragma once
 
 #include "common.hpp"
@@ -32,7 +33,7 @@ namespace cdref::book {
 
 namespace detail {
 
-// A point and a direction in the box's frame (A^T (p - c) and A^T v).
+/// A point and a direction in the box's frame (A^T (p - c) and A^T v).
 template <class T>
 Vec3<T> frame_point(const OrientedBox<T>& b, const Vec3<T>& p) {
   const Vec3<T> d = p - b.center;
@@ -42,7 +43,7 @@ template <class T>
 Vec3<T> frame_vector(const OrientedBox<T>& b, const Vec3<T>& v) {
   return Vec3<T>(b.axis[0].dot(v), b.axis[1].dot(v), b.axis[2].dot(v));
 }
-// Back to world coordinates: c + sum_i p_i a_i (over the sqrt type S of p).
+/// Back to world coordinates: c + sum_i p_i a_i (over the sqrt type S of p).
 template <class S, class T>
 Vec3<S> world_point(const OrientedBox<T>& b, const Vec3<S>& p) {
   Vec3<S> w = lift<S>(b.center);
@@ -55,8 +56,8 @@ Box<T> frame_box(const OrientedBox<T>& b) {
   return {zero_vec<T>(), b.extent};
 }
 
-// An axis of the frame's Separation back in world coordinates; `edge_k` gives the world
-// direction of the other primitive's edge k (the segment's r, the triangle's e_k).
+/// An axis of the frame's Separation back in world coordinates; `edge_k` gives the world
+/// direction of the other primitive's edge k (the segment's r, the triangle's e_k).
 template <class T, class EdgeOf>
 Separation<T> world_separation(Separation<T> s, const OrientedBox<T>& b, int faces_before, const Vec3<T>& normal,
                                EdgeOf edge_k) {
@@ -94,6 +95,8 @@ Cast<T> cast_in_frame(const Vec3<T>& s_world, const Vec3<T>& r_world, const Orie
 }  // namespace detail
 
 namespace unchecked {
+/// The same as the checked `separate` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   const Segment<T> local{detail::frame_point(b, seg.source), detail::frame_point(b, seg.target)};
@@ -101,6 +104,8 @@ Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   return detail::world_separation(detail::segment_box(local, detail::frame_box(b)), b, 0, r, [&](int) { return r; });
 }
 
+/// The same as the checked `separate` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
   const Ray<T> local{detail::frame_point(b, ray.source), detail::frame_vector(b, ray.direction)};
@@ -108,6 +113,8 @@ Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
                                   [&](int) { return ray.direction; });
 }
 
+/// The same as the checked `separate` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   const Triangle<T> local{{detail::frame_point(b, tri.vertex[0]), detail::frame_point(b, tri.vertex[1]),
@@ -116,6 +123,8 @@ Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   return detail::world_separation(detail::triangle_box(local, detail::frame_box(b)), b, 1, n,
                                   [&](int k) { return Vec3<T>(tri.vertex[(k + 1) % 3] - tri.vertex[k]); });
 }
+/// The same as the checked `hit` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   const Vec3<T> s = detail::frame_point(b, seg.source), t = detail::frame_point(b, seg.target);
@@ -123,30 +132,43 @@ bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
                                true);
 }
 
+/// The same as the checked `hit` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   const Vec3<T> s = detail::frame_point(b, ray.source), d = detail::frame_vector(b, ray.direction);
   return detail::hit_box_local(s, d, b.extent, detail::outcode(s, b.extent), detail::outcode_at_infinity(s, d, b.extent),
                                false);
 }
+/// The same as the checked `intersect` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   return detail::sphere_box_intersect(Sphere<T>{detail::frame_point(b, sp.center), sp.radius}, detail::frame_box(b));
 }
 }  // namespace unchecked
 
+/// Theorem 3.1 on the segment and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
   return unchecked::separate(seg, b);
 }
+/// Theorem 3.1 on the ray and the oriented box: whether they intersect, else the first separating
+/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Separation<T> separate(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
   return unchecked::separate(ray, b);
 }
+/// Theorem 3.1 on the triangle and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   check(tri, "triangle");
@@ -154,15 +176,22 @@ Separation<T> separate(const Triangle<T>& tri, const OrientedBox<T>& b) {
   return unchecked::separate(tri, b);
 }
 
+/// Whether the closed segment and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Segment<T>& seg, const OrientedBox<T>& b) {
   return separate(seg, b).intersect;
 }
+/// Whether the closed triangle and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Triangle<T>& tri, const OrientedBox<T>& b) {
   return separate(tri, b).intersect;
 }
 
+/// The segment (lambda in [0, 1]) cast on the closed oriented box: hit, entry and exit parameters,
+/// entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(seg, "segment");
@@ -170,6 +199,9 @@ Cast<T> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_c
   return detail::cast_in_frame(seg.source, Vec3<T>(seg.target - seg.source), b, true, w);
 }
 
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box: hit, entry and
+/// exit parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<T> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(ray, "ray");
@@ -177,18 +209,24 @@ Cast<T> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast)
   return detail::cast_in_frame(ray.source, ray.direction, b, false, w);
 }
 
+/// Whether the segment meets the closed oriented box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
   return unchecked::hit(seg, b);
 }
+/// Whether the ray meets the closed oriented box: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
   check(b, "oriented box");
   return unchecked::hit(ray, b);
 }
+/// Whether the closed sphere and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   check(sp, "sphere");
@@ -196,6 +234,9 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   return unchecked::intersect(sp, b);
 }
 
+/// Distance, penetration depth and witness points of the sphere and the oriented box (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
   check(sp, "sphere");

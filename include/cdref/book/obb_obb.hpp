@@ -1,32 +1,33 @@
-// cdref/book/obb_obb.hpp - Section 3.3: two oriented boxes by separating axes, in the
-// 15-axis formulation of Gottschalk, Lin and Manocha (OBBTree, SIGGRAPH 1996), as RAPID,
-// PQP, FCL, GTE, Ericson's Real-Time Collision Detection (4.4.1) and most engines ship it.
-//
-// With R_ij = a_i . b_j (B's axes in A's frame), t_i = a_i . (c_B - c_A) (the centres'
-// offset in A's frame) and |R_ij|:
-//   axis i (a_i)            |t_i| > hA_i + sum_j hB_j |R_ij|;
-//   axis 3 + j (b_j)        |sum_i t_i R_ij| > sum_i hA_i |R_ij| + hB_j;
-//   axis 6 + 3i + j         (a_i x b_j, with i1 = i+1, i2 = i+2, j1 = j+1, j2 = j+2 mod 3)
-//                           |t_i2 R_i1j - t_i1 R_i2j| > hA_i1 |R_i2j| + hA_i2 |R_i1j|
-//                                                     + hB_j1 |R_ij2| + hB_j2 |R_ij1|.
-// These are Theorem 3.1 exactly when both frames are orthonormal (the projections of b_j and
-// of a_i x b_j are read off R in A's frame). Axes that reach cdref as floats are orthonormal
-// only to rounding, and the box is then the parallelepiped its axes span (primitives.hpp):
-// this formulation is an approximation of that solid even at an exact type, where
-// book::separate(polytope(A), polytope(B)) (separating_axes.hpp) is exact. Campaigns report
-// the two effects apart (the book at double against the book at an exact type, and that
-// against the truth).
-//
-// Near-parallel edges make a_i x b_j tiny and its test a comparison of rounding errors. Float
-// code patches this; two patches are here as variants, each adding false positives only,
-// with absolute constants whatever the boxes' size:
-//   separate_rapid      adds 1e-6 to every |R_ij| (RAPID's and PQP's obb_disjoint; FCL; RTCD
-//                       4.4.1 adds an EPSILON there, three.js's port Number.EPSILON = 2^-52:
-//                       separate_rapid(a, b, 0x1p-52));
-//   separate_parallel   reports an intersection after the six face axes when some |R_ij| >=
-//                       1 - 1e-8, skipping the nine edge axes (Wild Magic's IntrBox3Box3,
-//                       ZERO_TOLERANCE = 1e-8 for double; GTE's TIQuery with its epsilon).
-// Boxes are closed: touching intersects. Separation::direction is a_i, b_j or a_i x b_j.
+/// \file
+/// cdref/book/obb_obb.hpp - Section 3.3: two oriented boxes by separating axes, in the
+/// 15-axis formulation of Gottschalk, Lin and Manocha (OBBTree, SIGGRAPH 1996), as RAPID,
+/// PQP, FCL, GTE, Ericson's Real-Time Collision Detection (4.4.1) and most engines ship it.
+///
+/// With R_ij = a_i . b_j (B's axes in A's frame), t_i = a_i . (c_B - c_A) (the centres'
+/// offset in A's frame) and |R_ij|:
+///   axis i (a_i)            |t_i| > hA_i + sum_j hB_j |R_ij|;
+///   axis 3 + j (b_j)        |sum_i t_i R_ij| > sum_i hA_i |R_ij| + hB_j;
+///   axis 6 + 3i + j         (a_i x b_j, with i1 = i+1, i2 = i+2, j1 = j+1, j2 = j+2 mod 3)
+///                           |t_i2 R_i1j - t_i1 R_i2j| > hA_i1 |R_i2j| + hA_i2 |R_i1j|
+///                                                     + hB_j1 |R_ij2| + hB_j2 |R_ij1|.
+/// These are Theorem 3.1 exactly when both frames are orthonormal (the projections of b_j and
+/// of a_i x b_j are read off R in A's frame). Axes that reach cdref as floats are orthonormal
+/// only to rounding, and the box is then the parallelepiped its axes span (primitives.hpp):
+/// this formulation is an approximation of that solid even at an exact type, where
+/// book::separate(polytope(A), polytope(B)) (separating_axes.hpp) is exact. Campaigns report
+/// the two effects apart (the book at double against the book at an exact type, and that
+/// against the truth).
+///
+/// Near-parallel edges make a_i x b_j tiny and its test a comparison of rounding errors. Float
+/// code patches this; two patches are here as variants, each adding false positives only,
+/// with absolute constants whatever the boxes' size:
+///   separate_rapid      adds 1e-6 to every |R_ij| (RAPID's and PQP's obb_disjoint; FCL; RTCD
+///                       4.4.1 adds an EPSILON there, three.js's port Number.EPSILON = 2^-52:
+///                       separate_rapid(a, b, 0x1p-52));
+///   separate_parallel   reports an intersection after the six face axes when some |R_ij| >=
+///                       1 - 1e-8, skipping the nine edge axes (Wild Magic's IntrBox3Box3,
+///                       ZERO_TOLERANCE = 1e-8 for double; GTE's TIQuery with its epsilon).
+/// Boxes are closed: touching intersects. Separation::direction is a_i, b_j or a_i x b_j.
 #pragma once
 
 #include "common.hpp"
@@ -83,12 +84,17 @@ Separation<T> obb_obb(const OrientedBox<T>& A, const OrientedBox<T>& B, const T&
 }  // namespace detail
 
 namespace unchecked {
+/// The same as the checked `separate` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return detail::obb_obb(a, b, T(0), T(0), false);
 }
 }  // namespace unchecked
 
+/// Theorem 3.1 on the oriented box and the oriented box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   check(a, "oriented box A");
@@ -96,12 +102,14 @@ Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return unchecked::separate(a, b);
 }
 
+/// Whether the closed oriented box and oriented box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return separate(a, b).intersect;
 }
 
-// RAPID's patch: eps added to every |R_ij| (1e-6 in RAPID, PQP and FCL).
+/// RAPID's patch: eps added to every |R_ij| (1e-6 in RAPID, PQP and FCL).
 template <class T>
 Separation<T> separate_rapid(const OrientedBox<T>& a, const OrientedBox<T>& b, const T& eps = T(1e-6)) {
   check(a, "oriented box A");
@@ -109,7 +117,7 @@ Separation<T> separate_rapid(const OrientedBox<T>& a, const OrientedBox<T>& b, c
   return detail::obb_obb(a, b, eps, T(0), false);
 }
 
-// Wild Magic's patch: no edge axis when some pair of axes is within the cutoff of parallel.
+/// Wild Magic's patch: no edge axis when some pair of axes is within the cutoff of parallel.
 template <class T>
 Separation<T> separate_parallel(const OrientedBox<T>& a, const OrientedBox<T>& b, const T& cutoff = T(1) - T(1e-8)) {
   check(a, "oriented box A");

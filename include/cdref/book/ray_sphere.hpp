@@ -1,37 +1,38 @@
-// cdref/book/ray_sphere.hpp - Section 3.1.2, Algorithm 3.1: ray casts on a sphere.
-//
-// In the sphere's local coordinates (centre at the origin), with r the direction:
-//   sigma = (s.r)^2 - |r|^2 (|s|^2 - rho^2),
-//   lambda_{1,2} = (-s.r -+ sqrt(sigma)) / |r|^2.
-// The line meets the sphere iff sigma >= 0; the segment s->t (lambda in [0,1]) iff
-// moreover lambda_1 <= 1 and lambda_2 >= 0; the infinite ray (lambda >= 0) iff
-// lambda_2 >= 0. Then lambda_enter = max(lambda_1, 0), lambda_exit = min(lambda_2, 1)
-// (just lambda_2 for the infinite ray), and x = s + lambda_enter r.
-//
-// cast() follows the listing verbatim; it divides by |r|^2 for lambda_exit only when
-// lambda_exit is asked for, as the chapter suggests. The normal is x / rho, the unit
-// outward normal.
-//
-// hit() decides the same thing with no square root and no division. Given sigma >= 0
-// and |r|^2 > 0 (derivation: move the root to one side and square where both sides are
-// nonnegative):
-//   lambda_2 >= 0  <=>  s.r <= 0  or  |s|^2 <= rho^2   (s is in the sphere),
-//   lambda_1 <= 1  <=>  s.r + |r|^2 >= 0  or  |t|^2 <= rho^2   (t is in the sphere).
-// The test sigma >= 0 is kept as the chapter writes it: that is where the float
-// version loses its digits at long range, since (s.r)^2 ~ |r|^2 |s|^2 there.
-//
-// Boundary cases, as the chapter's closed intervals give them:
-//   - source strictly inside (lambda_1 < 0 < lambda_2): hit, lambda_enter = 0,
-//     enters = false, point = source, normal = 0;
-//   - source on the sphere, pointing inward or tangent: lambda_1 = 0, enters = true,
-//     point = source, normal = source / rho;
-//   - source on the sphere, pointing outward: lambda_2 = 0, a touching hit with
-//     lambda_enter = lambda_exit = 0 and enters = false;
-//   - tangent line: lambda_1 = lambda_2, a touching hit when it lies in range;
-//   - zero-length segment (s = t, where the listing would divide by 0): a point test,
-//     hit iff |s| <= rho; then every lambda in [0,1] gives that point, so
-//     lambda_enter = 0, lambda_exit = 1 (as Algorithm 3.3 gives for a box), enters = false;
-//   - rho = 0: the sphere is a point; the normal is left at 0.
+/// \file
+/// cdref/book/ray_sphere.hpp - Section 3.1.2, Algorithm 3.1: ray casts on a sphere.
+///
+/// In the sphere's local coordinates (centre at the origin), with r the direction:
+///   sigma = (s.r)^2 - |r|^2 (|s|^2 - rho^2),
+///   lambda_{1,2} = (-s.r -+ sqrt(sigma)) / |r|^2.
+/// The line meets the sphere iff sigma >= 0; the segment s->t (lambda in [0,1]) iff
+/// moreover lambda_1 <= 1 and lambda_2 >= 0; the infinite ray (lambda >= 0) iff
+/// lambda_2 >= 0. Then lambda_enter = max(lambda_1, 0), lambda_exit = min(lambda_2, 1)
+/// (just lambda_2 for the infinite ray), and x = s + lambda_enter r.
+///
+/// cast() follows the listing verbatim; it divides by |r|^2 for lambda_exit only when
+/// lambda_exit is asked for, as the chapter suggests. The normal is x / rho, the unit
+/// outward normal.
+///
+/// hit() decides the same thing with no square root and no division. Given sigma >= 0
+/// and |r|^2 > 0 (derivation: move the root to one side and square where both sides are
+/// nonnegative):
+///   lambda_2 >= 0  <=>  s.r <= 0  or  |s|^2 <= rho^2   (s is in the sphere),
+///   lambda_1 <= 1  <=>  s.r + |r|^2 >= 0  or  |t|^2 <= rho^2   (t is in the sphere).
+/// The test sigma >= 0 is kept as the chapter writes it: that is where the float
+/// version loses its digits at long range, since (s.r)^2 ~ |r|^2 |s|^2 there.
+///
+/// Boundary cases, as the chapter's closed intervals give them:
+///   - source strictly inside (lambda_1 < 0 < lambda_2): hit, lambda_enter = 0,
+///     enters = false, point = source, normal = 0;
+///   - source on the sphere, pointing inward or tangent: lambda_1 = 0, enters = true,
+///     point = source, normal = source / rho;
+///   - source on the sphere, pointing outward: lambda_2 = 0, a touching hit with
+///     lambda_enter = lambda_exit = 0 and enters = false;
+///   - tangent line: lambda_1 = lambda_2, a touching hit when it lies in range;
+///   - zero-length segment (s = t, where the listing would divide by 0): a point test,
+///     hit iff |s| <= rho; then every lambda in [0,1] gives that point, so
+///     lambda_enter = 0, lambda_exit = 1 (as Algorithm 3.3 gives for a box), enters = false;
+///   - rho = 0: the sphere is a point; the normal is left at 0.
 #pragma once
 
 #include "common.hpp"
@@ -40,7 +41,7 @@ namespace cdref::book {
 
 namespace detail {
 
-// s: source in local coordinates; r: direction (t - s for a segment); bounded: lambda <= 1.
+/// s: source in local coordinates; r: direction (t - s for a segment); bounded: lambda <= 1.
 template <class T>
 bool hit_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const T& rho, bool bounded) {
   const T rr = r.squaredNorm();
@@ -56,9 +57,9 @@ bool hit_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const T& rho, bool bou
   return exit_ahead && (sr + rr >= T(0) || t.squaredNorm() <= rho2);  // lambda_1 <= 1
 }
 
-// The chapter's formulation of sigma and of the entry point x = s + lambda_1 r. The cast below
-// takes it as a parameter: the every-output oracle runs the same cast with the perpendicular
-// foot's formulation (exact/cdref/oracle/sphere_cast_foot.hpp), equal to this one at exact types.
+/// The chapter's formulation of sigma and of the entry point x = s + lambda_1 r. The cast below
+/// takes it as a parameter: the every-output oracle runs the same cast with the perpendicular
+/// foot's formulation (exact/cdref/oracle/sphere_cast_foot.hpp), equal to this one at exact types.
 struct ChapterForm {
   template <class T>
   static T sigma(const Vec3<T>& s, const Vec3<T>& /*r*/, const T& rr, const T& sr, const T& rho2) {
@@ -112,26 +113,30 @@ Cast<sqrt_t<T>> cast_sphere_local(const Vec3<T>& s, const Vec3<T>& r, const Sphe
 }  // namespace detail
 
 namespace unchecked {
-// Algorithm 3.1 for the segment s->t: does it meet the sphere? No root, no division.
+/// Algorithm 3.1 for the segment s->t: does it meet the sphere? No root, no division.
 template <class T>
 bool hit(const Segment<T>& seg, const Sphere<T>& sp) {
   const Vec3<T> s = seg.source - sp.center;
   const Vec3<T> t = seg.target - sp.center;
   return detail::hit_sphere_local(s, Vec3<T>(t - s), sp.radius, true);
 }
-// Algorithm 3.1 for the infinite ray: does it meet the sphere? No root, no division.
+/// Algorithm 3.1 for the infinite ray: does it meet the sphere? No root, no division.
 template <class T>
 bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
   return detail::hit_sphere_local(Vec3<T>(ray.source - sp.center), ray.direction, sp.radius, false);
 }
 }  // namespace unchecked
 
+/// Whether the segment meets the closed sphere: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const Sphere<T>& sp) {
   check(seg, "segment");
   check(sp, "sphere");
   return unchecked::hit(seg, sp);
 }
+/// Whether the ray meets the closed sphere: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
   check(ray, "ray");
@@ -139,7 +144,7 @@ bool hit(const Ray<T>& ray, const Sphere<T>& sp) {
   return unchecked::hit(ray, sp);
 }
 
-// Algorithm 3.1 for the segment s->t, with the quantities asked for in w.
+/// Algorithm 3.1 for the segment s->t, with the quantities asked for in w.
 template <class T>
 Cast<sqrt_t<T>> cast(const Segment<T>& seg, const Sphere<T>& sp, unsigned w = want_cast) {
   check(seg, "segment");
@@ -149,7 +154,7 @@ Cast<sqrt_t<T>> cast(const Segment<T>& seg, const Sphere<T>& sp, unsigned w = wa
   return detail::cast_sphere_local(s, Vec3<T>(t - s), sp, true, w);
 }
 
-// Algorithm 3.1 for the infinite ray s + lambda d, lambda >= 0.
+/// Algorithm 3.1 for the infinite ray s + lambda d, lambda >= 0.
 template <class T>
 Cast<sqrt_t<T>> cast(const Ray<T>& ray, const Sphere<T>& sp, unsigned w = want_cast) {
   check(ray, "ray");

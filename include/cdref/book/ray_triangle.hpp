@@ -1,47 +1,48 @@
-// cdref/book/ray_triangle.hpp - Section 3.4: ray casts on a triangle (the segment s->t,
-// lambda in [0, 1], and the infinite ray s + lambda d, lambda >= 0).
-//
-// The triangle is closed and two-sided. With e1 = v1 - v0, e2 = v2 - v0 and the shot
-// x(lambda) = s + lambda d, the point x = v0 + u e1 + v e2 solves
-//   [-d  e1  e2] (lambda, u, v)^T = s - v0,
-// and Cramer's rule with det = e1 . (d x e2) (the scalar triple product) gives, with p = d x e2,
-// q = (s - v0) x e1:
-//   u = (s - v0) . p / det,   v = d . q / det,   lambda = e2 . q / det.
-// That is Moller and Trumbore's formulation (1997), as GLM, Embree's default intersector and most
-// renderers ship it: the shot meets the triangle iff u >= 0, v >= 0, u + v <= 1 and lambda in
-// range (all closed). cast() follows it with one division by det, as they do.
-//
-// det = 0 is where the listing stops (it reports a miss); the closed triangle is met there too:
-//   - n = e1 x e2 = 0: the triangle has zero area and is the segment [P, Q] between its two
-//     farthest vertices (or the point P): the shot meets it where the two lines meet
-//     (m = d x (Q - P) != 0: coplanar iff (P - s) . m = 0, then lambda = ((P - s) x r) . m / m.m and
-//     mu = ((P - s) x d) . m / m.m, mu in [0, 1]) or along their common line (m = 0, collinear:
-//     lambda over [(P - s) . d, (Q - s) . d] / d.d, clipped to the range);
-//   - n != 0 and (s - v0) . n != 0: the shot is parallel to the plane, off it: a miss;
-//   - n != 0 and (s - v0) . n = 0: the shot lies in the plane, and x(lambda) is in the triangle
-//     iff ((b - a) x (x(lambda) - a)) . n >= 0 for its three edges (a, b): a linear function
-//     alpha + lambda beta of lambda each, so the hits form an interval that the three half-lines
-//     clip (as Algorithm 3.3 clips a box's slabs): [lambda_enter, lambda_exit].
-// A zero-length segment (d = 0) is the point s: hit iff s lies in the triangle, with
-// lambda_enter = 0, lambda_exit = 1 (as for the sphere and the box).
-//
-// Outputs: lambda_enter, lambda_exit (equal unless the shot lies in the triangle's plane), point
-// = s + lambda_enter d (as engines compute it), u and v (the barycentric weights of v1 and v2 at
-// the point: point = (1 - u - v) v0 + u v1 + v v2; for a zero-area triangle the weights of the
-// segment [P, Q] that it spans, the third vertex 0), normal = n/|n| turned to face the source
-// ((s - v0) . normal > 0). The normal is 0 when the source lies in the triangle's plane (no side
-// faces it: the source in the triangle, or a shot in the plane) and for a zero-area triangle.
-// enters is false when the source lies in the triangle (lambda_enter = 0).
-//
-// hit() decides the same with no division, from the signs of three scalar triple products
-// w_k = d . (B x C), d . (C x A), d . (A x B) with A = v0 - s, B = v1 - s, C = v2 - s (the
-// shot's line passes through the triangle iff they do not have opposite signs), their sum
-// D = d . n, and N = A . n: lambda = N / D, so lambda >= 0 iff N D >= 0 and, for the segment,
-// lambda <= 1 iff N <= D (D > 0) or N >= D (D < 0). Where D = 0 it answers as cast() does.
-//
-// Floating point: det is a difference of products of differences; for a shot nearly parallel
-// to the plane, or aimed at an edge, rounding decides, and two triangles that share an edge can
-// both report a miss for a ray through it (a leak). robust/ray_triangle.hpp is watertight.
+/// \file
+/// cdref/book/ray_triangle.hpp - Section 3.4: ray casts on a triangle (the segment s->t,
+/// lambda in [0, 1], and the infinite ray s + lambda d, lambda >= 0).
+///
+/// The triangle is closed and two-sided. With e1 = v1 - v0, e2 = v2 - v0 and the shot
+/// x(lambda) = s + lambda d, the point x = v0 + u e1 + v e2 solves
+///   [-d  e1  e2] (lambda, u, v)^T = s - v0,
+/// and Cramer's rule with det = e1 . (d x e2) (the scalar triple product) gives, with p = d x e2,
+/// q = (s - v0) x e1:
+///   u = (s - v0) . p / det,   v = d . q / det,   lambda = e2 . q / det.
+/// That is Moller and Trumbore's formulation (1997), as GLM, Embree's default intersector and most
+/// renderers ship it: the shot meets the triangle iff u >= 0, v >= 0, u + v <= 1 and lambda in
+/// range (all closed). cast() follows it with one division by det, as they do.
+///
+/// det = 0 is where the listing stops (it reports a miss); the closed triangle is met there too:
+///   - n = e1 x e2 = 0: the triangle has zero area and is the segment [P, Q] between its two
+///     farthest vertices (or the point P): the shot meets it where the two lines meet
+///     (m = d x (Q - P) != 0: coplanar iff (P - s) . m = 0, then lambda = ((P - s) x r) . m / m.m and
+///     mu = ((P - s) x d) . m / m.m, mu in [0, 1]) or along their common line (m = 0, collinear:
+///     lambda over [(P - s) . d, (Q - s) . d] / d.d, clipped to the range);
+///   - n != 0 and (s - v0) . n != 0: the shot is parallel to the plane, off it: a miss;
+///   - n != 0 and (s - v0) . n = 0: the shot lies in the plane, and x(lambda) is in the triangle
+///     iff ((b - a) x (x(lambda) - a)) . n >= 0 for its three edges (a, b): a linear function
+///     alpha + lambda beta of lambda each, so the hits form an interval that the three half-lines
+///     clip (as Algorithm 3.3 clips a box's slabs): [lambda_enter, lambda_exit].
+/// A zero-length segment (d = 0) is the point s: hit iff s lies in the triangle, with
+/// lambda_enter = 0, lambda_exit = 1 (as for the sphere and the box).
+///
+/// Outputs: lambda_enter, lambda_exit (equal unless the shot lies in the triangle's plane), point
+/// = s + lambda_enter d (as engines compute it), u and v (the barycentric weights of v1 and v2 at
+/// the point: point = (1 - u - v) v0 + u v1 + v v2; for a zero-area triangle the weights of the
+/// segment [P, Q] that it spans, the third vertex 0), normal = n/|n| turned to face the source
+/// ((s - v0) . normal > 0). The normal is 0 when the source lies in the triangle's plane (no side
+/// faces it: the source in the triangle, or a shot in the plane) and for a zero-area triangle.
+/// enters is false when the source lies in the triangle (lambda_enter = 0).
+///
+/// hit() decides the same with no division, from the signs of three scalar triple products
+/// w_k = d . (B x C), d . (C x A), d . (A x B) with A = v0 - s, B = v1 - s, C = v2 - s (the
+/// shot's line passes through the triangle iff they do not have opposite signs), their sum
+/// D = d . n, and N = A . n: lambda = N / D, so lambda >= 0 iff N D >= 0 and, for the segment,
+/// lambda <= 1 iff N <= D (D > 0) or N >= D (D < 0). Where D = 0 it answers as cast() does.
+///
+/// Floating point: det is a difference of products of differences; for a shot nearly parallel
+/// to the plane, or aimed at an edge, rounding decides, and two triangles that share an edge can
+/// both report a miss for a ray through it (a leak). robust/ray_triangle.hpp is watertight.
 #pragma once
 
 #include "common.hpp"
@@ -56,7 +57,7 @@ bool within(const T& lambda, bool bounded) {
   return lambda >= T(0) && (!bounded || lambda <= T(1));
 }
 
-// Fills the values of a hit at lambda_enter (u, v given as the weights of v1, v2).
+/// Fills the values of a hit at lambda_enter (u, v given as the weights of v1, v2).
 template <class T>
 void finish_triangle_cast(TriangleCast<sqrt_t<T>>& r, const Vec3<T>& s, const Vec3<T>& d, const T& lo, const T& hi,
                           const T& u, const T& v, const Vec3<T>& facing, unsigned w) {
@@ -70,8 +71,8 @@ void finish_triangle_cast(TriangleCast<sqrt_t<T>>& r, const Vec3<T>& s, const Ve
   if ((w & want_normal) && !is_zero(facing)) r.normal = divided(facing, root(T(facing.squaredNorm())));
 }
 
-// The shot meets the segment [P, Q] (P = Q: the point) of a zero-area triangle; iP, iQ are the
-// vertex indices of P and Q.
+/// The shot meets the segment [P, Q] (P = Q: the point) of a zero-area triangle; iP, iQ are the
+/// vertex indices of P and Q.
 template <class T>
 TriangleCast<sqrt_t<T>> cast_on_segment(const Vec3<T>& s, const Vec3<T>& d, bool bounded, const Vec3<T>& P,
                                         const Vec3<T>& Q, int iP, int iQ, unsigned w) {
@@ -125,7 +126,7 @@ TriangleCast<sqrt_t<T>> cast_on_segment(const Vec3<T>& s, const Vec3<T>& d, bool
   return r;
 }
 
-// det = 0: a zero-area triangle, or a shot parallel to the triangle's plane (off it or in it).
+/// det = 0: a zero-area triangle, or a shot parallel to the triangle's plane (off it or in it).
 template <class T>
 TriangleCast<sqrt_t<T>> cast_flat(const Vec3<T>& s, const Vec3<T>& d, const Triangle<T>& tri, bool bounded,
                                   unsigned w) {
@@ -211,12 +212,18 @@ bool hit_triangle(const Vec3<T>& s, const Vec3<T>& d, const Triangle<T>& tri, bo
 
 }  // namespace detail
 
+/// The segment (lambda in [0, 1]) cast on the closed triangle: hit, entry and exit parameters,
+/// entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleCast<sqrt_t<T>> cast(const Segment<T>& seg, const Triangle<T>& tri, unsigned w = want_all) {
   check(seg, "segment");
   check(tri, "triangle");
   return detail::cast_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true, w);
 }
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed triangle: hit, entry and exit
+/// parameters, entry point and normal (only what the mask `w` asks for is computed). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleCast<sqrt_t<T>> cast(const Ray<T>& ray, const Triangle<T>& tri, unsigned w = want_all) {
   check(ray, "ray");
@@ -224,22 +231,30 @@ TriangleCast<sqrt_t<T>> cast(const Ray<T>& ray, const Triangle<T>& tri, unsigned
   return detail::cast_triangle(ray.source, ray.direction, tri, false, w);
 }
 namespace unchecked {
+/// The same as the checked `hit` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool hit(const Segment<T>& seg, const Triangle<T>& tri) {
   return detail::hit_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true);
 }
+/// The same as the checked `hit` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool hit(const Ray<T>& ray, const Triangle<T>& tri) {
   return detail::hit_triangle(ray.source, ray.direction, tri, false);
 }
 }  // namespace unchecked
 
+/// Whether the segment meets the closed triangle: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Segment<T>& seg, const Triangle<T>& tri) {
   check(seg, "segment");
   check(tri, "triangle");
   return detail::hit_triangle(seg.source, Vec3<T>(seg.target - seg.source), tri, true);
 }
+/// Whether the ray meets the closed triangle: the cast's classification alone. Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool hit(const Ray<T>& ray, const Triangle<T>& tri) {
   check(ray, "ray");

@@ -1,20 +1,21 @@
-// cdref/book/segment_sphere.hpp - Section 3.1.3, Algorithm 3.2: segment-sphere.
-//
-// In the sphere's local coordinates, with r = t - s and delta = -s.r, the point x of the
-// segment closest to the centre is s if delta <= 0, t if delta >= |r|^2, and otherwise
-// s + (delta / |r|^2) r. The segment meets the sphere iff |x|^2 <= rho^2.
-//   distance max(|x| - rho, 0), depth max(rho - |x|, 0),
-//   witness on the segment x, witness on the sphere rho x / |x|.
-// When x = 0 (the segment passes through the centre) the witness on the sphere is
-// rho y / |y| with y = r x e_i, e_i the axis on which r has its smallest absolute
-// coordinate, so y != 0 and y is orthogonal to r. For a zero-length segment at the
-// centre (r = 0 too) cdref takes y = e_x.
-//
-// intersect() makes the same decision without the division: for 0 < delta < |r|^2,
-//   |s + (delta/|r|^2) r|^2 = |s|^2 - delta^2 / |r|^2 <= rho^2
-//   <=>  |s|^2 |r|^2 - delta^2 <= rho^2 |r|^2.
-// proximity() follows the listing verbatim and divides.
-// In proximity(), A is the segment and B the sphere; `closest` is x in world coordinates.
+/// \file
+/// cdref/book/segment_sphere.hpp - Section 3.1.3, Algorithm 3.2: segment-sphere.
+///
+/// In the sphere's local coordinates, with r = t - s and delta = -s.r, the point x of the
+/// segment closest to the centre is s if delta <= 0, t if delta >= |r|^2, and otherwise
+/// s + (delta / |r|^2) r. The segment meets the sphere iff |x|^2 <= rho^2.
+///   distance max(|x| - rho, 0), depth max(rho - |x|, 0),
+///   witness on the segment x, witness on the sphere rho x / |x|.
+/// When x = 0 (the segment passes through the centre) the witness on the sphere is
+/// rho y / |y| with y = r x e_i, e_i the axis on which r has its smallest absolute
+/// coordinate, so y != 0 and y is orthogonal to r. For a zero-length segment at the
+/// centre (r = 0 too) cdref takes y = e_x.
+///
+/// intersect() makes the same decision without the division: for 0 < delta < |r|^2,
+///   |s + (delta/|r|^2) r|^2 = |s|^2 - delta^2 / |r|^2 <= rho^2
+///   <=>  |s|^2 |r|^2 - delta^2 <= rho^2 |r|^2.
+/// proximity() follows the listing verbatim and divides.
+/// In proximity(), A is the segment and B the sphere; `closest` is x in world coordinates.
 #pragma once
 
 #include "common.hpp"
@@ -22,7 +23,7 @@
 namespace cdref::book {
 
 namespace detail {
-// The listing's x: the point of the segment s->t (r = t - s) closest to the origin.
+/// The listing's x: the point of the segment s->t (r = t - s) closest to the origin.
 template <class T>
 Vec3<T> closest_to_origin(const Vec3<T>& s, const Vec3<T>& t, const Vec3<T>& r) {
   const T delta = -s.dot(r);
@@ -32,7 +33,7 @@ Vec3<T> closest_to_origin(const Vec3<T>& s, const Vec3<T>& t, const Vec3<T>& r) 
   const T lambda = delta / rr;
   return s + lambda * r;
 }
-// proximity()'s classification alone (|x|^2 <= rho^2, with the division), on checked input.
+/// proximity()'s classification alone (|x|^2 <= rho^2, with the division), on checked input.
 template <class T>
 bool closest_point_intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   const Vec3<T> s = seg.source - sp.center;
@@ -42,7 +43,7 @@ bool closest_point_intersect(const Segment<T>& seg, const Sphere<T>& sp) {
 }  // namespace detail
 
 namespace unchecked {
-// Algorithm 3.2's test on input already checked (see common.hpp).
+/// Algorithm 3.2's test on input already checked (see common.hpp).
 template <class T>
 bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   const Vec3<T> s = seg.source - sp.center;
@@ -57,6 +58,8 @@ bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
 }
 }  // namespace unchecked
 
+/// Whether the closed segment and sphere share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   check(seg, "segment");
@@ -64,6 +67,9 @@ bool intersect(const Segment<T>& seg, const Sphere<T>& sp) {
   return unchecked::intersect(seg, sp);
 }
 
+/// Distance, penetration depth and witness points of the segment and the sphere (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Segment<T>& seg, const Sphere<T>& sp, unsigned w = want_proximity) {
   using S = sqrt_t<T>;

@@ -1,37 +1,38 @@
-// cdref/book/separating_axes.hpp - Section 3.3, Theorem 3.1: separating axes of polytopes,
-// as one reusable piece.
-//
-// A vector L is a separating axis of A and B when the projections L . A and L . B (closed
-// intervals) do not overlap; then A and B are disjoint. For convex polytopes the converse
-// holds with a finite list of candidates (Theorem 3.1): if A and B are disjoint, one of
-//   - the face normals of A,
-//   - the face normals of B,
-//   - the cross products e_A x e_B of an edge direction of A and one of B
-// separates them. (A - B, the Minkowski difference, is a convex polytope; A and B are
-// disjoint iff the origin lies outside it, and then one of its facets separates the origin.
-// Each facet of A - B is a facet of A plus a vertex of B, a vertex of A plus a facet of B,
-// or an edge of A plus an edge of B, whose normal is then e_A x e_B.)
-//
-// The polytopes here are given by their face normals, their edge directions and their
-// projection: a list of vertices (segment, triangle), a zonotope c + sum_k t_k h_k g_k,
-// |t_k| <= 1 (an axis-aligned or oriented box: projection radius sum_k h_k |g_k . L|), or a
-// ray s + lambda d, lambda >= 0 (projection [s . L, +inf) when d . L > 0). A flat polytope
-// (a triangle) has its normal as its one face; with a box as the other polytope the box's
-// three edge directions keep the candidates complete even when the triangle is coplanar
-// with a flat box, and a triangle of zero area is the segment or point it spans (its zero
-// normal and zero edges drop out, and what remains is the candidate list of that segment or
-// point). Boxes of zero extent keep their edge directions. Two flat polytopes in one plane
-// (two triangles) are not covered by these candidates: their separating axes lie in the plane,
-// the side normals n x e of their edges, which such a polytope must then list among its faces.
-//
-// The axes are tried in the documented order: the faces of A (index 0, 1, ...), then the
-// faces of B, then e_A[i] x e_B[j] for i, then j (index faces_A + faces_B + i * edges_B + j),
-// and the first that separates is reported. An axis that is exactly zero (parallel edges,
-// a zero-area triangle's normal) is skipped: it never separates; one that is merely tiny is a
-// valid axis like any other. Sets are closed: projections that touch overlap.
-//
-// At an exact number type this decides exactly; at a float type every projection is rounded
-// (and a rounded cross product may be zero, or not, where the exact one is not, or is).
+/// \file
+/// cdref/book/separating_axes.hpp - Section 3.3, Theorem 3.1: separating axes of polytopes,
+/// as one reusable piece.
+///
+/// A vector L is a separating axis of A and B when the projections L . A and L . B (closed
+/// intervals) do not overlap; then A and B are disjoint. For convex polytopes the converse
+/// holds with a finite list of candidates (Theorem 3.1): if A and B are disjoint, one of
+///   - the face normals of A,
+///   - the face normals of B,
+///   - the cross products e_A x e_B of an edge direction of A and one of B
+/// separates them. (A - B, the Minkowski difference, is a convex polytope; A and B are
+/// disjoint iff the origin lies outside it, and then one of its facets separates the origin.
+/// Each facet of A - B is a facet of A plus a vertex of B, a vertex of A plus a facet of B,
+/// or an edge of A plus an edge of B, whose normal is then e_A x e_B.)
+///
+/// The polytopes here are given by their face normals, their edge directions and their
+/// projection: a list of vertices (segment, triangle), a zonotope c + sum_k t_k h_k g_k,
+/// |t_k| <= 1 (an axis-aligned or oriented box: projection radius sum_k h_k |g_k . L|), or a
+/// ray s + lambda d, lambda >= 0 (projection [s . L, +inf) when d . L > 0). A flat polytope
+/// (a triangle) has its normal as its one face; with a box as the other polytope the box's
+/// three edge directions keep the candidates complete even when the triangle is coplanar
+/// with a flat box, and a triangle of zero area is the segment or point it spans (its zero
+/// normal and zero edges drop out, and what remains is the candidate list of that segment or
+/// point). Boxes of zero extent keep their edge directions. Two flat polytopes in one plane
+/// (two triangles) are not covered by these candidates: their separating axes lie in the plane,
+/// the side normals n x e of their edges, which such a polytope must then list among its faces.
+///
+/// The axes are tried in the documented order: the faces of A (index 0, 1, ...), then the
+/// faces of B, then e_A[i] x e_B[j] for i, then j (index faces_A + faces_B + i * edges_B + j),
+/// and the first that separates is reported. An axis that is exactly zero (parallel edges,
+/// a zero-area triangle's normal) is skipped: it never separates; one that is merely tiny is a
+/// valid axis like any other. Sets are closed: projections that touch overlap.
+///
+/// At an exact number type this decides exactly; at a float type every projection is rounded
+/// (and a rounded cross product may be zero, or not, where the exact one is not, or is).
 #pragma once
 
 #include <array>
@@ -40,30 +41,42 @@
 
 namespace cdref::book {
 
+/// A convex polytope as Theorem 3.1 sees it: its points (vertices, or a zonotope's centre and
+/// generators, or a ray's source and direction), its face normals and its edge directions.
 template <class T>
 struct Polytope {
+  /// How `point`, `gen` and `half` describe the set.
   enum Kind { vertices, zonotope, ray };
-  Kind kind = vertices;
-  int n = 0;                       // vertices, or generators of a zonotope
-  std::array<Vec3<T>, 3> point{};  // the vertices; a zonotope's centre; a ray's source
-  std::array<Vec3<T>, 3> gen{};    // a zonotope's generator directions; a ray's direction
-  std::array<T, 3> half{};         // a zonotope's half-lengths h_k along gen[k]
+  Kind kind = vertices;  ///< how the set is described
+  int n = 0;                       ///< vertices, or generators of a zonotope
+  std::array<Vec3<T>, 3> point{};  ///< the vertices; a zonotope's centre; a ray's source
+  std::array<Vec3<T>, 3> gen{};    ///< a zonotope's generator directions; a ray's direction
+  std::array<T, 3> half{};         ///< a zonotope's half-lengths h_k along gen[k]
+  ///@{
+  /// How many face normals and edge directions are in use.
   int faces = 0, edges = 0;
-  std::array<Vec3<T>, 3> face{};   // face normals (unnormalised, either sign)
-  std::array<Vec3<T>, 3> edge{};   // edge directions
+  ///@}
+  std::array<Vec3<T>, 3> face{};   ///< face normals (unnormalised, either sign)
+  std::array<Vec3<T>, 3> edge{};   ///< edge directions
 };
 
-// The projection L . P as a closed interval; lo_inf / hi_inf for a ray's open end.
+/// The projection L . P as a closed interval; lo_inf / hi_inf for a ray's open end.
 template <class T>
 struct Projection {
+  ///@{
+  /// The interval's ends.
   T lo, hi;
+  ///@}
+  ///@{
+  /// Whether the interval is unbounded below, above.
   bool lo_inf = false, hi_inf = false;
+  ///@}
 };
 
 namespace detail {
 
-// `own_edge`: L is a cross product with the polytope's own edge direction, so a ray's
-// direction is orthogonal to it (d . L = 0 identically: the ray projects onto one point).
+/// `own_edge`: L is a cross product with the polytope's own edge direction, so a ray's
+/// direction is orthogonal to it (d . L = 0 identically: the ray projects onto one point).
 template <class T>
 Projection<T> project(const Polytope<T>& p, const Vec3<T>& L, bool own_edge = false) {
   Projection<T> r{T(0), T(0)};
@@ -99,7 +112,7 @@ Projection<T> project(const Polytope<T>& p, const Vec3<T>& L, bool own_edge = fa
   return r;
 }
 
-// The closed intervals are disjoint.
+/// The closed intervals are disjoint.
 template <class T>
 bool apart(const Projection<T>& a, const Projection<T>& b) {
   return (!a.hi_inf && !b.lo_inf && a.hi < b.lo) || (!b.hi_inf && !a.lo_inf && b.hi < a.lo);
@@ -107,7 +120,7 @@ bool apart(const Projection<T>& a, const Projection<T>& b) {
 
 }  // namespace detail
 
-// Theorem 3.1 on two polytopes: intersect, or the first separating axis in the order above.
+/// Theorem 3.1 on two polytopes: intersect, or the first separating axis in the order above.
 template <class T>
 Separation<T> separate(const Polytope<T>& a, const Polytope<T>& b) {
   Separation<T> res;
@@ -131,7 +144,7 @@ Separation<T> separate(const Polytope<T>& a, const Polytope<T>& b) {
   return res;
 }
 
-// ---- the chapter's primitives as polytopes ----
+/// ---- the chapter's primitives as polytopes ----
 template <class T>
 Polytope<T> polytope(const Segment<T>& s) {
   Polytope<T> p;
@@ -144,6 +157,7 @@ Polytope<T> polytope(const Segment<T>& s) {
   return p;
 }
 
+/// The ray as a polytope: its source and direction (an unbounded zonotope).
 template <class T>
 Polytope<T> polytope(const Ray<T>& r) {
   Polytope<T> p;
@@ -156,6 +170,7 @@ Polytope<T> polytope(const Ray<T>& r) {
   return p;
 }
 
+/// The triangle as a polytope: three vertices, its normal as face, its edges.
 template <class T>
 Polytope<T> polytope(const Triangle<T>& t) {
   Polytope<T> p;
@@ -169,6 +184,7 @@ Polytope<T> polytope(const Triangle<T>& t) {
   return p;
 }
 
+/// The axis-aligned box as a polytope: a zonotope of the coordinate axes, faces and edges e_x, e_y, e_z.
 template <class T>
 Polytope<T> polytope(const Box<T>& b) {
   Polytope<T> p;
@@ -183,8 +199,8 @@ Polytope<T> polytope(const Box<T>& b) {
   return p;
 }
 
-// The oriented box as the solid its inputs define: face normals a_1 x a_2, a_2 x a_0,
-// a_0 x a_1 (the true normals of the parallelepiped), edge directions a_0, a_1, a_2.
+/// The oriented box as the solid its inputs define: face normals a_1 x a_2, a_2 x a_0,
+/// a_0 x a_1 (the true normals of the parallelepiped), edge directions a_0, a_1, a_2.
 template <class T>
 Polytope<T> polytope(const OrientedBox<T>& b) {
   Polytope<T> p;
@@ -200,7 +216,7 @@ Polytope<T> polytope(const OrientedBox<T>& b) {
   return p;
 }
 
-// Theorem 3.1 on any two of the chapter's polytopes, after the input checks.
+/// Theorem 3.1 on any two of the chapter's polytopes, after the input checks.
 template <class A, class B>
 auto separate_polytopes(const A& a, const B& b, const char* name_a, const char* name_b) {
   check(a, name_a);

@@ -1,16 +1,17 @@
-// cdref/book/sphere_box.hpp - Section 3.2.2: sphere-box.
-//
-// In the box's local coordinates (centre at the origin, extent h), with the sphere's
-// centre c, the point of the box closest to c is x = clamp(c, -h, h) component-wise, and
-// the sphere meets the box iff |x - c|^2 <= rho^2 (no square root).
-// With v = x - c:
-//   centre outside the box (v != 0): distance max(|v| - rho, 0), depth max(rho - |v|, 0),
-//     witness on the sphere c + rho v/|v|, witness on the box x;
-//   centre in the closed box (v = 0): distance 0; the axis e_i with the smallest
-//     delta_i = eta_i - |gamma_i| (first on ties) gives the witness on the box
-//     y = c + delta_i sign(gamma_i) e_i, the witness on the sphere c - rho sign(gamma_i) e_i,
-//     and depth delta_i + rho; sign(0) = +1, as in the chapter.
-// In proximity(), A is the sphere and B the box; `closest` is x in world coordinates.
+/// \file
+/// cdref/book/sphere_box.hpp - Section 3.2.2: sphere-box.
+///
+/// In the box's local coordinates (centre at the origin, extent h), with the sphere's
+/// centre c, the point of the box closest to c is x = clamp(c, -h, h) component-wise, and
+/// the sphere meets the box iff |x - c|^2 <= rho^2 (no square root).
+/// With v = x - c:
+///   centre outside the box (v != 0): distance max(|v| - rho, 0), depth max(rho - |v|, 0),
+///     witness on the sphere c + rho v/|v|, witness on the box x;
+///   centre in the closed box (v = 0): distance 0; the axis e_i with the smallest
+///     delta_i = eta_i - |gamma_i| (first on ties) gives the witness on the box
+///     y = c + delta_i sign(gamma_i) e_i, the witness on the sphere c - rho sign(gamma_i) e_i,
+///     and depth delta_i + rho; sign(0) = +1, as in the chapter.
+/// In proximity(), A is the sphere and B the box; `closest` is x in world coordinates.
 #pragma once
 
 #include "common.hpp"
@@ -30,10 +31,10 @@ Vec3<T> clamp_to_box(const Vec3<T>& c, const Vec3<T>& h) {
 
 namespace detail {
 
-// The queries on checked input (also the oriented box's, on the centre moved into its frame).
-// |v|^2 is summed coordinate by coordinate, in the order squaredNorm() sums: the same value,
-// without writing the clamped point to memory and reading it back as a vector (g++ stores two
-// coordinates one by one and loads them as a pair, a store it cannot forward: 2x the time).
+/// The queries on checked input (also the oriented box's, on the centre moved into its frame).
+/// |v|^2 is summed coordinate by coordinate, in the order squaredNorm() sums: the same value,
+/// without writing the clamped point to memory and reading it back as a vector (g++ stores two
+/// coordinates one by one and loads them as a pair, a store it cannot forward: 2x the time).
 template <class T>
 bool sphere_box_intersect(const Sphere<T>& sp, const Box<T>& box) {
   const Vec3<T> c = sp.center - box.center;
@@ -92,12 +93,16 @@ Proximity<sqrt_t<T>> sphere_box_proximity(const Sphere<T>& sp, const Box<T>& box
 }  // namespace detail
 
 namespace unchecked {
+/// The same as the checked `intersect` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   return detail::sphere_box_intersect(sp, box);
 }
 }  // namespace unchecked
 
+/// Whether the closed sphere and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   check(sp, "sphere");
@@ -105,6 +110,9 @@ bool intersect(const Sphere<T>& sp, const Box<T>& box) {
   return detail::sphere_box_intersect(sp, box);
 }
 
+/// Distance, penetration depth and witness points of the sphere and the axis-aligned box (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Box<T>& box, unsigned w = want_proximity) {
   check(sp, "sphere");

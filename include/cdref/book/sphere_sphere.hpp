@@ -1,10 +1,11 @@
-// cdref/book/sphere_sphere.hpp - Section 3.1.1, sphere-sphere.
-//
-// A and B intersect iff |cA - cB|^2 <= (rhoA + rhoB)^2 (no square root).
-//   distance d = max(|v| - (rhoA + rhoB), 0),  depth p = max(rhoA + rhoB - |v|, 0),
-//   witnesses pA = cA - rhoA v/|v|,  pB = cB + rhoB v/|v|,  with v = cA - cB.
-// For concentric spheres (v = 0) the chapter lets any unit vector stand for v/|v|;
-// cdref takes e_x, so pA = cA - rhoA e_x and pB = cB + rhoB e_x (|pA - pB| = depth).
+/// \file
+/// cdref/book/sphere_sphere.hpp - Section 3.1.1, sphere-sphere.
+///
+/// A and B intersect iff |cA - cB|^2 <= (rhoA + rhoB)^2 (no square root).
+///   distance d = max(|v| - (rhoA + rhoB), 0),  depth p = max(rhoA + rhoB - |v|, 0),
+///   witnesses pA = cA - rhoA v/|v|,  pB = cB + rhoB v/|v|,  with v = cA - cB.
+/// For concentric spheres (v = 0) the chapter lets any unit vector stand for v/|v|;
+/// cdref takes e_x, so pA = cA - rhoA e_x and pB = cB + rhoB e_x (|pA - pB| = depth).
 #pragma once
 
 #include "common.hpp"
@@ -12,7 +13,7 @@
 namespace cdref::book {
 
 namespace unchecked {
-// The test on input already checked (see common.hpp).
+/// The test on input already checked (see common.hpp).
 template <class T>
 bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   const Vec3<T> v = a.center - b.center;
@@ -21,6 +22,8 @@ bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
 }
 }  // namespace unchecked
 
+/// Whether the closed sphere and sphere share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   check(a, "sphere A");
@@ -28,6 +31,9 @@ bool intersect(const Sphere<T>& a, const Sphere<T>& b) {
   return unchecked::intersect(a, b);
 }
 
+/// Distance, penetration depth and witness points of the sphere and the sphere (a cdref::Proximity;
+/// only what the mask `w` asks for is computed, the rest stays 0). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& a, const Sphere<T>& b, unsigned w = want_proximity) {
   using S = sqrt_t<T>;

@@ -1,23 +1,24 @@
-// cdref/book/sphere_triangle.hpp - Section 3.4: a sphere and a triangle (intersect, distance,
-// penetration depth, witness points).
-//
-// As for the segment (Section 3.1.3) and the box (3.2.2), the test is built on the point x of
-// the triangle closest to the sphere's centre c: they meet iff |x - c|^2 <= rho^2.
-// The closest point x is point_triangle.hpp's (region by region, a zero-area triangle as the
-// segment or point it spans).
-// With v = x - c:
-//   x != c   distance max(|v| - rho, 0), depth max(rho - |v|, 0) (the ball's distance to
-//            the boundary of the triangle grown by rho: rho minus the distance of c), witnesses
-//            c + rho v/|v| on the sphere and x on the triangle;
-//   x == c   the centre lies on the triangle: distance 0, depth rho, witnesses c (triangle)
-//            and c + rho n/|n| (sphere), n = ab x ac; for a zero-area triangle n = e x e_i
-//            with e its direction and e_i the axis of e's smallest coordinate (as Algorithm
-//            3.2 does), and for a point the axis e_x.
-// Range: va, vb, vc are of degree 4 in the coordinates. In double, coordinates (relative to
-// each other) beyond about 2^250 overflow them and the answer is not finite; below about
-// 2^-250 they underflow to 0 and the region tests pick a wrong edge (tests/test_triangles.cpp
-// states both). The robust version and the oracle work on scaled double words instead.
-// In proximity(), A is the sphere and B the triangle; `closest` is x.
+/// \file
+/// cdref/book/sphere_triangle.hpp - Section 3.4: a sphere and a triangle (intersect, distance,
+/// penetration depth, witness points).
+///
+/// As for the segment (Section 3.1.3) and the box (3.2.2), the test is built on the point x of
+/// the triangle closest to the sphere's centre c: they meet iff |x - c|^2 <= rho^2.
+/// The closest point x is point_triangle.hpp's (region by region, a zero-area triangle as the
+/// segment or point it spans).
+/// With v = x - c:
+///   x != c   distance max(|v| - rho, 0), depth max(rho - |v|, 0) (the ball's distance to
+///            the boundary of the triangle grown by rho: rho minus the distance of c), witnesses
+///            c + rho v/|v| on the sphere and x on the triangle;
+///   x == c   the centre lies on the triangle: distance 0, depth rho, witnesses c (triangle)
+///            and c + rho n/|n| (sphere), n = ab x ac; for a zero-area triangle n = e x e_i
+///            with e its direction and e_i the axis of e's smallest coordinate (as Algorithm
+///            3.2 does), and for a point the axis e_x.
+/// Range: va, vb, vc are of degree 4 in the coordinates. In double, coordinates (relative to
+/// each other) beyond about 2^250 overflow them and the answer is not finite; below about
+/// 2^-250 they underflow to 0 and the region tests pick a wrong edge (tests/test_triangles.cpp
+/// states both). The robust version and the oracle work on scaled double words instead.
+/// In proximity(), A is the sphere and B the triangle; `closest` is x.
 #pragma once
 
 #include "common.hpp"
@@ -27,7 +28,7 @@ namespace cdref::book {
 
 namespace detail {
 
-// The closest point on checked input.
+/// The closest point on checked input.
 template <class T>
 bool sphere_triangle_intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   const Vec3<T> v = closest_on_triangle(tri, sp.center) - sp.center;
@@ -37,12 +38,16 @@ bool sphere_triangle_intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
 }  // namespace detail
 
 namespace unchecked {
+/// The same as the checked `intersect` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   return detail::sphere_triangle_intersect(sp, tri);
 }
 }  // namespace unchecked
 
+/// Whether the closed sphere and triangle share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
   check(sp, "sphere");
@@ -52,7 +57,7 @@ bool intersect(const Sphere<T>& sp, const Triangle<T>& tri) {
 
 namespace detail {
 
-// proximity()'s outputs from the closest point x of the triangle (dir as closest_on_triangle's).
+/// proximity()'s outputs from the closest point x of the triangle (dir as closest_on_triangle's).
 template <class T>
 Proximity<sqrt_t<T>> sphere_triangle_outputs(const Sphere<T>& sp, const Triangle<T>& tri, const Vec3<T>& x,
                                              const Vec3<T>& dir, unsigned w) {
@@ -88,6 +93,9 @@ Proximity<sqrt_t<T>> sphere_triangle_outputs(const Sphere<T>& sp, const Triangle
 
 }  // namespace detail
 
+/// Distance, penetration depth and witness points of the sphere and the triangle (a
+/// cdref::Proximity; only what the mask `w` asks for is computed, the rest stays 0). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const Triangle<T>& tri, unsigned w = want_proximity) {
   check(sp, "sphere");

@@ -1,22 +1,23 @@
-// cdref/book/triangle_box.hpp - Section 3.3: a triangle against an axis-aligned box by
-// separating axes, in the formulation of Akenine-Moller ("Fast 3D triangle-box overlap
-// testing", JGT 2001), which nearly every voxelizer and BVH builder ships.
-//
-// Theorem 3.1 for a triangle (one face normal n = e_0 x (v_2 - v_0), edge directions
-// e_0 = v_1 - v_0, e_1 = v_2 - v_1, e_2 = v_0 - v_2) and a box (faces and edges e_x, e_y,
-// e_z): 13 axes, tried in this order (cdref's documented order: faces of the triangle, faces
-// of the box, then edge pairs):
-//   axis 0            the normal: the plane n . (x - v_0) = 0 misses the box iff
-//                     |n . v_0| > sum_i h_i |n_i| (vertices relative to the box centre);
-//   axes 1, 2, 3      the box's faces: min_k v_k,i > h_i or max_k v_k,i < -h_i (the
-//                     triangle's bounding box against the box);
-//   axis 4 + 3k + j   e_k x e_j: the triangle projects onto [min, max] of v . L over its
-//                     three vertices (the two ends of edge k project alike), the box onto
-//                     +- sum_i h_i |L_i|; e.g. e x e_x = (0, e_z, -e_y): p = v_y e_z - v_z e_y,
-//                     r = h_y |e_z| + h_z |e_y|.
-// Zero-area triangles: the normal is 0 and drops out; the edges that remain make it the
-// segment or point test it then is. The triangle is closed and two-sided; the box is
-// closed: touching intersects.
+/// \file
+/// cdref/book/triangle_box.hpp - Section 3.3: a triangle against an axis-aligned box by
+/// separating axes, in the formulation of Akenine-Moller ("Fast 3D triangle-box overlap
+/// testing", JGT 2001), which nearly every voxelizer and BVH builder ships.
+///
+/// Theorem 3.1 for a triangle (one face normal n = e_0 x (v_2 - v_0), edge directions
+/// e_0 = v_1 - v_0, e_1 = v_2 - v_1, e_2 = v_0 - v_2) and a box (faces and edges e_x, e_y,
+/// e_z): 13 axes, tried in this order (cdref's documented order: faces of the triangle, faces
+/// of the box, then edge pairs):
+///   axis 0            the normal: the plane n . (x - v_0) = 0 misses the box iff
+///                     |n . v_0| > sum_i h_i |n_i| (vertices relative to the box centre);
+///   axes 1, 2, 3      the box's faces: min_k v_k,i > h_i or max_k v_k,i < -h_i (the
+///                     triangle's bounding box against the box);
+///   axis 4 + 3k + j   e_k x e_j: the triangle projects onto [min, max] of v . L over its
+///                     three vertices (the two ends of edge k project alike), the box onto
+///                     +- sum_i h_i |L_i|; e.g. e x e_x = (0, e_z, -e_y): p = v_y e_z - v_z e_y,
+///                     r = h_y |e_z| + h_z |e_y|.
+/// Zero-area triangles: the normal is 0 and drops out; the edges that remain make it the
+/// segment or point test it then is. The triangle is closed and two-sided; the box is
+/// closed: touching intersects.
 #pragma once
 
 #include "common.hpp"
@@ -25,7 +26,7 @@ namespace cdref::book {
 
 namespace detail {
 
-// e x e_j for an edge e and a box axis j.
+/// e x e_j for an edge e and a box axis j.
 template <class T>
 Vec3<T> cross_axis(const Vec3<T>& e, int j) {
   if (j == 0) return Vec3<T>(T(0), e[2], T(-e[1]));
@@ -33,8 +34,8 @@ Vec3<T> cross_axis(const Vec3<T>& e, int j) {
   return Vec3<T>(e[1], T(-e[0]), T(0));
 }
 
-// The first separating axis of a triangle (vertices relative to the box centre) and the box
-// [-h, h], or -1; `normal` gets the triangle's normal.
+/// The first separating axis of a triangle (vertices relative to the box centre) and the box
+/// [-h, h], or -1; `normal` gets the triangle's normal.
 template <class T>
 int triangle_box_axis(const std::array<Vec3<T>, 3>& v, const Vec3<T>& h, Vec3<T>& normal) {
   const Vec3<T> e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
@@ -67,7 +68,7 @@ int triangle_box_axis(const std::array<Vec3<T>, 3>& v, const Vec3<T>& h, Vec3<T>
 }  // namespace detail
 
 namespace detail {
-// The separation on checked input (also the oriented box's, in its frame).
+/// The separation on checked input (also the oriented box's, in its frame).
 template <class T>
 Separation<T> triangle_box(const Triangle<T>& tri, const Box<T>& box) {
   const std::array<Vec3<T>, 3> v = {tri.vertex[0] - box.center, tri.vertex[1] - box.center,
@@ -87,12 +88,17 @@ Separation<T> triangle_box(const Triangle<T>& tri, const Box<T>& box) {
 }  // namespace detail
 
 namespace unchecked {
+/// The same as the checked `separate` of these arguments, on input already checked: no input
+/// checks (see book/common.hpp). For loops over bodies checked once.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   return detail::triangle_box(tri, box);
 }
 }  // namespace unchecked
 
+/// Theorem 3.1 on the triangle and the axis-aligned box: whether they intersect, else the first
+/// separating axis in this file's order and its direction (a cdref::Separation). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   check(tri, "triangle");
@@ -100,6 +106,8 @@ Separation<T> separate(const Triangle<T>& tri, const Box<T>& box) {
   return unchecked::separate(tri, box);
 }
 
+/// Whether the closed triangle and axis-aligned box share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 bool intersect(const Triangle<T>& tri, const Box<T>& box) {
   return separate(tri, box).intersect;

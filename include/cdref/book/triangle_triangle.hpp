@@ -1,35 +1,36 @@
-// cdref/book/triangle_triangle.hpp - Section 3.4: do two triangles intersect, and where?
-//
-// intersect(A, B) follows Moller's interval test ("A Fast Triangle-Triangle Intersection Test",
-// JGT 1997) with the plane distances compared with 0 (Moller's code snaps |d| < 1e-6 to 0; the
-// `eps` argument reproduces that, 0 is the exact test):
-//   nA = (a1 - a0) x (a2 - a0), dB_k = nA . (b_k - a0): B's vertices against A's plane, and dA_k
-//   = nB . (a_k - b0) the other way. All dB_k of one strict sign (or all dA_k): a plane separates
-//   them. All dA_k = 0: the triangles are coplanar. Otherwise each triangle meets the other's
-//   plane in a segment on the line L = the planes' intersection, direction D = nA x nB:
-//   cut(A) = the vertices of A with dA_k = 0 and the points a_i + (a_j - a_i) dA_i / (dA_i - dA_j)
-//   of the edges whose ends have strictly opposite signs, the extreme two along D. The triangles
-//   meet iff the two cuts overlap along D, and the overlap [p, q] is their intersection (a
-//   segment, or a point where they touch).
-// Coplanar triangles (an area in common, or none) are decided by Theorem 3.1 with the side
-// normals nA x e of their six edges (the in-plane separating axes; book/separating_axes.hpp);
-// the result then says `coplanar` and gives no segment.
-// A triangle of zero area is the segment or point it spans: against a triangle that is the
-// segment cast of book/ray_triangle.hpp (the hit interval gives [p, q]), and two of them meet
-// as two segments (or points) do.
-//
-// Result: intersect; coplanar (both triangles in one plane, neither of zero area, meeting: the
-// intersection is then a convex polygon, and p = q = 0); p and q, the ends of the intersection
-// segment, p first in lexicographic order of (x, y, z) (p = q where they touch at a point).
-//
-// separate(A, B) is the other formulation of the classification, division-free: Theorem 3.1
-// with 17 candidate axes in this order: nA (0), nB (1), e_A[i] x e_B[j] (2 + 3i + j), the side
-// normals nA x e_A[i] (11 + i) and nB x e_B[j] (14 + j); for a triangle of zero area it answers
-// as intersect() does.
-//
-// Floating point: the cut points divide by dA_i - dA_j; two nearly parallel triangles, or a
-// vertex a hair from the other plane, leave the signs and the overlap to rounding (and an
-// absolute epsilon, as in Moller's code, misjudges every pair whose size is far from 1).
+/// \file
+/// cdref/book/triangle_triangle.hpp - Section 3.4: do two triangles intersect, and where?
+///
+/// intersect(A, B) follows Moller's interval test ("A Fast Triangle-Triangle Intersection Test",
+/// JGT 1997) with the plane distances compared with 0 (Moller's code snaps |d| < 1e-6 to 0; the
+/// `eps` argument reproduces that, 0 is the exact test):
+///   nA = (a1 - a0) x (a2 - a0), dB_k = nA . (b_k - a0): B's vertices against A's plane, and dA_k
+///   = nB . (a_k - b0) the other way. All dB_k of one strict sign (or all dA_k): a plane separates
+///   them. All dA_k = 0: the triangles are coplanar. Otherwise each triangle meets the other's
+///   plane in a segment on the line L = the planes' intersection, direction D = nA x nB:
+///   cut(A) = the vertices of A with dA_k = 0 and the points a_i + (a_j - a_i) dA_i / (dA_i - dA_j)
+///   of the edges whose ends have strictly opposite signs, the extreme two along D. The triangles
+///   meet iff the two cuts overlap along D, and the overlap [p, q] is their intersection (a
+///   segment, or a point where they touch).
+/// Coplanar triangles (an area in common, or none) are decided by Theorem 3.1 with the side
+/// normals nA x e of their six edges (the in-plane separating axes; book/separating_axes.hpp);
+/// the result then says `coplanar` and gives no segment.
+/// A triangle of zero area is the segment or point it spans: against a triangle that is the
+/// segment cast of book/ray_triangle.hpp (the hit interval gives [p, q]), and two of them meet
+/// as two segments (or points) do.
+///
+/// Result: intersect; coplanar (both triangles in one plane, neither of zero area, meeting: the
+/// intersection is then a convex polygon, and p = q = 0); p and q, the ends of the intersection
+/// segment, p first in lexicographic order of (x, y, z) (p = q where they touch at a point).
+///
+/// separate(A, B) is the other formulation of the classification, division-free: Theorem 3.1
+/// with 17 candidate axes in this order: nA (0), nB (1), e_A[i] x e_B[j] (2 + 3i + j), the side
+/// normals nA x e_A[i] (11 + i) and nB x e_B[j] (14 + j); for a triangle of zero area it answers
+/// as intersect() does.
+///
+/// Floating point: the cut points divide by dA_i - dA_j; two nearly parallel triangles, or a
+/// vertex a hair from the other plane, leave the signs and the overlap to rounding (and an
+/// absolute epsilon, as in Moller's code, misjudges every pair whose size is far from 1).
 #pragma once
 
 #include "common.hpp"
@@ -57,7 +58,7 @@ TriangleIntersection<T> meeting(const Vec3<T>& a, const Vec3<T>& b) {
   return r;
 }
 
-// A value of sqrt_t<T> known to be rational, as a T.
+/// A value of sqrt_t<T> known to be rational, as a T.
 template <class T, class S>
 T rational_of(const S& x) {
   if constexpr (std::is_same_v<S, T>)
@@ -66,7 +67,7 @@ T rational_of(const S& x) {
     return x.a();
 }
 
-// The segment (or point) a zero-area triangle spans.
+/// The segment (or point) a zero-area triangle spans.
 template <class T>
 Segment<T> span_of(const Triangle<T>& t) {
   int i, j;
@@ -74,7 +75,7 @@ Segment<T> span_of(const Triangle<T>& t) {
   return {t.vertex[i], t.vertex[j]};
 }
 
-// A segment (a zero-area triangle's span) against a triangle, or against another span.
+/// A segment (a zero-area triangle's span) against a triangle, or against another span.
 template <class T>
 TriangleIntersection<T> span_meets(const Segment<T>& s, const Triangle<T>& t, bool t_is_span) {
   const Vec3<T> d = s.target - s.source;
@@ -92,8 +93,8 @@ TriangleIntersection<T> span_meets(const Segment<T>& s, const Triangle<T>& t, bo
   return meeting(Vec3<T>(s.source + d * le), Vec3<T>(s.source + d * lx));
 }
 
-// The cut of triangle `t` (signed distances `d` of its vertices) by the other's plane: its two
-// extreme points along D.
+/// The cut of triangle `t` (signed distances `d` of its vertices) by the other's plane: its two
+/// extreme points along D.
 template <class T>
 void cut(const Triangle<T>& t, const T (&d)[3], const Vec3<T>& D, Vec3<T>& lo, Vec3<T>& hi, T& tlo, T& thi) {
   bool any = false;
@@ -117,7 +118,7 @@ bool same_strict_sign(const T (&d)[3]) {
   return (d[0] > T(0) && d[1] > T(0) && d[2] > T(0)) || (d[0] < T(0) && d[1] < T(0) && d[2] < T(0));
 }
 
-// Theorem 3.1 with the 17 axes of the header (both triangles of nonzero area).
+/// Theorem 3.1 with the 17 axes of the header (both triangles of nonzero area).
 template <class T>
 Separation<T> separate_triangles(const Triangle<T>& a, const Triangle<T>& b) {
   const Polytope<T> pa = polytope(a), pb = polytope(b);
@@ -174,6 +175,8 @@ TriangleIntersection<T> intersect_triangles(const Triangle<T>& A, const Triangle
 
 }  // namespace detail
 
+/// Whether the closed triangle and triangle share a point (touching counts). Throws
+/// cdref::invalid_input naming a bad argument.
 template <class T>
 TriangleIntersection<T> intersect(const Triangle<T>& a, const Triangle<T>& b, const T& eps = T(0)) {
   check(a, "triangle A");
@@ -182,7 +185,7 @@ TriangleIntersection<T> intersect(const Triangle<T>& a, const Triangle<T>& b, co
 }
 
 namespace unchecked {
-// separate() on input already checked (see common.hpp).
+/// separate() on input already checked (see common.hpp).
 template <class T>
 Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
   const Vec3<T> nA = Vec3<T>(a.vertex[1] - a.vertex[0]).cross(Vec3<T>(a.vertex[2] - a.vertex[0]));
@@ -196,6 +199,9 @@ Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
 }
 }  // namespace unchecked
 
+/// Theorem 3.1 on the triangle and the triangle: whether they intersect, else the first separating
+/// axis in this file's order and its direction (a cdref::Separation). Throws cdref::invalid_input
+/// naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& a, const Triangle<T>& b) {
   check(a, "triangle A");

@@ -1,40 +1,41 @@
-// cdref/solid/obb.hpp - the oriented box as the solid its inputs define: queries on the
-// parallelepiped P = {c + sum_i u_i a_i : |u_i| <= h_i}, whatever the axes (linearly
-// independent, not necessarily orthonormal). At an exact type these are the truth that the
-// book's frame-transform formulations (cdref/book/obb.hpp, obb_obb.hpp) approximate; when
-// the axes are exactly orthonormal both agree exactly.
-//
-// Coordinates. With n_i = a_{i+1} x a_{i+2} (the face normals) and delta = det[a_0 a_1 a_2]
-// = a_i . n_i != 0, the coordinates of a point p are u_i = n_i . (p - c) / delta (Cramer's
-// rule: n_i . a_j = delta [i = j]). cdref uses U_i = sign(delta) n_i . (p - c) = |delta| u_i
-// and the box [-H, H], H_i = |delta| h_i: a uniform scaling of the u coordinates, so no
-// division, and ray parameters are unchanged.
-//
-//   separate(A, B)        Theorem 3.1 on the two polytopes (book/separating_axes.hpp):
-//                         faces n_i, edges a_i; the same axis order as the book's.
-//   cast / hit(Segment | Ray, OrientedBox)
-//                         Algorithm 3.3 in U coordinates (P is exactly the box [-H, H]
-//                         there); the entry point s + lambda r in world coordinates; the
-//                         normal of the entering face U_i = -+H_i is -+sign(delta) n_i / |n_i|
-//                         (outward, unit: one square root).
-//   proximity / intersect(Sphere, OrientedBox)
-//                         centre q in P (|U_i| <= H_i for all i): distance 0; the nearest
-//                         face is the i minimising delta_i = (H_i - |U_i|) / |n_i| (its
-//                         squared value (H_i - |U_i|)^2 / |n_i|^2 is compared, first on
-//                         ties; the side is that of U_i, + for U_i = 0 as in the chapter);
-//                         witness on the box y = q + s (H_i - |U_i|) sign(delta) n_i / |n_i|^2
-//                         (rational), on the sphere q - rho s sign(delta) n_i / |n_i|, depth
-//                         delta_i + rho.
-//                         q outside: the closest point x of P (unique: P is convex) is the
-//                         nearest among the 8 vertices, the feet of q on the 12 edge lines
-//                         strictly inside their edge and the feet on the 6 face planes strictly
-//                         inside their face: it lies on the boundary, in the relative interior
-//                         of a face, of an edge, or at a vertex, and there it is that foot. With
-//                         v = x - q: distance max(|v| - rho, 0), depth max(rho - |v|, 0),
-//                         witnesses q + rho v/|v| (sphere) and x (box); intersect iff
-//                         |v|^2 <= rho^2.
-// Every value is rational except where a length |n_i| or |v| is taken: one square root per
-// value, so Quad<T> holds them exactly at a rational T.
+/// \file
+/// cdref/solid/obb.hpp - the oriented box as the solid its inputs define: queries on the
+/// parallelepiped P = {c + sum_i u_i a_i : |u_i| <= h_i}, whatever the axes (linearly
+/// independent, not necessarily orthonormal). At an exact type these are the truth that the
+/// book's frame-transform formulations (cdref/book/obb.hpp, obb_obb.hpp) approximate; when
+/// the axes are exactly orthonormal both agree exactly.
+///
+/// Coordinates. With n_i = a_{i+1} x a_{i+2} (the face normals) and delta = det[a_0 a_1 a_2]
+/// = a_i . n_i != 0, the coordinates of a point p are u_i = n_i . (p - c) / delta (Cramer's
+/// rule: n_i . a_j = delta [i = j]). cdref uses U_i = sign(delta) n_i . (p - c) = |delta| u_i
+/// and the box [-H, H], H_i = |delta| h_i: a uniform scaling of the u coordinates, so no
+/// division, and ray parameters are unchanged.
+///
+///   separate(A, B)        Theorem 3.1 on the two polytopes (book/separating_axes.hpp):
+///                         faces n_i, edges a_i; the same axis order as the book's.
+///   cast / hit(Segment | Ray, OrientedBox)
+///                         Algorithm 3.3 in U coordinates (P is exactly the box [-H, H]
+///                         there); the entry point s + lambda r in world coordinates; the
+///                         normal of the entering face U_i = -+H_i is -+sign(delta) n_i / |n_i|
+///                         (outward, unit: one square root).
+///   proximity / intersect(Sphere, OrientedBox)
+///                         centre q in P (|U_i| <= H_i for all i): distance 0; the nearest
+///                         face is the i minimising delta_i = (H_i - |U_i|) / |n_i| (its
+///                         squared value (H_i - |U_i|)^2 / |n_i|^2 is compared, first on
+///                         ties; the side is that of U_i, + for U_i = 0 as in the chapter);
+///                         witness on the box y = q + s (H_i - |U_i|) sign(delta) n_i / |n_i|^2
+///                         (rational), on the sphere q - rho s sign(delta) n_i / |n_i|, depth
+///                         delta_i + rho.
+///                         q outside: the closest point x of P (unique: P is convex) is the
+///                         nearest among the 8 vertices, the feet of q on the 12 edge lines
+///                         strictly inside their edge and the feet on the 6 face planes strictly
+///                         inside their face: it lies on the boundary, in the relative interior
+///                         of a face, of an edge, or at a vertex, and there it is that foot. With
+///                         v = x - q: distance max(|v| - rho, 0), depth max(rho - |v|, 0),
+///                         witnesses q + rho v/|v| (sphere) and x (box); intersect iff
+///                         |v|^2 <= rho^2.
+/// Every value is rational except where a length |n_i| or |v| is taken: one square root per
+/// value, so Quad<T> holds them exactly at a rational T.
 #pragma once
 
 #include "../book/ray_box.hpp"
@@ -49,8 +50,8 @@ using book::detail::min_of;
 
 template <class T>
 struct Frame {
-  std::array<Vec3<T>, 3> n;  // face normals, times sign(delta): U_i = n_i . (p - c)
-  Vec3<T> H;                 // |delta| h
+  std::array<Vec3<T>, 3> n;  ///< face normals, times sign(delta): U_i = n_i . (p - c)
+  Vec3<T> H;                 ///< |delta| h
   T delta_abs;
   int delta_sign;
 };
@@ -115,21 +116,21 @@ bool hit_solid(const Vec3<T>& s_world, const Vec3<T>& r_world, const OrientedBox
   return book::detail::hit_box_local(s, r, f.H, book::detail::outcode(s, f.H), bt, bounded);
 }
 
-// The closest point of the parallelepiped to q (outside it) where q's side of each pair of faces
-// designates it, certainly (book::detail::surely_positive): with o_m = +-1 where U_m > H_m or
-// U_m < -H_m and 0 where |U_m| < H_m, one nonzero o_i designates the foot of q on face i, two the
-// foot on the edge parallel to the third axis a_i between faces (j, o_j) and (k, o_k), three the
-// vertex c + sum_m o_m h_m a_m. A point x of P is the closest to q iff q - x lies in P's normal
-// cone there: with w = q - x, max over P of w.y = w.c + sum_m h_m |w.a_m| equals w.x = w.c +
-// sum_m u_m(x) w.a_m, i.e. for each m, w.a_m = 0 or u_m(x) = h_m sign(w.a_m). For the face's
-// foot w is a multiple of n_i (orthogonal to a_m, m != i) of the sign o_i, so the foot is the
-// closest point iff it lies in the face: |U_m(foot)| <= H_m (tested strictly); for the edge's,
-// w.a_i = 0 and the foot must lie on the edge (|t| < h_i) with o_j w.a_j > 0 and o_k w.a_k > 0;
-// for the vertex, o_m w.a_m > 0 for every m. Where each of those is certain the point is the
-// unique closest point, so the enumeration below returns it too; otherwise (a test too close to
-// call, or a designated feature that is not the closest: axes far from orthogonal) false. At an
-// exact type the answer is the enumeration's; on double words (robust/words.hpp) it takes a few
-// dozen operations where the enumeration takes some six hundred.
+/// The closest point of the parallelepiped to q (outside it) where q's side of each pair of faces
+/// designates it, certainly (book::detail::surely_positive): with o_m = +-1 where U_m > H_m or
+/// U_m < -H_m and 0 where |U_m| < H_m, one nonzero o_i designates the foot of q on face i, two the
+/// foot on the edge parallel to the third axis a_i between faces (j, o_j) and (k, o_k), three the
+/// vertex c + sum_m o_m h_m a_m. A point x of P is the closest to q iff q - x lies in P's normal
+/// cone there: with w = q - x, max over P of w.y = w.c + sum_m h_m |w.a_m| equals w.x = w.c +
+/// sum_m u_m(x) w.a_m, i.e. for each m, w.a_m = 0 or u_m(x) = h_m sign(w.a_m). For the face's
+/// foot w is a multiple of n_i (orthogonal to a_m, m != i) of the sign o_i, so the foot is the
+/// closest point iff it lies in the face: |U_m(foot)| <= H_m (tested strictly); for the edge's,
+/// w.a_i = 0 and the foot must lie on the edge (|t| < h_i) with o_j w.a_j > 0 and o_k w.a_k > 0;
+/// for the vertex, o_m w.a_m > 0 for every m. Where each of those is certain the point is the
+/// unique closest point, so the enumeration below returns it too; otherwise (a test too close to
+/// call, or a designated feature that is not the closest: axes far from orthogonal) false. At an
+/// exact type the answer is the enumeration's; on double words (robust/words.hpp) it takes a few
+/// dozen operations where the enumeration takes some six hundred.
 template <class T>
 bool closest_by_outcode(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U, T& d2,
                         Vec3<T>* point) {
@@ -179,12 +180,12 @@ bool closest_by_outcode(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T
   return true;
 }
 
-// The closest point of the parallelepiped to q (outside it): its squared distance, and with
-// `point` the point itself. The candidates are the 8 vertices, the feet of q on the 12 edges
-// that fall strictly inside their edge and the feet on the 6 face planes that fall strictly
-// inside their face: each point of the boundary is offered at most once (a foot on a face's
-// border is an edge's foot or a vertex), so equal candidates never compete. The smallest
-// squared distance needs no decision (min); the point is the first candidate reaching it.
+/// The closest point of the parallelepiped to q (outside it): its squared distance, and with
+/// `point` the point itself. The candidates are the 8 vertices, the feet of q on the 12 edges
+/// that fall strictly inside their edge and the feet on the 6 face planes that fall strictly
+/// inside their face: each point of the boundary is offered at most once (a foot on a face's
+/// border is an edge's foot or a vertex), so equal candidates never compete. The smallest
+/// squared distance needs no decision (min); the point is the first candidate reaching it.
 template <class T>
 T closest_enumerated(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U, Vec3<T>* point) {
   T best(0);
@@ -235,7 +236,7 @@ T closest_enumerated(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& 
     }
   return best;
 }
-// The two together: the designated feature where that is certain, else the enumeration.
+/// The two together: the designated feature where that is certain, else the enumeration.
 template <class T>
 T closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, const Vec3<T>& U, Vec3<T>* point) {
   if (T d2; closest_by_outcode(b, f, q, U, d2, point)) return d2;
@@ -244,43 +245,61 @@ T closest_outside(const OrientedBox<T>& b, const Frame<T>& f, const Vec3<T>& q, 
 
 }  // namespace detail
 
-// ---- separating axes ----
+/// ---- separating axes ----
 template <class T>
 Separation<T> separate(const OrientedBox<T>& a, const OrientedBox<T>& b) {
   return book::separate_polytopes(a, b, "oriented box A", "oriented box B");
 }
+/// Theorem 3.1 on the segment and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Segment<T>& s, const OrientedBox<T>& b) {
   return book::separate_polytopes(s, b, "segment", "oriented box");
 }
+/// Theorem 3.1 on the ray and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Ray<T>& r, const OrientedBox<T>& b) {
   return book::separate_polytopes(r, b, "ray", "oriented box");
 }
+/// Theorem 3.1 on the triangle and the oriented box taken as the solid its axes define (a
+/// parallelepiped): whether they intersect, else the first separating axis in this file's order and
+/// its direction (a cdref::Separation). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Separation<T> separate(const Triangle<T>& t, const OrientedBox<T>& b) {
   return book::separate_polytopes(t, b, "triangle", "oriented box");
 }
 
-// ---- casts ----
+/// ---- casts ----
 template <class T>
 Cast<sqrt_t<T>> cast(const Segment<T>& seg, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(seg, "segment");
   check(b, "oriented box");
   return detail::cast_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true, w);
 }
+/// The ray (lambda >= 0 in units of |direction|) cast on the closed oriented box taken as the solid
+/// its axes define (a parallelepiped): hit, entry and exit parameters, entry point and normal (only
+/// what the mask `w` asks for is computed). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Cast<sqrt_t<T>> cast(const Ray<T>& ray, const OrientedBox<T>& b, unsigned w = want_cast) {
   check(ray, "ray");
   check(b, "oriented box");
   return detail::cast_solid(ray.source, ray.direction, b, false, w);
 }
+/// Whether the segment meets the closed oriented box taken as the solid its axes define (a
+/// parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad
+/// argument.
 template <class T>
 bool hit(const Segment<T>& seg, const OrientedBox<T>& b) {
   check(seg, "segment");
   check(b, "oriented box");
   return detail::hit_solid(seg.source, Vec3<T>(seg.target - seg.source), b, true);
 }
+/// Whether the ray meets the closed oriented box taken as the solid its axes define (a
+/// parallelepiped): the cast's classification alone. Throws cdref::invalid_input naming a bad
+/// argument.
 template <class T>
 bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   check(ray, "ray");
@@ -288,7 +307,7 @@ bool hit(const Ray<T>& ray, const OrientedBox<T>& b) {
   return detail::hit_solid(ray.source, ray.direction, b, false);
 }
 
-// ---- sphere ----
+/// ---- sphere ----
 template <class T>
 bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   check(sp, "sphere");
@@ -301,6 +320,9 @@ bool intersect(const Sphere<T>& sp, const OrientedBox<T>& b) {
   return detail::closest_outside(b, f, sp.center, U, static_cast<Vec3<T>*>(nullptr)) <= sp.radius * sp.radius;
 }
 
+/// Distance, penetration depth and witness points of the sphere and the oriented box taken as the
+/// solid its axes define (a parallelepiped) (a cdref::Proximity; only what the mask `w` asks for is
+/// computed, the rest stays 0). Throws cdref::invalid_input naming a bad argument.
 template <class T>
 Proximity<sqrt_t<T>> proximity(const Sphere<T>& sp, const OrientedBox<T>& b, unsigned w = want_proximity) {
   using S = sqrt_t<T>;

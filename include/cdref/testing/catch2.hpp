@@ -1,14 +1,15 @@
-// cdref/testing/catch2.hpp - Catch2 (v2, Debian's catch2) matchers against the exact answer.
-//
-//   #include <cdref/testing/catch2.hpp>
-//   using namespace cdref::testing;
-//   REQUIRE_THAT(my_lambda, WithinUlpsOfTruth(ray, sphere, &cdref::Cast<double>::lambda_enter, 4));
-//   REQUIRE_THAT(my_u, WithinScaleOfTruth(ray, tri, &cdref::TriangleCast<double>::u, 1e-12));
-//   REQUIRE_THAT(my_result, MatchesTruth(ray, sphere, {.ulps = 4}));   // a cdref result struct
-//
-// The truth is <cdref/truth.hpp>'s (cdref::truth::answer(a, b)), correctly rounded to the
-// field's type; a failure prints the truth and how far the value is from it in ulps, absolutely
-// and relative to the scale.
+/// \file
+/// cdref/testing/catch2.hpp - Catch2 (v2, Debian's catch2) matchers against the exact answer.
+///
+///   #include <cdref/testing/catch2.hpp>
+///   using namespace cdref::testing;
+///   REQUIRE_THAT(my_lambda, WithinUlpsOfTruth(ray, sphere, &cdref::Cast<double>::lambda_enter, 4));
+///   REQUIRE_THAT(my_u, WithinScaleOfTruth(ray, tri, &cdref::TriangleCast<double>::u, 1e-12));
+///   REQUIRE_THAT(my_result, MatchesTruth(ray, sphere, {.ulps = 4}));   // a cdref result struct
+///
+/// The truth is <cdref/truth.hpp>'s (cdref::truth::answer(a, b)), correctly rounded to the
+/// field's type; a failure prints the truth and how far the value is from it in ulps, absolutely
+/// and relative to the scale.
 #pragma once
 
 #include <catch2/catch.hpp>

@@ -1,13 +1,14 @@
-// cdref/testing/gtest.hpp - GoogleTest / GoogleMock matchers against the exact answer.
-//
-//   #include <cdref/testing/gtest.hpp>
-//   using cdref::testing::WithinUlpsOfTruth;
-//   EXPECT_THAT(my_lambda, WithinUlpsOfTruth(ray, sphere, &cdref::Cast<double>::lambda_enter, 4));
-//   EXPECT_THAT(my_u, cdref::testing::WithinScaleOfTruth(ray, tri, &cdref::TriangleCast<double>::u, 1e-12));
-//
-// The truth is <cdref/truth.hpp>'s (cdref::truth::answer(a, b)), correctly rounded to the
-// field's type; a failure prints the truth and how far the value is from it in ulps, absolutely
-// and relative to the scale.
+/// \file
+/// cdref/testing/gtest.hpp - GoogleTest / GoogleMock matchers against the exact answer.
+///
+///   #include <cdref/testing/gtest.hpp>
+///   using cdref::testing::WithinUlpsOfTruth;
+///   EXPECT_THAT(my_lambda, WithinUlpsOfTruth(ray, sphere, &cdref::Cast<double>::lambda_enter, 4));
+///   EXPECT_THAT(my_u, cdref::testing::WithinScaleOfTruth(ray, tri, &cdref::TriangleCast<double>::u, 1e-12));
+///
+/// The truth is <cdref/truth.hpp>'s (cdref::truth::answer(a, b)), correctly rounded to the
+/// field's type; a failure prints the truth and how far the value is from it in ulps, absolutely
+/// and relative to the scale.
 #pragma once
 
 #include <gmock/gmock.h>

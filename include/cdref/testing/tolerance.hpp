@@ -1,5 +1,6 @@
-// cdref/testing/tolerance.hpp - what the test matchers (catch2.hpp, gtest.hpp) accept and how
-// they say it: a value within `ulps` of the truth, or within `rel` of the scale.
+/// \file
+/// cdref/testing/tolerance.hpp - what the test matchers (catch2.hpp, gtest.hpp) accept and how
+/// they say it: a value within `ulps` of the truth, or within `rel` of the scale.
 #pragma once
 
 #include <cdref/truth.hpp>

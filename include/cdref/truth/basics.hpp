@@ -1,9 +1,10 @@
-// cdref/truth/basics.hpp - what <cdref/truth.hpp>'s functions share, without their
-// declarations: the Path of an answer, the result type of a classification alone, and the tools
-// that compare an answer with the truth (Deviation, ulp_distance, scale_of, compare,
-// first_difference). The library's units that define the functions include this header, not
-// truth.hpp: adding a query's declarations to truth.hpp recompiles what calls them, not every
-// query group.
+/// \file
+/// cdref/truth/basics.hpp - what <cdref/truth.hpp>'s functions share, without their
+/// declarations: the Path of an answer, the result type of a classification alone, and the tools
+/// that compare an answer with the truth (Deviation, ulp_distance, scale_of, compare,
+/// first_difference). The library's units that define the functions include this header, not
+/// truth.hpp: adding a query's declarations to truth.hpp recompiles what calls them, not every
+/// query group.
 #pragma once
 
 #include <cmath>
@@ -40,7 +41,7 @@ Proximity<S> swapped(Proximity<S> p) {
 }
 }  // namespace detail
 
-// ---- comparing an answer with the truth ----
+/// ---- comparing an answer with the truth ----
 /// How far a value is from the truth, three ways.
 struct Deviation {
   /// Representable values of the caller's type between the value and the truth (0: equal;
