@@ -186,8 +186,15 @@ auto fused_call(const Fn& f) {
 #endif
 template <class Fn>
 auto with_products(const Fn& f) {
+#if CDREF_FMA_CLONES
   if (cpu_fma()) return fused_call(f);
   return f(SplitProduct{});
+#else
+  if constexpr (cpu_fma())  // known when compiling: one copy
+    return fused_call(f);
+  else
+    return f(SplitProduct{});
+#endif
 }
 
 // f() in the copy compiled for the FMA extension where the CPU has it (std::fma an instruction
@@ -195,7 +202,9 @@ auto with_products(const Fn& f) {
 // values are the same; only the time differs.
 template <class Fn>
 auto with_fma(const Fn& f) {
+#if CDREF_FMA_CLONES
   if (cpu_fma()) return fused_call([&](FusedProduct) { return f(); });
+#endif
   return f();
 }
 
