@@ -19,8 +19,8 @@
 // <cdref/truth.hpp>, the units that call them (the tests, users' code), no group (the groups
 // include cdref/truth/basics.hpp); this file, every group, the registry and core_rows.cpp; cdref/fuzz/describe.hpp, spec.hpp, campaign.hpp or a header every
 // spec includes (cdref.hpp, results.hpp, the number types), every group and most of the library.
-// The groups are listed heaviest first (CMakeLists.txt lists their units in this order, so that
-// the longest compiles start first).
+// (CMakeLists.txt lists the groups' units heaviest first, so that the longest compiles start
+// first; the order here does not matter: the registry sorts the queries by id.)
 #pragma once
 
 #include <cdref/fuzz/campaign.hpp>
