@@ -273,7 +273,7 @@ void check(const Polygon<T>& p, const char* name = "polygon") {
 }
 
 /// check(OrientedBox) that also returns the sign of det[a0 a1 a2] (1 or -1), which it decides
-/// anyway (the oracle's oriented-box entry takes it: oracle/enter.hpp).
+/// anyway (the oracle's oriented-box entry takes it: oracle/enter_obb.hpp).
 template <class T>
 int checked_orientation(const OrientedBox<T>& b, const char* name = "oriented box") {
   static const char* const field[3] = {"axis 0", "axis 1", "axis 2"};

@@ -12,6 +12,13 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
+// cdref's own build compiles for the FMA extension with the feature macros that imply SSE4.1 and
+// AVX undefined (CMakeLists.txt, CDREF_HOST_FMA), so that CGAL's interval arithmetic takes its
+// SSE2 code: its SSE4.1 and AVX code gave wrong exact answers near the double range.
+#if defined(CDREF_FMA_REQUIRED) && (defined(__SSE4_1__) || defined(__AVX__))
+#error "cdref's build: CGAL's interval arithmetic must see SSE2 alone (CMakeLists.txt, CDREF_HOST_FMA)"
+#endif
+
 #include <boost/multiprecision/gmp.hpp>
 #include <cdref/number_traits.hpp>
 #include <string>

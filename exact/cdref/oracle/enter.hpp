@@ -24,7 +24,7 @@
 // enter_triangle.hpp (a triangle, a polygon's fan, a union of triangles: enter_first, here),
 // enter_obb.hpp (an oriented box). Include the one the cast needs.
 //
-// Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost-report.* and the README.
+// Measured (`cdref_bench`, ratios to that run's `bare`): docs/cost.md and docs/tiers.md.
 #pragma once
 
 #include <cdref/bounded/bounded2.hpp>

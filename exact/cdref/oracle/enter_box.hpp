@@ -27,10 +27,6 @@ namespace cdref::oracle {
 
 namespace enter_detail {
 
-using robust::Pair;
-
-using namespace word_bounds;
-
 // The box's double path on a hit (header, "A box"): the value, or nothing when a sign or a
 // rounding is uncertain.
 template <class Shot>

@@ -30,10 +30,6 @@ namespace cdref::oracle {
 
 namespace enter_detail {
 
-using robust::Pair;
-
-using namespace word_bounds;
-
 // Face i's entry on double words (header, "An oriented box"): n_i = a_{i+1} x a_{i+2}, delta =
 // a_i . n_i (the same determinant for every i) turned so that delta > 0, H_i = delta h_i, the
 // source's coordinate U_i and its certain outcode, then the plane's parameter; 0 where the

@@ -75,10 +75,6 @@ namespace cdref::oracle {
 
 namespace enter_detail {
 
-using robust::Pair;
-
-using namespace word_bounds;
-
 // The sphere's double path (header, steps 1-4). Returns 0 when lambda_enter is 0 (c < 0
 // certainly), 1 with `out` set, or 2 when it cannot tell (the exact path then answers).
 template <class Mul = SplitProduct>

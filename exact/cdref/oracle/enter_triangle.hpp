@@ -32,10 +32,6 @@ namespace cdref::oracle {
 
 namespace enter_detail {
 
-using robust::Pair;
-
-using namespace word_bounds;
-
 // The triangle's double path on a hit (header, "A triangle"): the value, or nothing.
 template <class Mul, class Shot>
 std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri) {

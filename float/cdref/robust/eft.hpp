@@ -151,17 +151,23 @@ struct FusedProduct {
   static Pair<F> prod(F a, F b) { return two_prod(a, b); }
 };
 
-// Whether a fused multiply-add is an instruction here. A build with -mfma (or for another
-// architecture, whose compiler provides std::fma as it can) answers at compile time; an x86 build
-// without it asks the CPU, and code that wants the instruction is compiled a second time with
-// [[gnu::target("fma")]] (CDREF_FMA_CLONES) and that copy taken where the answer is yes.
-#if (defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))) && !defined(__FMA__)
+// Whether a fused multiply-add is an instruction here. A build with -mfma (cdref's own build on
+// a CPU with the extension, which says so with CDREF_FMA_REQUIRED: CMakeLists.txt; or for
+// another architecture, whose compiler provides std::fma as it can) answers at compile time; an
+// x86 build without it asks the CPU, and code that wants the instruction is compiled a second
+// time with [[gnu::target("fma")]] (CDREF_FMA_CLONES) and that copy taken where the answer is yes.
+#if defined(__FMA__) || (defined(CDREF_FMA_REQUIRED) && CDREF_FMA_REQUIRED)
+#define CDREF_FMA_COMPILED 1
+#else
+#define CDREF_FMA_COMPILED 0
+#endif
+#if (defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))) && !CDREF_FMA_COMPILED
 #define CDREF_FMA_CLONES 1
 inline bool cpu_fma() { return __builtin_cpu_supports("fma"); }
 #else
 #define CDREF_FMA_CLONES 0
 constexpr bool cpu_fma() {
-#ifdef __FMA__
+#if CDREF_FMA_COMPILED
   return true;
 #else
   return false;
