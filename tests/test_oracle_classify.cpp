@@ -547,7 +547,7 @@ TEST_CASE("oracle::enter on exact boundaries and bad input", "[oracle-classify][
 }
 
 // The oracle's sphere, box-box and box-cast queries and the robust tier's decisions on them at
-// double run their filter before the input checks (classify.hpp, staged::filter_first;
+// double run their filter before the input checks (oracle/stages.hpp, staged::filter_first;
 // robust/ray_sphere.hpp, sphere_sphere.hpp, sphere_box.hpp, box_box.hpp, ray_box.hpp):
 // every bad value in every input slot must still be refused with the message check() gives,
 // also where the valid input it replaces is one the filter decides; valid extremes pass.

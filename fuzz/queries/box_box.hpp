@@ -3,7 +3,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/box_box.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/stable/box_box.hpp>
 #include <cmath>

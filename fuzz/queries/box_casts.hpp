@@ -4,7 +4,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/box_casts.hpp>
 #include <cdref/oracle/enter_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <cdref/stable/ray_box.hpp>

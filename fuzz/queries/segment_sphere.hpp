@@ -4,7 +4,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/sphere_casts.hpp>
 #include <cdref/stable/segment_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
 

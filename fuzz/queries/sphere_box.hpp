@@ -3,7 +3,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/sphere_box.hpp>
 #include <cdref/stable/sphere_box.hpp>
 #include <cdref/robust/sphere_box.hpp>
 

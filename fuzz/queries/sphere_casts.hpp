@@ -4,7 +4,7 @@
 
 #include <cdref/fuzz/families.hpp>
 #include <cdref/fuzz/spec.hpp>
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/sphere_casts.hpp>
 #include <cdref/oracle/enter_sphere.hpp>
 #include <cdref/oracle/sphere_cast_foot.hpp>
 #include <cdref/stable/ray_sphere.hpp>

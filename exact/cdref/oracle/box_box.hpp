@@ -4,10 +4,11 @@
 // inputs; expansions.hpp: the model of the three stages):
 //   box-box         per axis |a - b| <= ea + eb <=> sign(ea + eb - |a - b|) >= 0.
 //
-// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
+// Its classify() is at the end of this file; <cdref/oracle/stages.hpp> runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
+#include <cdref/oracle/stages.hpp>
 
 namespace cdref::oracle {
 
@@ -16,7 +17,7 @@ namespace staged {
 // ======================= box-box =======================
 // Filter per axis: P = e~ - |d~|, e~ = fl(ea + eb), d~ = fl(a - b): K = 2, P+ = e + |d|, bound
 // 3u fl(e~ + |d~|). Additions have no underflow error; m = 0 means e = d = 0 exactly.
-inline int filter(const Box<double>& a, const Box<double>& b) {
+inline int filter(const Box<double>& a, const Box<double>& b, plain = {}) {
   int res = 1;
   for (int i = 0; i < 3; ++i) {
     const double d = std::fabs(a.center[i] - b.center[i]), e = a.extent[i] + b.extent[i], m = e + d;
@@ -33,7 +34,7 @@ inline int filter(const Box<double>& a, const Box<double>& b) {
   }
   return res;
 }
-inline int expansion(const Box<double>& a0, const Box<double>& b0) {
+inline int expansion(const Box<double>& a0, const Box<double>& b0, plain = {}) {
   Box<double> a, b;
   if (!scaled(a0, b0, a, b)) return unknown;
   // ea + eb - |a - b| >= 0 on every axis (the book's two tests, ea + eb -+ (a - b) >= 0, of
@@ -51,8 +52,13 @@ inline int expansion(const Box<double>& a0, const Box<double>& b0) {
   return 1;
 }
 
-inline bool rational(const Box<double>& a, const Box<double>& b) { return book::intersect(toq(a), toq(b)); }
+inline bool rational(const Box<double>& a, const Box<double>& b, plain = {}) { return book::intersect(toq(a), toq(b)); }
 
 }  // namespace staged
+
+// ---- the oracle: the filter (the input checks folded into it: stages.hpp), then the stages ----
+inline bool classify(const Box<double>& a, const Box<double>& b, Stage* used = nullptr) {
+  return staged::filter_first(used, a, "box A", b, "box B");
+}
 
 }  // namespace cdref::oracle

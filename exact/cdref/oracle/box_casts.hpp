@@ -14,10 +14,11 @@
 //                   n = -(s - c) -+ h (3 inputs), d = |target - source| or |direction|.
 //                   Ties between planes change which plane the book keeps, never the decision.
 //
-// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
+// Its classify() is at the end of this file; <cdref/oracle/stages.hpp> runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
+#include <cdref/oracle/stages.hpp>
 #include <cdref/filter/box_cast_filter.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 
@@ -93,14 +94,14 @@ struct BoxStaged {
   }
 };
 
-inline int expansion(const Segment<double>& seg0, const Box<double>& box0) {
+inline int expansion(const Segment<double>& seg0, const Box<double>& box0, plain = {}) {
   Segment<double> seg;
   Box<double> box;
   if (!scaled(seg0, box0, seg, box)) return unknown;
   return robust::with_products(
       [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(seg.source, seg.target, box, true)); });
 }
-inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
+inline int expansion(const Ray<double>& ray0, const Box<double>& box0, plain = {}) {
   Ray<double> ray;
   Box<double> box;
   if (!scaled(ray0, box0, ray, box)) return unknown;
@@ -108,9 +109,23 @@ inline int expansion(const Ray<double>& ray0, const Box<double>& box0) {
       [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(ray.source, ray.direction, box, false)); });
 }
 
-inline bool rational(const Segment<double>& s, const Box<double>& b) { return book::hit(toq(s), toq(b)); }
-inline bool rational(const Ray<double>& s, const Box<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Segment<double>& s, const Box<double>& b, plain = {}) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Ray<double>& s, const Box<double>& b, plain = {}) { return book::hit(toq(s), toq(b)); }
+
+// Before the box casts' filter: the extents' signs and, for a ray, its direction (finite, not
+// zero), which the outcodes' range tests do not see (stages.hpp).
+inline bool unseen_valid(const Ray<double>& r, const Box<double>& b, plain) {
+  return signs_valid(b) && direction_valid(r.direction);
+}
 
 }  // namespace staged
+
+// ---- the oracle: the filter (the input checks folded into it: stages.hpp), then the stages ----
+inline bool classify(const Segment<double>& seg, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", box, "box");
+}
+inline bool classify(const Ray<double>& ray, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, ray, "ray", box, "box");
+}
 
 }  // namespace cdref::oracle

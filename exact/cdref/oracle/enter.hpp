@@ -9,7 +9,7 @@
 // its every-output path.
 //
 // Each call: the input checks (for the sphere and box casts after the classification's
-// filter, whose range tests refuse what they would: classify.hpp, staged::filter_first); the
+// filter, whose range tests refuse what they would: stages.hpp, staged::filter_first); the
 // classification (oracle::classify: filter, double words, expansions, rationals; each query's
 // own stages); on a hit a double path whose error is bounded rigorously, accepted when the
 // exact value cannot lie on the other side of a rounding midpoint (Bounded2::try_rounded);

@@ -20,7 +20,7 @@
 // or any sign or rounding undecided: the exact path.
 #pragma once
 
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/box_casts.hpp>
 #include <cdref/oracle/enter.hpp>
 
 namespace cdref::oracle {

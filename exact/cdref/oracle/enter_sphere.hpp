@@ -10,7 +10,7 @@
 // otherwise b < 0 (b >= 0 and c > 0 puts both roots behind the source) and lambda_enter = z*,
 // the smaller root, where P falls through 0.
 //  1. c's sign from c^ = fl(|sh|^2) - rho^2 with |c^ - c| <= 8u (|sh|^2 + rho^2) (the
-//     filter's bound, classify.hpp; exact s = sh + sl, |sl| <= u |sh|). Not decided: the
+//     filter's bound, sphere_casts.hpp; exact s = sh + sl, |sl| <= u |sh|). Not decided: the
 //     next path.
 //  2. z0: the stable root in double, z0 = c / (sqrt(a D) - b) with a D = a rho^2 - |s x r|^2
 //     (Lagrange's identity: |s x r| / |r| is the distance from the centre to the line, so the
@@ -67,7 +67,7 @@
 // of the radius. Only inside robust::in_certified_range (where the double words are derived).
 #pragma once
 
-#include <cdref/oracle/classify.hpp>
+#include <cdref/oracle/sphere_casts.hpp>
 #include <cdref/oracle/enter.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 

@@ -3,7 +3,7 @@
 // three stages, the expansions, the scaling into stage 2's range and the signed sum of squares
 // on double words. Each query's stages are in its own file (sphere_sphere.hpp, sphere_casts.hpp,
 // box_box.hpp, box_casts.hpp, sphere_box.hpp, each opening with its polynomials);
-// classify.hpp runs them in order. Each classify() returns exactly what the book's algorithm
+// stages.hpp runs them in order. Each classify() returns exactly what the book's algorithm
 // (include/cdref/book) returns when instantiated at CGAL::Gmpq on the same doubles, in three
 // stages:
 //

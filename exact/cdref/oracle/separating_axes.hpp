@@ -18,7 +18,7 @@
 //                coordinates on double words, then the solid's cast decision on them; the axes
 //                stage 1 left open on double words with rigorous bounds (sat_words.hpp: near
 //                touching one axis of the 13 or 15); (sphere) a box with the coordinate
-//                axes as sphere-box does it (classify.hpp: double words, then the exact sign
+//                axes as sphere-box does it (sphere_box.hpp: double words, then the exact sign
 //                on expansions), any other stage 1's point and direction on double words
 //                (sat_words.hpp); (a triangle, a segment or a ray and a box) the 13 or 6 axes
 //                exactly on the inputs read as integers on a grid per coordinate axis

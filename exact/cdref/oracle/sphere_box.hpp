@@ -6,10 +6,11 @@
 //   sphere-box      v_i = clamp(c_i, -h_i, h_i) - c_i, |v|^2 <= rho^2 with c = centre - box
 //                   centre. |v_i| = max(0, |c_i| - h_i) whichever branch the book takes.
 //
-// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
+// Its classify() is at the end of this file; <cdref/oracle/stages.hpp> runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
+#include <cdref/oracle/stages.hpp>
 #include <cdref/filter/sphere_filter.hpp>
 #include <cdref/robust/sphere_box.hpp>
 
@@ -19,7 +20,7 @@ namespace staged {
 
 // ======================= sphere-box =======================
 // The filter: filter/sphere_filter.hpp.
-inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
+inline int expansion(const Sphere<double>& sp0, const Box<double>& box0, plain = {}) {
   Sphere<double> sp;
   Box<double> box;
   if (!scaled(sp0, box0, sp, box)) return unknown;
@@ -51,7 +52,7 @@ inline int expansion(const Sphere<double>& sp0, const Box<double>& box0) {
   return int(sign(acc[cur]) <= 0);
 }
 
-inline bool rational(const Sphere<double>& a, const Box<double>& b) { return book::intersect(toq(a), toq(b)); }
+inline bool rational(const Sphere<double>& a, const Box<double>& b, plain = {}) { return book::intersect(toq(a), toq(b)); }
 
 // Sphere-box: Q = |v|^2 - rho^2 on double words (v the centre's offset from the box, as in
 // sphere_filter.hpp), where the filter leaves its sign open (within about u (|c| + h)^2 of 0,
@@ -112,12 +113,17 @@ inline int sphere_box_words(const Sphere<double>& sp0, const Box<double>& box0) 
 // After the robust tier's own filter (robust/sphere_box.hpp: it decides to within about u^2 of
 // the scale from touching, for less), before its decision (2^-52 from touching it took about
 // 200 ns a case, its expansions over 19 exact products).
-inline int double_word(const Sphere<double>& a, const Box<double>& b) {
+inline int double_word(const Sphere<double>& a, const Box<double>& b, plain = {}) {
   if (const int f = robust::detail::sphere_box_filter_own(a, b)) return int(f < 0);
   if (const int r = sphere_box_words(a, b); r != unknown) return r;
   return certain_or_unknown(robust::decide(a, b));
 }
 
 }  // namespace staged
+
+// ---- the oracle: the filter (the input checks folded into it: stages.hpp), then the stages ----
+inline bool classify(const Sphere<double>& sp, const Box<double>& box, Stage* used = nullptr) {
+  return staged::filter_first(used, sp, "sphere", box, "box");
+}
 
 }  // namespace cdref::oracle

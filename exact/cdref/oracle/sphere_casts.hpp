@@ -18,10 +18,11 @@
 //                   agree on every input (the test checks it on every family); the oracle keeps
 //                   both branch structures and both names.
 //
-// Its classify() is in <cdref/oracle/classify.hpp>, which runs the stages in order.
+// Its classify() is at the end of this file; <cdref/oracle/stages.hpp> runs the stages in order.
 #pragma once
 
 #include <cdref/oracle/expansions.hpp>
+#include <cdref/oracle/stages.hpp>
 #include <cdref/filter/sphere_filter.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
@@ -205,13 +206,12 @@ struct SphereWords {
 };
 
 // (inlined where the classification is: a call here was a tenth of a campaign's case)
-[[gnu::always_inline]] inline int filter(const Segment<double>& seg, const Sphere<double>& sp) {
+[[gnu::always_inline]] inline int filter(const Segment<double>& seg, const Sphere<double>& sp, plain = {}) {
   return sphere_cast_filter(seg.source, seg.target, sp, true);
 }
-[[gnu::always_inline]] inline int filter(const Ray<double>& ray, const Sphere<double>& sp) {
+[[gnu::always_inline]] inline int filter(const Ray<double>& ray, const Sphere<double>& sp, plain = {}) {
   return sphere_cast_filter(ray.source, ray.direction, sp, false);
 }
-struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
 // Algorithm 3.2's answer is Algorithm 3.1's hit (a segment meets the closed ball exactly when
 // the cast hits: the tests run both stages' rational answers side by side), and the cast's
 // filter decides it for less: its first sign, sigma, settles every line that misses, where
@@ -219,13 +219,13 @@ struct alg32 {};  // tag: book::intersect(Segment, Sphere), Algorithm 3.2
 [[gnu::always_inline]] inline int filter(const Segment<double>& seg, const Sphere<double>& sp, alg32) {
   return sphere_cast_filter(seg.source, seg.target, sp, true);
 }
-inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0) {
+inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0, plain = {}) {
   Segment<double> seg;
   Sphere<double> sp;
   if (!scaled(seg0, sp0, seg, sp)) return unknown;
   return hit_sphere_logic(SphereStaged(seg.source, seg.target, sp, true), true);
 }
-inline int expansion(const Ray<double>& ray0, const Sphere<double>& sp0) {
+inline int expansion(const Ray<double>& ray0, const Sphere<double>& sp0, plain = {}) {
   Ray<double> ray;
   Sphere<double> sp;
   if (!scaled(ray0, sp0, ray, sp)) return unknown;
@@ -238,8 +238,8 @@ inline int expansion(const Segment<double>& seg0, const Sphere<double>& sp0, alg
   return segment_sphere_logic(SphereStaged(seg.source, seg.target, sp, true));
 }
 
-inline bool rational(const Segment<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }
-inline bool rational(const Ray<double>& s, const Sphere<double>& b) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Segment<double>& s, const Sphere<double>& b, plain = {}) { return book::hit(toq(s), toq(b)); }
+inline bool rational(const Ray<double>& s, const Sphere<double>& b, plain = {}) { return book::hit(toq(s), toq(b)); }
 inline bool rational(const Segment<double>& s, const Sphere<double>& b, alg32) {
   return book::intersect(toq(s), toq(b));
 }
@@ -263,11 +263,11 @@ inline int sphere_words(const Ray<double>& ray0, const Sphere<double>& sp0) {
   if (!scaled(ray0, sp0, ray, sp)) return unknown;
   return hit_sphere_logic(SphereWords(ray.source, ray.direction, sp, false), false);
 }
-inline int double_word(const Segment<double>& s, const Sphere<double>& b) {
+inline int double_word(const Segment<double>& s, const Sphere<double>& b, plain = {}) {
   if (const int r = sphere_words(s, b, false); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
-inline int double_word(const Ray<double>& s, const Sphere<double>& b) {
+inline int double_word(const Ray<double>& s, const Sphere<double>& b, plain = {}) {
   if (const int r = sphere_words(s, b); r != unknown) return r;
   return certain_or_unknown(robust::decide_words(s, b));
 }
@@ -280,5 +280,16 @@ inline int double_word(const Segment<double>& s, const Sphere<double>& b, alg32)
 }
 
 }  // namespace staged
+
+// ---- the oracle: the filter (the input checks folded into it: stages.hpp), then the stages ----
+inline bool classify(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", sp, "sphere");
+}
+inline bool classify(const Ray<double>& ray, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, ray, "ray", sp, "sphere");
+}
+inline bool classify_segment_sphere(const Segment<double>& seg, const Sphere<double>& sp, Stage* used = nullptr) {
+  return staged::filter_first(used, seg, "segment", sp, "sphere", staged::alg32{});
+}
 
 }  // namespace cdref::oracle

@@ -15,6 +15,7 @@
 // n_p d_q - n_q d_p <= 0 (n = -(s - c) -+ h, d = |target - source| or |direction|).
 #pragma once
 
+#include <cdref/filter/stage_tags.hpp>
 #include <cdref/primitives.hpp>
 #include <algorithm>
 #include <cmath>
@@ -39,9 +40,9 @@ inline int fsign(double p, double bound) { return p > bound ? 1 : (p < -bound ? 
 inline int positive_or_unknown(double p, double bound) { return std::fabs(p) > bound ? int(p > 0) : unknown; }
 
 // What the box casts' range tests below do not see, tested before them where the input checks
-// come after (classify.hpp, filter_first; robust/ray_box.hpp): the extents' signs, and a ray's
+// come after (oracle/stages.hpp, filter_first; robust/ray_box.hpp): the extents' signs, and a ray's
 // direction (finite, not zero), which enters only through its signs and the pairs.
-inline bool signs_valid(const Box<double>& b) { return b.extent[0] >= 0 && b.extent[1] >= 0 && b.extent[2] >= 0; }
+inline bool signs_valid(const Box<double>& b, plain = {}) { return b.extent[0] >= 0 && b.extent[1] >= 0 && b.extent[2] >= 0; }
 inline bool direction_valid(const Vec3<double>& d) {
   return (d[0] - d[0]) + (d[1] - d[1]) + (d[2] - d[2]) == 0 && (d[0] != 0 || d[1] != 0 || d[2] != 0);
 }
@@ -434,7 +435,7 @@ inline int filter(const Ray<double>& ray, const OrientedBox<double>& box) {
 //              only where t = s): it never separates.
 // Range: M_A = sum_i |A_i| + |B_i| + |h_i| (B = fl(t - c)) and M_R = |R|_1, with M_A, M_R and
 // M_A M_R at most 2^1000 (a NaN or an infinity among the inputs fails it: these filters decide
-// nothing then, as classify.hpp's filter_first relies on); then no product or sum overflows.
+// nothing then, as stages.hpp's filter_first relies on); then no product or sum overflows.
 // A negative extent is the caller's to refuse (signs_valid), and a ray whose direction is zero
 // is left to the checks. A zero-length segment has R = 0: only the faces decide, whether the
 // point lies in the box.
@@ -489,12 +490,12 @@ inline int axes_filter(const Vec3<double>& src, const Vec3<double>& rt, const Bo
   return apart ? 0 : (meets ? 1 : unknown);
 }
 
-inline int filter(const Segment<double>& seg, const Box<double>& box) {
+inline int filter(const Segment<double>& seg, const Box<double>& box, plain = {}) {
   if (const int r = axes_filter(seg.source, seg.target, box, true); r != unknown) return r;
   const BoxFilter f(seg.source, seg.target, box, true);
   return f.ok ? hit_box_logic(f) : unknown;
 }
-inline int filter(const Ray<double>& ray, const Box<double>& box) {
+inline int filter(const Ray<double>& ray, const Box<double>& box, plain = {}) {
   if (const int r = axes_filter(ray.source, ray.direction, box, false); r != unknown) return r;
   const BoxFilter f(ray.source, ray.direction, box, false);
   return f.ok ? hit_box_logic(f) : unknown;

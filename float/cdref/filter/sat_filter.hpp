@@ -15,8 +15,9 @@
 // faces, B's faces, A's edges x B's edges), are polynomials in exact inputs (box axes, e_i) and
 // in such leaves: an oriented box's face normal a_j x a_k (2 roundings a component), a
 // triangle's normal e_0 x (X_2 - X_0) and an edge cross e x g with e a difference of leaves
-// (at most 4 roundings a component, counted along the evaluation tree as in classify.hpp:
-// K(leaf) <= 1, K(a +- b) = max + 1, K(a b) = K(a) + K(b) + 1). On each axis the test is
+// (at most 4 roundings a component, counted along the evaluation tree as in the sphere and box
+// queries' filters, oracle/sphere_sphere.hpp: K(leaf) <= 1, K(a +- b) = max + 1,
+// K(a b) = K(a) + K(b) + 1). On each axis the test is
 //   s = lo_A - r_B > 0  or  s' = -r_B - hi_A > 0   (B projects onto [-r_B, r_B]),
 // with lo_A, hi_A the extremes of X . L (points), X_A . L -+ r_A (a box A), r = sum_k
 // h_k |g_k . L|. Every s is then a sum of monomials each carrying at most K = 12 factors

@@ -252,7 +252,7 @@ template <bool Segment>
 // |P~ - P| <= sum |v~_i^2 - v_i^2| + gamma_4 (sum v~_i^2 + rho^2)
 //          <= (2 gamma_2 + gamma_4 + O(u^2)) (sum w_i^2 + rho^2) <= 8u (1 + 10u) (...):
 // bound 9u fl(sum w~_i^2 + rho2), w~_i = fl(|c~_i| + h_i).
-inline int filter(const Sphere<double>& sp, const Box<double>& box) {
+inline int filter(const Sphere<double>& sp, const Box<double>& box, plain = {}) {
   double vv = 0, ww = 0;
   for (int i = 0; i < 3; ++i) {
     const double c = std::fabs(sp.center[i] - box.center[i]), h = box.extent[i];

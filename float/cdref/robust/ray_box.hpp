@@ -547,7 +547,7 @@ template <class F>
   return box_detail::evaluate(seg.source, seg.target, box, true, 0).decision;
 }
 // (at double the first stage before the input checks: its outcodes' range tests refuse every
-// infinity or NaN of the points, the centre and the extents, oracle/classify.hpp; the extents'
+// infinity or NaN of the points, the centre and the extents, oracle/stages.hpp; the extents'
 // signs tested first)
 template <class F>
 Decision decide(const Segment<F>& seg, const Box<F>& box) {
@@ -568,7 +568,7 @@ template <class F>
   return box_detail::evaluate(ray.source, ray.direction, box, false, 0).decision;
 }
 // (at double the first stage before the input checks: its outcodes' range tests refuse every
-// infinity or NaN of the points, the centre and the extents, oracle/classify.hpp; the extents'
+// infinity or NaN of the points, the centre and the extents, oracle/stages.hpp; the extents'
 // signs and the direction tested first)
 template <class F>
 Decision decide(const Ray<F>& ray, const Box<F>& box) {
