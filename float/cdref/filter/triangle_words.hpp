@@ -232,7 +232,7 @@ inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double
   Sphere<double> s;
   Triangle<double> t;
   if (!word_bounds::in_word_range(sp, t0, s, t)) return unknown;
-  return robust::with_products([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
+  return robust::with_products<true>([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
 }
 
 }  // namespace cdref::oracle::sphere_triangle
@@ -310,7 +310,7 @@ int decide(const Triangle<double>& a, const Triangle<double>& b) {
 inline int tests_on_words(const Triangle<double>& a0, const Triangle<double>& b0) {
   Triangle<double> a, b;
   if (!word_bounds::in_word_range(a0, b0, a, b)) return unknown;
-  return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
+  return robust::with_products<true>([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
 }
 
 // Two polygons: the pairs' first stage at once (triangle_filter.hpp, polygon_pairs) with each
@@ -325,7 +325,7 @@ inline int polygon_on_words(const Polygon<double>& a, const Polygon<double>& b, 
   if (words) *words = false;
   Polygon<double> as, bs;  // far from 1 in magnitude, scaled by one power of two: no sign changes
   if (!word_bounds::in_word_range(a, b, as, bs)) return polygon_filter(a, b);
-  return robust::with_products([&](auto mul) {
+  return robust::with_products<true>([&](auto mul) {
     using Mul = decltype(mul);
     return polygon_pairs(a, b, [&](int w, int i, int k) {
       const Polygon<double>& p = w == 0 ? as : bs;

@@ -179,6 +179,14 @@ constexpr bool cpu_fma() {
 // it inlined, so that std::fma is the instruction there; otherwise as built), and
 // with_products(f): that copy where the CPU has the instruction, f(SplitProduct{}) where it does
 // not. f takes the policy by value (a generic lambda: [&](auto mul) { return g<decltype(mul)>(...); }).
+//
+// Flat: where the whole build is compiled for the extension, whether the fused path is still a
+// function of its own with every call flattened into it, as the run-time copy is. Only the paths
+// measured faster so ask for it: sphere-triangle's double-word certificates and its first look's
+// classification, triangle-triangle's double-word decisions (filter/triangle_words.hpp) and the
+// HotWords formulations (words.hpp); without it sphere-triangle's oracle took 1.4 times as long
+// near touching. Elsewhere a flattened copy measured no faster (the triangle casts', and
+// sphere-triangle's every-output path, slower) and costs compile time and code.
 #if CDREF_FMA_CLONES
 template <class Fn>
 [[gnu::target("fma"), gnu::flatten, gnu::noinline]] auto fused_call(const Fn& f) {
@@ -189,29 +197,49 @@ template <class Fn>
 auto fused_call(const Fn& f) {
   return f(FusedProduct{});
 }
-#endif
+#if defined(__GNUC__)
 template <class Fn>
+[[gnu::flatten, gnu::noinline]] auto flat_fused_call(const Fn& f) {
+  return f(FusedProduct{});
+}
+#else
+template <class Fn>
+auto flat_fused_call(const Fn& f) {
+  return f(FusedProduct{});
+}
+#endif
+#endif
+template <bool Flat = false, class Fn>
 auto with_products(const Fn& f) {
 #if CDREF_FMA_CLONES
   if (cpu_fma()) return fused_call(f);
   return f(SplitProduct{});
 #else
-  if constexpr (cpu_fma())  // known when compiling: one copy
-    return fused_call(f);
-  else
+  if constexpr (cpu_fma()) {  // known when compiling: one copy
+    if constexpr (Flat)
+      return flat_fused_call(f);
+    else
+      return fused_call(f);
+  } else {
     return f(SplitProduct{});
+  }
 #endif
 }
 
 // f() in the copy compiled for the FMA extension where the CPU has it (std::fma an instruction
-// there instead of a call into libm), else as built. std::fma rounds once either way, so the
-// values are the same; only the time differs.
-template <class Fn>
+// there instead of a call into libm), else as built (Flat: as with_products). std::fma rounds
+// once either way, so the values are the same; only the time differs.
+template <bool Flat = false, class Fn>
 auto with_fma(const Fn& f) {
 #if CDREF_FMA_CLONES
   if (cpu_fma()) return fused_call([&](FusedProduct) { return f(); });
-#endif
   return f();
+#else
+  if constexpr (Flat && cpu_fma())
+    return flat_fused_call([&](FusedProduct) { return f(); });
+  else
+    return f();
+#endif
 }
 
 // Double-word arithmetic (Mul: the exact product's policy above; Dekker's by default).

@@ -382,7 +382,7 @@ bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t,
 // The first look's classification alone: g's certain sign, else unknown (decide()'s last step).
 // (the certificates having left it: no other stage behind g)
 inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t) {
-  return with_products([&](auto mul) {
+  return with_products<true>([&](auto mul) {
     int cls = oracle::sphere_triangle::unknown;
     FirstLookPoint P;
     const bool point = first_look_point<decltype(mul)>(s, t, P);

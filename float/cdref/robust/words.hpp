@@ -173,7 +173,9 @@ struct HotWords {};
 // Where the CPU has the FMA extension (CDREF_FMA_CLONES) a copy compiled for it runs, so that
 // std::fma in the double-word products is the instruction: eft.hpp's with_fma (every call
 // flattened into it, as inside the caller before) for a HotWords formulation, a copy with the
-// compiler's usual inlining for the others.
+// compiler's usual inlining for the others. In a build compiled for the extension throughout
+// (CDREF_FMA_COMPILED) a HotWords formulation keeps its flattened function (with_fma<true>);
+// the others are called as built.
 #if CDREF_FMA_CLONES
 template <class Fn, class AW, class BW>
 [[gnu::target("fma"), gnu::noinline]] auto words_call_fused(const Fn& f, const AW& a, const BW& b) {
@@ -183,7 +185,7 @@ template <class Fn, class AW, class BW>
 template <class Fn, class AW, class BW>
 [[gnu::noinline]] auto words_call(const Fn& f, const AW& a, const BW& b) {
   if constexpr (std::is_base_of_v<HotWords, Fn>) {
-    return with_fma([&] { return f(a, b); });
+    return with_fma<true>([&] { return f(a, b); });
   } else {
 #if CDREF_FMA_CLONES
     if (cpu_fma()) return words_call_fused(f, a, b);
