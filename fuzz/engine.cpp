@@ -64,6 +64,7 @@ void Exemplar::offer(std::uint64_t m, std::uint64_t i, const Inputs& in, long do
 void CellStats::merge(const CellStats& o) {
   n += o.n;
   refused += o.refused;
+  set_apart += o.set_apart;
   cls_fp += o.cls_fp;
   cls_fn += o.cls_fn;
   pred_fp += o.pred_fp;
@@ -104,7 +105,7 @@ bool Results::operator==(const Results& o) const {
   for (auto a = cells.begin(), b = o.cells.begin(); a != cells.end(); ++a, ++b) {
     if (!(a->first == b->first)) return false;
     const CellStats &x = a->second, &y = b->second;
-    if (x.n != y.n || x.refused != y.refused || x.cls_fp != y.cls_fp || x.cls_fn != y.cls_fn ||
+    if (x.n != y.n || x.refused != y.refused || x.set_apart != y.set_apart || x.cls_fp != y.cls_fp || x.cls_fn != y.cls_fn ||
         x.pred_fp != y.pred_fp || x.pred_fn != y.pred_fn || !same(x.cls_example, y.cls_example) ||
         !same(x.pred_example, y.pred_example) || x.certified != y.certified || x.uncertain != y.uncertain ||
         x.certain_wrong != y.certain_wrong || !same(x.certain_wrong_example, y.certain_wrong_example))
@@ -340,6 +341,11 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
       continue;
     }
     const Inputs& seen = f24 ? in_f : in;
+    const Answer& t = truths[slot(im->precision)].get();
+    if (im->set_apart && im->set_apart(cell.q, seen, t)) {
+      ++st.set_apart;
+      continue;
+    }
     bool refused = false;
     const Answer a = [&]() -> Answer {  // (returned in place)
       try {
@@ -353,7 +359,6 @@ void run_case(const Cell& cell, std::uint64_t i, const std::vector<const Impleme
       ++st.refused;
       continue;
     }
-    const Answer& t = truths[slot(im->precision)].get();
     grade_classification(st, i, seen, a, t);
     if (spec.classification_only) continue;
     if (spec.certain_outputs && a.certified && !a.certain) continue;
@@ -626,8 +631,8 @@ void Work::check(const Results& r, const std::vector<std::pair<std::uint64_t, st
     if (st.n != it->second)
       throw std::runtime_error(source + ": cell " + name(k) + " counts " + std::to_string(st.n) + " cases; its done items hold " +
                                std::to_string(it->second));
-    const std::uint64_t graded = st.n - std::min(st.n, st.refused);
-    bool ok = st.refused <= st.n && st.cls_fp + st.cls_fn <= graded && st.pred_fp + st.pred_fn <= graded &&
+    const std::uint64_t graded = st.n - std::min(st.n, st.refused + st.set_apart);
+    bool ok = st.refused + st.set_apart <= st.n && st.cls_fp + st.cls_fn <= graded && st.pred_fp + st.pred_fn <= graded &&
               st.certified <= st.n && st.uncertain <= st.certified && st.certain_wrong <= st.certified;
     for (std::size_t g = 0; g < info(k.query).outputs.size(); ++g)
       ok = ok && st.out[g].hist.total() + st.out[g].nonfinite <= st.n;
@@ -649,7 +654,10 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
   std::vector<Results> local(threads);
   std::vector<std::exception_ptr> errors(threads);
   // the classifications alone against the oracle: graded a block at a time
-  const bool by_block = spec.classification_only && !spec.exact_truth;
+  // (an implementation that sets cases apart is asked case by case, with the truth as an Answer)
+  bool sets_apart = false;
+  for (const Implementation* im : impls) sets_apart = sets_apart || (im && im->set_apart);
+  const bool by_block = spec.classification_only && !spec.exact_truth && !sets_apart;
   auto work = [&](int t) {
     try {
       std::vector<std::uint64_t> index(by_block ? block : 0);
@@ -754,7 +762,11 @@ std::string serialize(const Saved& saved) {
     const std::size_t n_in = qi.inputs.size();
     o << "cell " << qi.name << " " << k.impl << " " << k.family << " " << k.scale << " " << st.n << " " << st.refused
       << " " << st.cls_fp << " " << st.cls_fn << " " << st.pred_fp << " " << st.pred_fn << " " << st.certified << " "
-      << st.uncertain << " " << st.certain_wrong << "\n";
+      << st.uncertain << " " << st.certain_wrong;
+    // the cases set apart by an implementation's convention, where there are any (a campaign of
+    // cdref's own implementations has none: its files read as before)
+    if (st.set_apart) o << " " << st.set_apart;
+    o << "\n";
     put_ex(o, "cls", st.cls_example, n_in);
     put_ex(o, "certain", st.certain_wrong_example, n_in);
     put_ex(o, "pred", st.pred_example, n_in);
@@ -850,6 +862,16 @@ Saved deserialize(const std::string& text, const std::string& source) {
       // version 2 adds the certificate counts (version 1 files have none)
       if (version >= 2 && !(ls >> st.certified >> st.uncertain >> st.certain_wrong))
         fail("malformed cell record (certificate counts)");
+      // then the cases set apart, where there are any
+      if (std::string more; ls >> more) {
+        std::size_t used = 0;
+        try {
+          st.set_apart = std::stoull(more, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != more.size() || more[0] == '-' || (ls >> more)) fail("malformed cell record (cases set apart)");
+      }
     } else if (tag == "ex" || tag == "out") {
       if (!cur) fail("record before any cell");
       if (tag == "ex") {

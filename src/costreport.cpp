@@ -236,7 +236,7 @@ QueryReport measure(Query q, std::uint64_t n, int reps, std::uint64_t err_n, int
     Acc& a = acc[key.impl];
     a.max.resize(groups);
     a.h.resize(groups);
-    const std::uint64_t m = st.n - st.refused, w = st.cls_fp + st.cls_fn;
+    const std::uint64_t m = st.n - st.refused - st.set_apart, w = st.cls_fp + st.cls_fn;
     if (key.family == "uniform") a.nu += m, a.wu += w;
     else a.nh += m, a.wh += w;
     for (std::size_t g = 0; g < groups; ++g) {

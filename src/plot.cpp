@@ -38,9 +38,10 @@ struct Point {
 };
 using Curves = std::map<std::string, std::map<int, Point>>;  // impl -> scale -> point
 
+// (refused: the cases not graded, refused or set apart by the implementation's convention)
 Point point_of(std::uint64_t n, std::uint64_t refused, std::uint64_t fp, std::uint64_t fn, std::uint64_t pfp,
                std::uint64_t pfn, double p99, double max) {
-  const double base = double(std::max<std::uint64_t>(1, n - refused));
+  const double base = double(std::max<std::uint64_t>(1, n - std::min(n, refused)));
   return {double(fp + fn) / base, double(pfp + pfn) / base, p99, max};
 }
 
@@ -64,7 +65,8 @@ Curves curves_from_json(const std::string& path, const QueryInfo& qi, const std:
         mx = o.at("max").get<double>();
       }
       c[impl][cell.at("scale").get<int>()] =
-          point_of(cell.at("cases").get<std::uint64_t>(), cell.at("refused").get<std::uint64_t>(),
+          point_of(cell.at("cases").get<std::uint64_t>(),
+                   cell.at("refused").get<std::uint64_t>() + cell.value("set_apart", std::uint64_t(0)),
                    cell.at("false_positives").get<std::uint64_t>(), cell.at("false_negatives").get<std::uint64_t>(),
                    cell.at("predicate_false_positives").get<std::uint64_t>(),
                    cell.at("predicate_false_negatives").get<std::uint64_t>(), p99, mx);
@@ -117,7 +119,7 @@ int plot_run(PlotOptions o) {
         p99 = double(st.out[group].hist.quantile(0.99));
         mx = st.out[group].worst.set ? double(st.out[group].worst.metric) : 0;
       }
-      curves[k.impl][k.scale] = point_of(st.n, st.refused, st.cls_fp, st.cls_fn, st.pred_fp, st.pred_fn, p99, mx);
+      curves[k.impl][k.scale] = point_of(st.n, st.refused + st.set_apart, st.cls_fp, st.cls_fn, st.pred_fp, st.pred_fn, p99, mx);
     }
     source = std::to_string(o.n) + " cases per point, seed " + std::to_string(o.seed);
   }

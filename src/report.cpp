@@ -85,6 +85,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
   // per (query, implementation)
   struct Sum {
     std::uint64_t n = 0, refused = 0, cls = 0, pred = 0, nonfinite = 0, max = 0, fp = 0, fn = 0;
+    std::uint64_t apart = 0;  // set apart by the implementation's convention: neither graded nor refused
     std::uint64_t certified = 0, uncertain = 0, certain_wrong = 0;
     std::string max_where;
     double max_rel = 0;  // over every output group and cell
@@ -94,6 +95,7 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     Sum& s = sums[{info(k.query).name, k.impl}];
     s.n += st.n;
     s.refused += st.refused;
+    s.apart += st.set_apart;
     s.cls += st.cls_fp + st.cls_fn;
     s.fp += st.cls_fp;
     s.fn += st.cls_fn;
@@ -117,8 +119,8 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
                 "misclassified", "predicate wrong", "nonfinite", "max rel", "max ulps (where)");
   o << line;
   for (const auto& [key, s] : sums) {
-    const std::string miss = std::to_string(s.cls) + " (" + num(100.0 * double(s.cls) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
-    const std::string pmiss = std::to_string(s.pred) + " (" + num(100.0 * double(s.pred) / double(std::max<std::uint64_t>(1, s.n - s.refused)), "%.2g") + "%)";
+    const std::string miss = std::to_string(s.cls) + " (" + num(100.0 * double(s.cls) / double(std::max<std::uint64_t>(1, s.n - s.refused - s.apart)), "%.2g") + "%)";
+    const std::string pmiss = std::to_string(s.pred) + " (" + num(100.0 * double(s.pred) / double(std::max<std::uint64_t>(1, s.n - s.refused - s.apart)), "%.2g") + "%)";
     std::snprintf(line, sizeof line, "%-20s %-17s %10llu %9llu %16s %16s %10llu %9s  %s\n", key.first.c_str(),
                   key.second.c_str(), (unsigned long long)s.n, (unsigned long long)s.refused, miss.c_str(),
                   pmiss.c_str(), (unsigned long long)s.nonfinite, s.max_where.empty() ? "-" : num(s.max_rel, "%.2g").c_str(),
@@ -156,11 +158,11 @@ void print_table(std::ostream& o, const Results& r, std::uint64_t seed, int wors
     o << line;
     for (const auto& [key, s] : sums) {
       if (!info(query_by_name(key.first)).mesh_level) continue;
-      const double graded = double(std::max<std::uint64_t>(1, s.n - s.refused));
+      const double graded = double(std::max<std::uint64_t>(1, s.n - s.refused - s.apart));
       const std::string leaks = std::to_string(s.fn) + " (" + num(100.0 * double(s.fn) / graded, "%.2g") + "%)";
       const std::string ph = std::to_string(s.fp) + " (" + num(100.0 * double(s.fp) / graded, "%.2g") + "%)";
       std::snprintf(line, sizeof line, "%-20s %-17s %10llu %16s %16s\n", key.first.c_str(), key.second.c_str(),
-                    (unsigned long long)(s.n - s.refused), leaks.c_str(), ph.c_str());
+                    (unsigned long long)(s.n - s.refused - s.apart), leaks.c_str(), ph.c_str());
       o << line;
     }
   }
@@ -231,6 +233,8 @@ void write_json(std::ostream& o, const Results& r, std::uint64_t seed) {
                         {"certain_but_wrong_example", json_ex(st.certain_wrong_example, qi)},
                         {"misclassified_example", json_ex(st.cls_example, qi)},
                         {"predicate_example", json_ex(st.pred_example, qi)}};
+    // the cases an implementation's convention set apart (never one of cdref's own)
+    if (st.set_apart) c["set_apart"] = st.set_apart;
     nlohmann::ordered_json outs = nlohmann::ordered_json::object();
     for (std::size_t g = 0; g < qi.outputs.size(); ++g) {
       const OutputStats& os = st.out[g];

@@ -6,6 +6,7 @@
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/fuzz/work.hpp>
 #include <cdref/robust/separating_axes.hpp>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
@@ -341,6 +342,66 @@ TEST_CASE("the text form round-trips, and a malformed file is refused by line", 
   REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.rfind("end\n")), "cut.txt"), Catch::Contains("truncated"));
   REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.size() / 2), "cut.txt"), Catch::Contains("cut.txt:"));
   REQUIRE_THROWS_WITH(deserialize("hello\n", "x.txt"), Catch::Contains("x.txt:1: not a cdref results file"));
+}
+
+TEST_CASE("an implementation's convention cases are set apart by the engine: counted per cell, never run, never graded",
+          "[campaign][set-apart]") {
+  // The book at double, setting apart every case whose exact answer is a hit: each case is then
+  // set apart (a hit) or graded (a miss), the callable never sees a hit, no false negative is
+  // left, and its false positives are the book's own.
+  const Query q = query_by_name("ray-sphere-cast");
+  Spec s;
+  s.queries = {q};
+  s.n = 64;
+  s.seed = 3;
+  s.threads = 2;
+  std::atomic<std::uint64_t> runs{0}, hits_run{0};
+  Implementation im{"apart", 53,
+                    [&](Query qq, const Inputs& in) {
+                      ++runs;
+                      if (oracle_classify(qq, in).cls) ++hits_run;
+                      return info(qq).book(53, in);
+                    },
+                    {q}};
+  im.set_apart = [](Query, const Inputs&, const Answer& truth) { return truth.cls; };
+  s.custom.push_back(im);
+  s.impls = {"apart", "book-double"};
+  const Results r = run(s);
+  std::uint64_t apart = 0, graded = 0;
+  for (const auto& [k, st] : r.cells) {
+    if (k.impl != "apart") continue;
+    INFO(k.family << "/" << k.scale);
+    const CellStats& book = r.cells.at(CellKey{k.query, "book-double", k.family, k.scale});
+    CHECK(st.n == book.n);
+    CHECK(st.refused == book.refused);
+    CHECK(book.set_apart == 0);
+    CHECK(st.cls_fn == 0);
+    CHECK(st.cls_fp == book.cls_fp);
+    CHECK(st.refused + st.set_apart <= st.n);
+    apart += st.set_apart;
+    graded += st.n - st.refused - st.set_apart;
+  }
+  CHECK(runs == graded);  // the callable ran on the graded cases alone
+  CHECK(hits_run == 0);
+  REQUIRE(apart > 0);
+  REQUIRE(graded > 0);
+
+  // grading the classification alone sets apart the same cases (case by case: the block path
+  // has no Answer to give the convention)
+  s.classification_only = true;
+  runs = 0;
+  const Results cls = run(s);
+  for (const auto& [k, st] : cls.cells) CHECK(st.set_apart == r.cells.at(k).set_apart);
+  CHECK(runs == graded);
+
+  // the text form keeps the count; a malformed count is refused by name
+  const std::string text = serialize(s, r, total_items(s));
+  REQUIRE(deserialize(text, "apart.txt").results == r);
+  std::string bad = text;
+  const auto at = bad.find("\ncell ray-sphere-cast apart ");
+  REQUIRE(at != std::string::npos);
+  bad.insert(bad.find('\n', at + 1), " -1");
+  REQUIRE_THROWS_WITH(deserialize(bad, "apart.txt"), Catch::Contains("cases set apart"));
 }
 
 TEST_CASE("a campaign killed mid-way and resumed ends with exactly the uninterrupted totals", "[campaign][kill]") {

@@ -44,9 +44,10 @@ struct Options {
   std::string name = "yours";         ///< the implementation's name in the report
   /// Where your implementation's convention gives another meaning than cdref's (a ray starting
   /// inside reported at its exit, a one-sided triangle, hits behind the source), say so: the
-  /// cases for which this returns true are counted apart (Report::convention_cases) and not
-  /// graded, so a difference of meaning is never reported as drift. It may read the exact
-  /// answer through Case::exact_*.
+  /// cases for which this returns true are set apart by the campaign engine (counted per cell,
+  /// fuzz::CellStats::set_apart, and in all in Report::convention_cases), not graded and your
+  /// callable not called on them, so a difference of meaning is never reported as drift. It
+  /// may read the exact answer through Case::exact_*.
   std::function<bool(const Case&)> convention;
 };
 
@@ -108,7 +109,7 @@ class Report {
   std::uint64_t false_positives() const;  ///< says hit / intersect where the exact answer does not
   std::uint64_t false_negatives() const;  ///< says miss / apart where the exact answer does not
   std::uint64_t refused() const;          ///< inputs the precision cannot hold, or the callable refused
-  std::uint64_t convention_cases = 0;     ///< set apart by Options::convention, not graded
+  std::uint64_t convention_cases = 0;     ///< set apart by Options::convention (not graded, not refused)
   /// Over every graded case of an output group: the largest error, and the 99th percentile
   /// (the lower edge of its histogram bin, an eighth of an octave wide), in ulps of the
   /// precision. An unknown group throws std::invalid_argument naming the groups.

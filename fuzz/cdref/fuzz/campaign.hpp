@@ -155,6 +155,12 @@ struct Implementation {
   // The same over a block of cases, out[k] for in[k] (a campaign grading the classifications
   // calls it once per block); empty: classify (or run) case by case.
   std::function<void(Query, const Inputs* in, std::size_t n, Verdict* out)> classify_block{};
+  // Where the implementation's own convention gives another meaning than cdref's (a ray whose
+  // source lies on the shape, a library that reports touching as apart): true sets the case
+  // apart, counted in CellStats::set_apart and not graded. Called before run, with the case as
+  // the implementation sees it and the engine's exact answer to it (its classification alone
+  // in a campaign grading the classification); empty: no case is set apart.
+  std::function<bool(Query, const Inputs& seen, const Answer& truth)> set_apart{};
   bool supports(Query q) const {
     return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
   }
@@ -321,6 +327,7 @@ struct OutputStats {
 struct CellStats {
   std::uint64_t n = 0;
   std::uint64_t refused = 0;               // inputs not finite in the implementation's type
+  std::uint64_t set_apart = 0;             // its convention's cases (Implementation::set_apart): not graded
   std::uint64_t cls_fp = 0, cls_fn = 0;    // full query says yes / no, truth says the other
   std::uint64_t pred_fp = 0, pred_fn = 0;  // the same for the predicate
   Exemplar cls_example, pred_example;      // smallest index among misclassifications
