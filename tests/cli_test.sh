@@ -193,4 +193,14 @@ for p in d:
         assert f['cases'] >= f['convention'] + f['false_positives'] + f['false_negatives'], (p['function'], f)
 " || fail "peers JSON"
 grep -q "^Eigen 3.4: AlignedBox3f::exteriorDistance" peers.txt || fail "peers table"
+# ODE's rows where it was built with it (scripts/deps.sh installs libode-dev), each at double
+if ! grep -q "ODE not found at build time" peers.txt; then
+  python3 -c "
+import json
+d = json.load(open('peers.json'))
+ode = [p for p in d if p['library'].startswith('ODE ')]
+assert len(ode) == 5 and all(p['precision'] == 53 for p in ode), [p['function'] for p in ode]
+assert sum(f['convention'] for p in ode for f in p['families']) > 0
+" || fail "peers ODE rows"
+fi
 echo "cli: all checks passed"

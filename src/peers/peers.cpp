@@ -1,5 +1,5 @@
-// src/peers/peers.cpp - `cdref peers`: widely used libraries' float functions on cdref's
-// families against the exact answer.
+// src/peers/peers.cpp - `cdref peers`: widely used libraries' functions on cdref's families
+// against the exact answer.
 //
 // Each adapter maps a query's case onto one library function in the library's own
 // conventions and states where those conventions give another meaning than cdref's (a ray
@@ -8,13 +8,17 @@
 // the exact answer and set apart as "convention" cases: they are not counted as drift. What
 // remains is the function's numerical drift, graded like any implementation of a campaign.
 //
-// Built when GLM (libglm-dev), Bullet (libbullet-dev) and Eigen are present. GLM, Eigen and
+// The adapters and their exact helpers: adapter.hpp; a library with its own header keeps its
+// adapters there (ode.hpp). Each adapter runs once a case through the campaign engine, which
+// sets its convention's cases apart (fuzz::Implementation::set_apart) on the exact answer it
+// computed for the grading.
+//
+// Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev) and Eigen are present.
+// ODE runs at double (Debian's build; precision 53). GLM, Eigen and
 // Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
 // Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
 // compiled with CDREF_BULLET64 and BT_USE_DOUBLE_PRECISION), because its inline functions carry
 // the same names as the float build's.
-#include <CGAL/Gmpq.h>
-
 #include <Eigen/Geometry>
 #include <cdref/error.hpp>
 #include <cdref/fuzz/campaign.hpp>
@@ -40,6 +44,10 @@
 
 #include "../options.hpp"
 #include "../output.hpp"
+#include "adapter.hpp"
+#if defined(CDREF_HAVE_ODE) && !defined(CDREF_BULLET64)
+#include "ode.hpp"
+#endif
 
 #ifdef CDREF_HAVE_GLM
 #define GLM_ENABLE_EXPERIMENTAL
@@ -60,20 +68,7 @@
 
 namespace cdref::peers {
 
-using fuzz::Answer;
-using fuzz::Inputs;
-using fuzz::Query;
-
 namespace {
-
-struct Adapter {
-  std::string library, function, query;
-  std::string convention;  // what differs in meaning, in words
-  std::vector<std::string> graded;  // output groups answered
-  // the case's meaning differs under the library's convention (decided exactly)
-  std::function<bool(const Inputs& in, const Answer& truth)> differs;
-  std::function<Answer(const Inputs& in)> run;
-};
 
 #ifdef CDREF_BULLET64
 using real = double;  // Bullet's float64 build: btScalar is double
@@ -85,51 +80,7 @@ constexpr int kPrecision = 24;
 #define CDREF_BULLET_NAME "Bullet 3.24 (float)"
 #endif
 real f(double x) { return real(x); }
-int group(Query q, const std::string& g, int* first) { return validate::output_group(fuzz::info(q), g, first); }
-struct Out {
-  Query q;
-  Answer a;
-  explicit Out(Query q_, bool cls) : q(q_) {
-    a.cls = a.pred = cls;
-    a.given = 0;
-  }
-  Out& set(const std::string& g, std::initializer_list<double> v) {
-    int first = 0;
-    const int k = group(q, g, &first);
-    int i = 0;
-    for (double x : v) a.v[first + i++] = x;
-    a.given |= std::uint64_t(1) << k;
-    return *this;
-  }
-};
-
-// exact helpers (rationals from the doubles of the case)
-using Q = CGAL::Gmpq;
-struct QV {
-  Q x, y, z;
-};
-QV qv(const Inputs& in, int k) { return {Q(in[k]), Q(in[k + 1]), Q(in[k + 2])}; }
-QV sub(const QV& a, const QV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-QV cross(const QV& a, const QV& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-Q dot(const QV& a, const QV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-// a ray's source inside or on the sphere (columns: source 0, direction 3, centre 6, radius 9)
-[[maybe_unused]] bool source_inside(const Inputs& in) {
-  const QV m = sub(qv(in, 0), qv(in, 6));
-  const Q r(in[9]);
-  return dot(m, m) <= r * r;
-}
-// a ray lies in the triangle's plane (columns: source 0, direction 3, v0 6, v1 9, v2 12)
-[[maybe_unused]] bool in_plane(const Inputs& in) {
-  const QV v0 = qv(in, 6), n = cross(sub(qv(in, 9), v0), sub(qv(in, 12), v0));
-  return dot(n, sub(qv(in, 0), v0)) == 0 && dot(n, qv(in, 3)) == 0;
-}
-// the reversed ray hits (a line test that also reports hits behind the source)
-[[maybe_unused]] bool behind(Query q, const Inputs& in) {
-  Inputs r = in;
-  for (int i = 3; i < 6; ++i) r[i] = -r[i];
-  return fuzz::oracle_truth(q, r, 24).cls;
-}
+bool behind(Query q, const Inputs& in) { return reversed_hits(q, in, kPrecision); }
 
 std::vector<Adapter> adapters() {
   std::vector<Adapter> out;
@@ -373,6 +324,11 @@ std::vector<Adapter> adapters() {
                    return Out(ray_tri, std::isfinite(t) && t >= 0).set("lambda_enter", {t}).a;
                  }});
 #endif
+#if defined(CDREF_HAVE_ODE) && !defined(CDREF_BULLET64)
+  for (Adapter& ad : ode::adapters()) out.push_back(std::move(ad));
+#endif
+  for (Adapter& ad : out)
+    if (!ad.precision) ad.precision = kPrecision;  // this executable's own type
   return out;
 }
 
@@ -451,36 +407,29 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   spec.n = n;
   spec.seed = seed;
   spec.threads = threads;
-  // "peer" refuses the convention cases (the engine counts them as refused, with the inputs
-  // the type cannot hold); "peer-all" refuses only the latter, so the difference counts the former
-  spec.custom.push_back({"peer", kPrecision,
-                         [&ad](Query qq, const Inputs& in) -> Answer {
-                           if (ad.differs(in, fuzz::oracle_truth(qq, in, kPrecision))) throw invalid_input("convention");
-                           return ad.run(in);
-                         },
-                         {q}});
-  spec.custom.push_back({"peer-all", kPrecision, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}});
-  spec.impls = {"peer", "peer-all"};
+  // the library's function, once a case; the cases its convention gives another meaning set
+  // apart by the engine (CellStats::set_apart), decided on the exact answer it computed
+  fuzz::Implementation peer{"peer", ad.precision, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}};
+  peer.set_apart = [&ad](Query, const Inputs& in, const Answer& truth) { return ad.differs(in, truth); };
+  spec.custom.push_back(std::move(peer));
+  spec.impls = {"peer"};
   const fuzz::Results res = fuzz::run(spec);
   struct Fam {
-    std::uint64_t cases = 0, refused_all = 0, refused = 0, fp = 0, fn = 0;
+    std::uint64_t cases = 0, refused = 0, apart = 0, fp = 0, fn = 0;
     std::map<std::string, std::pair<fuzz::Histogram, std::uint64_t>> ulps;  // histogram, max
     std::map<std::string, std::pair<double, double>> err;                     // max abs, max rel
   };
   std::map<std::string, Fam> fams;
   nlohmann::json out = {{"library", ad.library}, {"function", ad.function}, {"query", ad.query},
-                        {"convention", ad.convention}, {"graded", ad.graded}, {"precision", kPrecision}};
+                        {"convention", ad.convention}, {"graded", ad.graded}, {"precision", ad.precision}};
   out["curves"] = nlohmann::json::object();
   for (const auto& [k, st] : res.cells) {
     Fam& f = fams[k.family];
-    if (k.impl == "peer-all") {
-      f.refused_all += st.refused;
-      continue;
-    }
-    const std::uint64_t graded = st.n - st.refused;
+    const std::uint64_t graded = st.n - st.refused - st.set_apart;
     out["curves"][k.family].push_back({k.scale, graded ? 100.0 * double(st.cls_fp + st.cls_fn) / double(graded) : 0.0});
     f.cases += st.n;
     f.refused += st.refused;
+    f.apart += st.set_apart;
     f.fp += st.cls_fp;
     f.fn += st.cls_fn;
     for (const std::string& g : ad.graded) {
@@ -498,8 +447,8 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   for (auto& [fam, f] : fams) {
     nlohmann::json jr = {{"family", fam},
                          {"cases", f.cases},
-                         {"convention", f.refused - f.refused_all},
-                         {"refused", f.refused_all},
+                         {"convention", f.apart},
+                         {"refused", f.refused},
                          {"false_positives", f.fp},
                          {"false_negatives", f.fn}};
     jr["ulps"] = nlohmann::json::object();
@@ -597,13 +546,16 @@ int peers_run(const Args& a) {
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
             << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
-               "type (float; double for Bullet's float64 build): p99 / max, and the largest error relative to the\n"
+               "type (float; double for ODE and Bullet's float64 build): p99 / max, and the largest error relative to the\n"
                "inputs' scale.\n";
 #ifndef CDREF_HAVE_GLM
   human << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
 #endif
 #ifndef CDREF_HAVE_BULLET
   human << "(Bullet not found at build time: apt-get install libbullet-dev and rebuild)\n";
+#endif
+#ifndef CDREF_HAVE_ODE
+  human << "(ODE not found at build time: apt-get install libode-dev and rebuild)\n";
 #endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
@@ -645,7 +597,7 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's and Eigen's functions on cdref's families at float (and Bullet's float64 build) against the exact "
+      "GLM's, Bullet's, Eigen's and ODE's functions on cdref's families at float (ODE and Bullet's float64 build at double) against the exact "
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
