@@ -203,4 +203,15 @@ assert len(ode) == 5 and all(p['precision'] == 53 for p in ode), [p['function'] 
 assert sum(f['convention'] for p in ode for f in p['families']) > 0
 " || fail "peers ODE rows"
 fi
+# Embree's rows where it was built with it (libembree-dev), each at float, its fan rows at mesh level
+if ! grep -q "Embree not found at build time" peers.txt; then
+  python3 -c "
+import json
+d = json.load(open('peers.json'))
+em = [p for p in d if p['library'].startswith('Embree ')]
+assert len(em) == 4 and all(p['precision'] == 24 for p in em), [p['function'] for p in em]
+assert sorted(p['query'] for p in em) == ['ray-fan-cast'] * 2 + ['ray-triangle-cast'] * 2
+assert all(any(f['family'] == 'watertight' for f in p['families']) for p in em if p['query'] == 'ray-fan-cast')
+" || fail "peers Embree rows"
+fi
 echo "cli: all checks passed"

@@ -13,8 +13,8 @@
 // sets its convention's cases apart (fuzz::Implementation::set_apart) on the exact answer it
 // computed for the grading.
 //
-// Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev) and Eigen are present.
-// ODE runs at double (Debian's build; precision 53). GLM, Eigen and
+// Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev), Embree (libembree-dev)
+// and Eigen are present. ODE runs at double (Debian's build; precision 53). GLM, Eigen, Embree and
 // Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
 // Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
 // compiled with CDREF_BULLET64 and BT_USE_DOUBLE_PRECISION), because its inline functions carry
@@ -47,6 +47,9 @@
 #include "adapter.hpp"
 #if defined(CDREF_HAVE_ODE) && !defined(CDREF_BULLET64)
 #include "ode.hpp"
+#endif
+#if defined(CDREF_HAVE_EMBREE) && !defined(CDREF_BULLET64)
+#include "embree.hpp"
 #endif
 
 #ifdef CDREF_HAVE_GLM
@@ -327,6 +330,9 @@ std::vector<Adapter> adapters() {
 #if defined(CDREF_HAVE_ODE) && !defined(CDREF_BULLET64)
   for (Adapter& ad : ode::adapters()) out.push_back(std::move(ad));
 #endif
+#if defined(CDREF_HAVE_EMBREE) && !defined(CDREF_BULLET64)
+  for (Adapter& ad : embree::adapters()) out.push_back(std::move(ad));
+#endif
   for (Adapter& ad : out)
     if (!ad.precision) ad.precision = kPrecision;  // this executable's own type
   return out;
@@ -557,6 +563,9 @@ int peers_run(const Args& a) {
 #ifndef CDREF_HAVE_ODE
   human << "(ODE not found at build time: apt-get install libode-dev and rebuild)\n";
 #endif
+#ifndef CDREF_HAVE_EMBREE
+  human << "(Embree not found at build time: apt-get install libembree-dev and rebuild)\n";
+#endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
     all.push_back(collect(ad, a.n, a.seed, a.threads));
@@ -597,7 +606,7 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's, Eigen's and ODE's functions on cdref's families at float (ODE and Bullet's float64 build at double) against the exact "
+      "GLM's, Bullet's, Eigen's, Embree's and ODE's functions on cdref's families at float (ODE and Bullet's float64 build at double) against the exact "
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
