@@ -5,33 +5,20 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <initializer_list>
 #include <string>
 
 #include "peers/embree.hpp"
+#include "peers_hand.hpp"
 
 namespace test_peers_embree {
 
 using namespace cdref::peers;
+using test_peers::of;
 
 const Adapter& adapter(const std::vector<Adapter>& all, const std::string& query, bool robust) {
-  for (const Adapter& a : all)
-    if (a.query == query && (a.function.find("robust") != std::string::npos) == robust) return a;
-  FAIL("no Embree adapter for " << query);
-  return all.front();
+  return test_peers::adapter(all, query, "robust", !robust);
 }
-Inputs of(std::initializer_list<double> v) {
-  Inputs in{};
-  int k = 0;
-  for (double x : v) in[std::size_t(k++)] = x;
-  return in;
-}
-double value(const Adapter& a, const Answer& r, const std::string& g) {
-  int first = 0;
-  const int k = group(cdref::fuzz::query_by_name(a.query), g, &first);
-  REQUIRE(((r.given >> k) & 1) == 1);
-  return r.v[std::size_t(first)];
-}
+double value(const Adapter& a, const Answer& r, const std::string& g) { return test_peers::values(a, r, g).front(); }
 const Answer none{};
 const double tiny = 0x1p-20;
 // the float one ulp below x

@@ -3,35 +3,16 @@
 // apart. Built where ODE is (libode-dev).
 #include <catch2/catch.hpp>
 
-#include <initializer_list>
-#include <string>
-
 #include "peers/ode.hpp"
+#include "peers_hand.hpp"
 
 namespace test_peers_ode {
 
 using namespace cdref::peers;
+using test_peers::adapter;
+using test_peers::of;
+using test_peers::values;
 
-const Adapter& adapter(const std::vector<Adapter>& all, const std::string& query) {
-  for (const Adapter& a : all)
-    if (a.query == query) return a;
-  FAIL("no ODE adapter for " << query);
-  return all.front();
-}
-Inputs of(std::initializer_list<double> v) {
-  Inputs in{};
-  int k = 0;
-  for (double x : v) in[std::size_t(k++)] = x;
-  return in;
-}
-// the values of an output group the adapter answered
-std::vector<double> values(const Adapter& a, const Answer& r, const std::string& g) {
-  int first = 0;
-  const int k = group(cdref::fuzz::query_by_name(a.query), g, &first);
-  REQUIRE(((r.given >> k) & 1) == 1);
-  const int w = cdref::fuzz::info(cdref::fuzz::query_by_name(a.query)).outputs[std::size_t(k)].width;
-  return std::vector<double>(r.v.begin() + first, r.v.begin() + first + w);
-}
 const Answer none{};  // the conventions here read the case alone
 const double tiny = 0x1p-40;
 

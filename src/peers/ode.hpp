@@ -112,6 +112,22 @@ struct Triangle {
   Triangle& operator=(const Triangle&) = delete;
 };
 
+/// The infinite ray of the case against the shape `make` builds from it (a Geom or a Triangle),
+/// as a cast's answer: the contact's point and, where asked, its normal.
+template <class Make>
+Answer cast(Query q, const Inputs& in, const Make& make, bool normal) {
+  ready();
+  const std::lock_guard<std::mutex> one(lock());
+  const Geom r(ray(in));
+  const auto shape = make(in);
+  dContactGeom c;
+  const bool hit = collide(r.id, shape.id, c) > 0;
+  Out o(q, hit);
+  if (hit) o.set("point", {c.pos[0], c.pos[1], c.pos[2]});
+  if (hit && normal) o.set("normal", {c.normal[0], c.normal[1], c.normal[2]});
+  return o.a;
+}
+
 /// ODE's adapters.
 inline std::vector<Adapter> adapters() {
   const std::string lib = "ODE " CDREF_ODE_VERSION " (double)";
@@ -127,14 +143,7 @@ inline std::vector<Adapter> adapters() {
                  {"point", "normal"},
                  [](const Inputs& in, const Answer&) { return source_inside(in); },
                  [ray_sphere](const Inputs& in) {
-                   ready();
-                   const std::lock_guard<std::mutex> one(lock());
-                   const Geom r(ray(in)), s(sphere(in[6], in[7], in[8], in[9]));
-                   dContactGeom c;
-                   const bool hit = collide(r.id, s.id, c) > 0;
-                   Out o(ray_sphere, hit);
-                   if (hit) o.set("point", {c.pos[0], c.pos[1], c.pos[2]}).set("normal", {c.normal[0], c.normal[1], c.normal[2]});
-                   return o.a;
+                   return cast(ray_sphere, in, [](const Inputs& x) { return Geom(sphere(x[6], x[7], x[8], x[9])); }, true);
                  },
                  53});
   out.push_back({lib, "dCollide (dCreateRay of length dInfinity, dCreateBox)", "ray-box-cast",
@@ -142,33 +151,14 @@ inline std::vector<Adapter> adapters() {
                  "0): those cases are set apart; the adapter gives the box's side lengths as twice its extents",
                  {"point", "normal"},
                  [](const Inputs& in, const Answer&) { return source_in_box(in); },
-                 [ray_box](const Inputs& in) {
-                   ready();
-                   const std::lock_guard<std::mutex> one(lock());
-                   const Geom r(ray(in)), b(box(in, 6));
-                   dContactGeom c;
-                   const bool hit = collide(r.id, b.id, c) > 0;
-                   Out o(ray_box, hit);
-                   if (hit) o.set("point", {c.pos[0], c.pos[1], c.pos[2]}).set("normal", {c.normal[0], c.normal[1], c.normal[2]});
-                   return o.a;
-                 },
+                 [ray_box](const Inputs& in) { return cast(ray_box, in, [](const Inputs& x) { return Geom(box(x, 6)); }, true); },
                  53});
   out.push_back({lib, "dCollide (dCreateRay of length dInfinity, one-triangle dCreateTriMesh)", "ray-triangle-cast",
                  "a ray in the triangle's plane is never a hit (cdref: the closed triangle's points on it): those "
                  "cases are set apart; both faces are hit (ODE's default), as in cdref",
                  {"point"},
                  [](const Inputs& in, const Answer&) { return in_plane(in); },
-                 [ray_tri](const Inputs& in) {
-                   ready();
-                   const std::lock_guard<std::mutex> one(lock());
-                   const Geom r(ray(in));
-                   const Triangle t(in, 6);
-                   dContactGeom c;
-                   const bool hit = collide(r.id, t.id, c) > 0;
-                   Out o(ray_tri, hit);
-                   if (hit) o.set("point", {c.pos[0], c.pos[1], c.pos[2]});
-                   return o.a;
-                 },
+                 [ray_tri](const Inputs& in) { return cast(ray_tri, in, [](const Inputs& x) { return Triangle(x, 6); }, false); },
                  53});
   out.push_back({lib, "dCollide (dCreateSphere, dCreateBox)", "sphere-box",
                  "none: touching is a contact of depth 0, a centre inside the box gives the radius plus the distance "
