@@ -191,8 +191,23 @@ for p in d:
     assert p['families'], p['function']
     for f in p['families']:
         assert f['cases'] >= f['convention'] + f['false_positives'] + f['false_negatives'], (p['function'], f)
+        # a misclassified family names a case of it, its inputs by column, the answer and the truth
+        if f['false_positives'] + f['false_negatives']:
+            e = f['misclassified_example']
+            assert e['inputs'] and e['got'] != e['want'], e
+ex = [f for p in d for f in p['families'] if 'misclassified_example' in f]
+assert ex, 'no misclassified example'
 " || fail "peers JSON"
 grep -q "^Eigen 3.4: AlignedBox3f::exteriorDistance" peers.txt || fail "peers table"
+# --library: one library's rows alone; a library cdref does not know is refused by name
+"$cdref" peers --n 20 --library Eigen --json peers1.json > peers1.txt || fail "peers --library"
+python3 -c "
+import json
+d = json.load(open('peers1.json'))
+assert d and all(p['library'].startswith('Eigen ') for p in d), [p['library'] for p in d]
+" || fail "peers --library rows"
+st=0; "$cdref" peers --n 20 --library Nope > /dev/null 2> err.txt || st=$?
+[ "$st" = 2 ] && grep -q "library" err.txt || fail "peers --library Nope: status $st, $(cat err.txt)"
 # ODE's rows where it was built with it (scripts/deps.sh installs libode-dev), each at double
 if ! grep -q "ODE not found at build time" peers.txt; then
   python3 -c "

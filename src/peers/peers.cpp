@@ -83,7 +83,7 @@ constexpr int kPrecision = 24;
 #define CDREF_BULLET_NAME "Bullet 3.24 (float)"
 #endif
 real f(double x) { return real(x); }
-bool behind(Query q, const Inputs& in) { return reversed_hits(q, in, kPrecision); }
+[[maybe_unused]] bool behind(Query q, const Inputs& in) { return reversed_hits(q, in, kPrecision); }
 
 std::vector<Adapter> adapters() {
   std::vector<Adapter> out;
@@ -341,13 +341,17 @@ std::vector<Adapter> adapters() {
 // Drift against scale: one panel per family with more than one scale, one curve per
 // library function (the share of its graded cases it misclassifies).
 [[maybe_unused]] std::string svg(const nlohmann::json& results, std::uint64_t n, std::uint64_t seed) {
-  // family -> function -> (scale, misclassified %)
+  // a panel per query and family: "query: family" -> function -> (scale, misclassified %); a
+  // function's legend says the type it runs at, and a double build's curve is dashed
   std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>> curves;
-  for (const auto& r : results)
+  for (const auto& r : results) {
+    const bool dbl = r["precision"].get<int>() == 53;
+    const std::string fn = r["library"].get<std::string>() + ": " + r["function"].get<std::string>() +
+                           (dbl ? "  [double]" : "  [float]");
     for (const auto& [fam, pts] : r["curves"].items())
       for (const auto& p : pts)
-        curves[fam][r["library"].get<std::string>() + ": " + r["function"].get<std::string>()].push_back(
-            {p[0].get<int>(), p[1].get<double>()});
+        curves[r["query"].get<std::string>() + ": " + fam][fn].push_back({p[0].get<int>(), p[1].get<double>()});
+  }
   std::vector<std::string> fams;
   for (const auto& [fam, fns] : curves) {
     bool several = false;
@@ -363,8 +367,8 @@ std::vector<Adapter> adapters() {
   o.precision(5);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << cols * (pw + 200) << "\" height=\"" << rows * cell_h + 40
     << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"10\" y=\"20\" font-size=\"14\">Library functions at float: misclassified share of the graded cases "
-       "against the family's scale ("
+    << "<text x=\"10\" y=\"20\" font-size=\"14\">Library functions (at float, or at double where dashed): "
+       "misclassified share of the graded cases against the family's scale, a panel per query and family ("
     << n << " cases per scale, seed " << seed << ")</text>\n";
   const char* colour[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
   for (std::size_t p = 0; p < fams.size(); ++p) {
@@ -390,7 +394,9 @@ std::vector<Adapter> adapters() {
       auto pts = pts0;
       std::sort(pts.begin(), pts.end());
       const char* col = colour[c % 10];
-      o << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"1.5\" points=\"";
+      const bool dashed = fn.size() >= 8 && fn.compare(fn.size() - 8, 8, "[double]") == 0;
+      o << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"1.5\""
+        << (dashed ? " stroke-dasharray=\"6 3\"" : "") << " points=\"";
       for (const auto& [sc, v] : pts) o << X(sc) << "," << Y(v) << " ";
       o << "\"/>\n";
       for (const auto& [sc, v] : pts)
@@ -424,6 +430,18 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     std::uint64_t cases = 0, refused = 0, apart = 0, fp = 0, fn = 0;
     std::map<std::string, std::pair<fuzz::Histogram, std::uint64_t>> ulps;  // histogram, max
     std::map<std::string, std::pair<double, double>> err;                     // max abs, max rel
+    // the worst value per graded group, and a misclassified case from the scale with the most,
+    // each with the scale of its cell
+    std::map<std::string, std::pair<fuzz::Exemplar, int>> worst;
+    std::pair<fuzz::Exemplar, int> missed;
+    std::uint64_t missed_most = 0;
+  };
+  // an exemplar as JSON: the case's inputs by column name, the function's answer and the truth
+  const std::vector<std::string>& columns = fuzz::info(q).inputs;
+  auto example = [&columns](const std::pair<fuzz::Exemplar, int>& e) {
+    nlohmann::json in = nlohmann::json::object();
+    for (std::size_t c = 0; c < columns.size(); ++c) in[columns[c]] = e.first.inputs[c];
+    return nlohmann::json{{"scale", e.second}, {"inputs", in}, {"got", double(e.first.got)}, {"want", double(e.first.want)}};
   };
   std::map<std::string, Fam> fams;
   nlohmann::json out = {{"library", ad.library}, {"function", ad.function}, {"query", ad.query},
@@ -438,12 +456,18 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     f.apart += st.set_apart;
     f.fp += st.cls_fp;
     f.fn += st.cls_fn;
+    if (st.cls_example.set && st.cls_fp + st.cls_fn > f.missed_most) {
+      f.missed = {st.cls_example, k.scale};
+      f.missed_most = st.cls_fp + st.cls_fn;
+    }
     for (const std::string& g : ad.graded) {
       int first = 0;
       const int gi = group(q, g, &first);
       auto& [h, mx] = f.ulps[g];
       for (int b = 0; b < fuzz::Histogram::bins; ++b) h.count[b] += st.out[gi].hist.count[b];
       if (st.out[gi].worst.set) mx = std::max(mx, st.out[gi].worst.metric);
+      auto& [w, at] = f.worst[g];
+      if (st.out[gi].worst.set && (!w.set || st.out[gi].worst.metric > w.metric)) w = st.out[gi].worst, at = k.scale;
       auto& [ab, re] = f.err[g];
       ab = std::max(ab, st.out[gi].max_abs);
       re = std::max(re, st.out[gi].max_rel);
@@ -462,7 +486,9 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
       const auto& [h, mx] = f.ulps[g];
       const auto& [ab, re] = f.err[g];
       jr["ulps"][g] = {{"p99", h.total() ? h.quantile(0.99) : 0}, {"max", mx}, {"max_abs", ab}, {"max_rel", re}};
+      if (f.worst[g].first.set) jr["ulps"][g]["worst"] = example(f.worst[g]);
     }
+    if (f.missed.first.set) jr["misclassified_example"] = example(f.missed);
     out["families"].push_back(jr);
   }
   return out;
@@ -495,6 +521,14 @@ struct Args {
   std::uint64_t n = 2000, seed = 1;
   std::string json_out, svg_out, rows_out;
   int threads = 2;
+  std::vector<std::string> libraries;  // --library: only these (empty: every library built in)
+  // the library is one of those asked for (its row's library name begins with it)
+  bool wants(const std::string& library) const {
+    if (libraries.empty()) return true;
+    for (const std::string& l : libraries)
+      if (library.rfind(l + " ", 0) == 0) return true;
+    return false;
+  }
 };
 
 // The options of `cdref peers` (and of its float64 helper, which adds --rows).
@@ -568,13 +602,15 @@ int peers_run(const Args& a) {
 #endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
+    if (!a.wants(ad.library)) continue;
     all.push_back(collect(ad, a.n, a.seed, a.threads));
     print(human, all.back());
   }
   // Bullet's float64 build, from its helper beside this executable
   const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string helper = exe.substr(0, exe.rfind('/') + 1) + "cdref_peers_bullet64";
-  if (std::filesystem::exists(helper)) {
+  const bool bullet64 = a.wants("Bullet ");
+  if (bullet64 && std::filesystem::exists(helper)) {
     const std::string rows = std::filesystem::temp_directory_path() / ("cdref-peers-" + std::to_string(::getpid()) + ".json");
     if (!run_helper(helper, {"--n", std::to_string(a.n), "--seed", std::to_string(a.seed), "--threads",
                              std::to_string(a.threads), "--rows", rows}))
@@ -586,7 +622,7 @@ int peers_run(const Args& a) {
       all.push_back(r);
       print(human, r);
     }
-  } else {
+  } else if (bullet64) {
     human << "\n(Bullet's float64 build: no helper " << helper << ")\n";
   }
   cli::io::Outputs outs;
@@ -610,7 +646,9 @@ void add_peers_command(cli::Program& program) {
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
-  c.text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
+  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE"},
+            "only this library's functions (repeatable; default: every library built in)")
+      .text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
       .text("--svg", a->svg_out, "draw the gallery to this SVG");
 }
 #endif
