@@ -75,7 +75,7 @@ inline bool source_inside(const Inputs& in) {
   const Q r(in[9]);
   return dot(m, m) <= r * r;
 }
-/// A ray's source inside or on the box (columns: source 0, direction 3, centre 6, extents 9).
+/// A ray's or segment's source inside or on the box (columns: source 0, centre 6, extents 9).
 inline bool source_in_box(const Inputs& in) {
   for (int i = 0; i < 3; ++i) {
     const Q d = Q(in[i]) - Q(in[6 + i]), h(in[9 + i]);

@@ -126,17 +126,19 @@ inline std::vector<std::array<QV, 3>> fan_triangles(const Inputs& in) {
   if (in[7] != 0) t.push_back({c, qv(in, 11 + 3 * (n - 1)), qv(in, 11)});
   return t;
 }
-/// Where Embree's meaning differs on a fan: a triangle of zero area (never hit), the ray in a
-/// triangle's plane (never a hit there), and in default mode (t > tnear = 0) a source in a
-/// triangle's plane (a hit at 0 is none).
+/// Where Embree's meaning differs on a triangle, for the ray source s + t d: a triangle of zero
+/// area (never hit), the ray in the triangle's plane (never a hit there), and in default mode
+/// (t > tnear = 0) a source in the triangle's plane (a hit at 0 is none).
+inline bool triangle_differs(const std::array<QV, 3>& t, const QV& s, const QV& d, bool robust) {
+  const QV nrm = cross(sub(t[1], t[0]), sub(t[2], t[0]));
+  if (nrm.x == 0 && nrm.y == 0 && nrm.z == 0) return true;
+  return dot(nrm, sub(s, t[0])) == 0 && (dot(nrm, d) == 0 || !robust);
+}
+/// ... and on a fan: on any of its triangles.
 inline bool fan_differs(const Inputs& in, bool robust) {
   const QV s = qv(in, 0), d = qv(in, 3);
-  for (const auto& t : fan_triangles(in)) {
-    const QV nrm = cross(sub(t[1], t[0]), sub(t[2], t[0]));
-    if (nrm.x == 0 && nrm.y == 0 && nrm.z == 0) return true;
-    const Q at = dot(nrm, sub(s, t[0]));
-    if (at == 0 && (dot(nrm, d) == 0 || !robust)) return true;
-  }
+  for (const auto& t : fan_triangles(in))
+    if (triangle_differs(t, s, d, robust)) return true;
   return false;
 }
 
@@ -157,10 +159,7 @@ inline std::vector<Adapter> adapters() {
              "; both faces are hit; lambda_enter is tfar, u and v Embree's barycentric weights",
          {"lambda_enter", "u", "v"},
          [robust](const Inputs& in, const Answer&) {
-           const QV v0 = qv(in, 6), n = cross(sub(qv(in, 9), v0), sub(qv(in, 12), v0));
-           if (n.x == 0 && n.y == 0 && n.z == 0) return true;
-           const Q at = dot(n, sub(qv(in, 0), v0));
-           return at == 0 && (dot(n, qv(in, 3)) == 0 || !robust);
+           return triangle_differs({qv(in, 6), qv(in, 9), qv(in, 12)}, qv(in, 0), qv(in, 3), robust);
          },
          [robust, ray_tri](const Inputs& in) {
            std::vector<float> v;

@@ -9,7 +9,7 @@
 // remains is the function's numerical drift, graded like any implementation of a campaign.
 //
 // The adapters and their exact helpers: adapter.hpp; a library with its own header keeps its
-// adapters there (ode.hpp). Each adapter runs once a case through the campaign engine, which
+// adapters there (ode.hpp, embree.hpp). Each adapter runs once a case through the campaign engine, which
 // sets its convention's cases apart (fuzz::Implementation::set_apart) on the exact answer it
 // computed for the grading.
 //
@@ -163,13 +163,7 @@ std::vector<Adapter> adapters() {
                  "set apart; the adapter computes the inverse direction as Bullet's callers do (BT_LARGE_FLOAT for "
                  "a zero component) and the box as min and max in the function's type",
                  {"lambda_enter"},
-                 [](const Inputs& in, const Answer&) {  // the source inside or on the box, exactly
-                   for (int i = 0; i < 3; ++i) {
-                     const Q d = Q(in[i]) - Q(in[6 + i]), h(in[9 + i]);
-                     if (d > h || -d > h) return false;
-                   }
-                   return true;
-                 },
+                 [](const Inputs& in, const Answer&) { return source_in_box(in); },
                  [seg_box, bt](const Inputs& in) {
                    const btVector3 s = bt(in, 0), t = bt(in, 3), c = bt(in, 6), h = bt(in, 9);
                    const btVector3 dir = t - s;
@@ -338,16 +332,18 @@ std::vector<Adapter> adapters() {
   return out;
 }
 
-// Drift against scale: one panel per family with more than one scale, one curve per
+// Drift against scale: one panel per query and family with more than one scale, one curve per
 // library function (the share of its graded cases it misclassifies).
 [[maybe_unused]] std::string svg(const nlohmann::json& results, std::uint64_t n, std::uint64_t seed) {
   // a panel per query and family: "query: family" -> function -> (scale, misclassified %); a
   // function's legend says the type it runs at, and a double build's curve is dashed
   std::map<std::string, std::map<std::string, std::vector<std::pair<int, double>>>> curves;
+  std::map<std::string, bool> at_double;  // function -> runs at double
   for (const auto& r : results) {
     const bool dbl = r["precision"].get<int>() == 53;
     const std::string fn = r["library"].get<std::string>() + ": " + r["function"].get<std::string>() +
                            (dbl ? "  [double]" : "  [float]");
+    at_double[fn] = dbl;
     for (const auto& [fam, pts] : r["curves"].items())
       for (const auto& p : pts)
         curves[r["query"].get<std::string>() + ": " + fam][fn].push_back({p[0].get<int>(), p[1].get<double>()});
@@ -394,7 +390,7 @@ std::vector<Adapter> adapters() {
       auto pts = pts0;
       std::sort(pts.begin(), pts.end());
       const char* col = colour[c % 10];
-      const bool dashed = fn.size() >= 8 && fn.compare(fn.size() - 8, 8, "[double]") == 0;
+      const bool dashed = at_double.at(fn);
       o << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"1.5\""
         << (dashed ? " stroke-dasharray=\"6 3\"" : "") << " points=\"";
       for (const auto& [sc, v] : pts) o << X(sc) << "," << Y(v) << " ";
