@@ -180,7 +180,7 @@ set -e
 [ "$st" = 1 ] && grep -q "body 'o' radius (9.9999999999999994e+38) is beyond float's range" err.txt \
   && grep -q "^double against exact: 1 events at the same frame" out.txt || fail "scene beyond float: status $st, $(cat err.txt)"
 # peers: every adapter runs on its query's families; the JSON has a row per family
-"$cdref" peers --n 40 --json peers.json --svg peers.svg > peers.txt
+"$cdref" peers --n 40 --json peers.json --svg peers.svg > peers.txt 2> peers_err.txt
 grep -q "<svg" peers.svg || fail "peers SVG"
 python3 -c "
 import json
@@ -228,5 +228,19 @@ assert len(em) == 4 and all(p['precision'] == 24 for p in em), [p['function'] fo
 assert sorted(p['query'] for p in em) == ['ray-fan-cast'] * 2 + ['ray-triangle-cast'] * 2
 assert all(any(f['family'] == 'watertight' for f in p['families']) for p in em if p['query'] == 'ray-fan-cast')
 " || fail "peers Embree rows"
+fi
+# FCL's rows where it was built with it (libfcl-dev), each at double; its messages kept from the
+# terminal and counted with the row
+if ! grep -q "FCL not found at build time" peers.txt; then
+  python3 -c "
+import json
+d = json.load(open('peers.json'))
+fc = [p for p in d if p['library'].startswith('FCL ')]
+assert len(fc) == 7 and all(p['precision'] == 53 for p in fc), [p['function'] for p in fc]
+assert sorted(set(p['query'] for p in fc)) == ['obb-obb', 'sphere-box', 'sphere-sphere', 'sphere-triangle', 'triangle-box', 'triangle-triangle']
+obb = [p for p in fc if p['query'] == 'obb-obb'][0]
+assert sum(f['convention'] for f in obb['families']) > 0, 'the 1e-6 margin sets no case apart'
+" || fail "peers FCL rows"
+  grep -q "too many iterations in Jacobi" peers.txt && ! grep -q "Jacobi" peers_err.txt || fail "peers FCL messages"
 fi
 echo "cli: all checks passed"

@@ -13,9 +13,9 @@
 // sets its convention's cases apart (fuzz::Implementation::set_apart) on the exact answer it
 // computed for the grading.
 //
-// Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev), Embree (libembree-dev)
-// and Eigen are present. ODE runs at double (Debian's build; precision 53). GLM, Eigen, Embree and
-// Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
+// Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev), Embree (libembree-dev),
+// FCL (libfcl-dev, its own unit: fcl.cpp) and Eigen are present. ODE and FCL run at double
+// (Debian's builds; precision 53). GLM, Eigen, Embree and Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
 // Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
 // compiled with CDREF_BULLET64 and BT_USE_DOUBLE_PRECISION), because its inline functions carry
 // the same names as the float build's.
@@ -40,6 +40,7 @@
 
 #include <cerrno>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include "../options.hpp"
@@ -50,6 +51,9 @@
 #endif
 #if defined(CDREF_HAVE_EMBREE) && !defined(CDREF_BULLET64)
 #include "embree.hpp"
+#endif
+#if defined(CDREF_HAVE_FCL) && !defined(CDREF_BULLET64)
+#include "fcl.hpp"
 #endif
 
 #ifdef CDREF_HAVE_GLM
@@ -327,6 +331,9 @@ std::vector<Adapter> adapters() {
 #if defined(CDREF_HAVE_EMBREE) && !defined(CDREF_BULLET64)
   for (Adapter& ad : embree::adapters()) out.push_back(std::move(ad));
 #endif
+#if defined(CDREF_HAVE_FCL) && !defined(CDREF_BULLET64)
+  for (Adapter& ad : fcl_adapters()) out.push_back(std::move(ad));
+#endif
   for (Adapter& ad : out)
     if (!ad.precision) ad.precision = kPrecision;  // this executable's own type
   return out;
@@ -405,6 +412,52 @@ std::vector<Adapter> adapters() {
   return o.str();
 }
 
+// What a library writes to std::cerr while its row runs (FCL's "eigen: too many iterations in
+// Jacobi transform." when it fits a bounding box to a degenerate triangle, say): kept from the
+// terminal, counted by line, the first line kept, and both given with the row.
+class Captured : public std::streambuf {
+ public:
+  Captured() : old_(std::cerr.rdbuf(this)) {}
+  ~Captured() override { std::cerr.rdbuf(old_); }
+  Captured(const Captured&) = delete;
+  Captured& operator=(const Captured&) = delete;
+  std::uint64_t lines() const { return lines_; }
+  const std::string& first() const { return first_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (c != traits_type::eof()) {
+      const char one = char(c);
+      put(&one, 1);
+    }
+    return traits_type::not_eof(c);
+  }
+  std::streamsize xsputn(const char* p, std::streamsize n) override {
+    put(p, n);
+    return n;
+  }
+
+ private:
+  // one write at a time (the engine's threads share the stream): a message written in one piece
+  // stays whole
+  void put(const char* p, std::streamsize n) {
+    const std::lock_guard<std::mutex> one(m_);
+    for (std::streamsize i = 0; i < n; ++i) {
+      if (p[i] == '\n') {
+        ++lines_;
+        line_done_ = true;
+      } else if (!line_done_ && first_.size() < 200) {
+        first_ += p[i];
+      }
+    }
+  }
+  std::streambuf* old_;
+  std::mutex m_;
+  std::uint64_t lines_ = 0;
+  std::string first_;
+  bool line_done_ = false;
+};
+
 // Runs one adapter's campaign: its rows per family (cases, convention cases, misclassified,
 // p99 and max ulps of each graded output over the family) and its misclassified share per
 // scale, as JSON.
@@ -421,7 +474,11 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   peer.set_apart = [&ad](Query, const Inputs& in, const Answer& truth) { return ad.differs(in, truth); };
   spec.custom.push_back(std::move(peer));
   spec.impls = {"peer"};
+  std::optional<Captured> said(std::in_place);
   const fuzz::Results res = fuzz::run(spec);
+  const std::uint64_t said_lines = said->lines();
+  const std::string said_first = said->first();
+  said.reset();
   struct Fam {
     std::uint64_t cases = 0, refused = 0, apart = 0, fp = 0, fn = 0;
     std::map<std::string, std::pair<fuzz::Histogram, std::uint64_t>> ulps;  // histogram, max
@@ -443,6 +500,7 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   nlohmann::json out = {{"library", ad.library}, {"function", ad.function}, {"query", ad.query},
                         {"convention", ad.convention}, {"graded", ad.graded}, {"precision", ad.precision}};
   out["curves"] = nlohmann::json::object();
+  if (said_lines) out["library_messages"] = {{"lines", said_lines}, {"first", said_first}};
   for (const auto& [k, st] : res.cells) {
     Fam& f = fams[k.family];
     const std::uint64_t graded = st.n - st.refused - st.set_apart;
@@ -493,6 +551,10 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
 [[maybe_unused]] void print(std::ostream& o, const nlohmann::json& r) {
   o << "\n" << r["library"].get<std::string>() << ": " << r["function"].get<std::string>() << " as "
     << r["query"].get<std::string>() << "\n  convention: " << r["convention"].get<std::string>() << "\n";
+  if (r.contains("library_messages"))
+    o << "  the library wrote " << r["library_messages"]["lines"].get<std::uint64_t>()
+      << " lines to standard error while it ran (kept from the terminal), the first: "
+      << r["library_messages"]["first"].get<std::string>() << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
   o << line;
@@ -582,7 +644,7 @@ int peers_run(const Args& a) {
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
             << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
-               "type (float; double for ODE and Bullet's float64 build): p99 / max, and the largest error relative to the\n"
+               "type (float; double for ODE, FCL and Bullet's float64 build): p99 / max, and the largest error relative to the\n"
                "inputs' scale.\n";
 #ifndef CDREF_HAVE_GLM
   human << "(GLM not found at build time: apt-get install libglm-dev and rebuild)\n";
@@ -595,6 +657,9 @@ int peers_run(const Args& a) {
 #endif
 #ifndef CDREF_HAVE_EMBREE
   human << "(Embree not found at build time: apt-get install libembree-dev and rebuild)\n";
+#endif
+#ifndef CDREF_HAVE_FCL
+  human << "(FCL not found at build time: apt-get install libfcl-dev and rebuild)\n";
 #endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
@@ -638,11 +703,11 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's, Eigen's, Embree's and ODE's functions on cdref's families at float (ODE and Bullet's float64 build at double) against the exact "
+      "GLM's, Bullet's, Eigen's, Embree's, ODE's and FCL's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
-  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE"},
+  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL"},
             "only this library's functions (repeatable; default: every library built in)")
       .text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
       .text("--svg", a->svg_out, "draw the gallery to this SVG");
