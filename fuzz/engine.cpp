@@ -643,6 +643,28 @@ void Work::check(const Results& r, const std::vector<std::pair<std::uint64_t, st
       throw std::runtime_error(source + ": cell " + name(k) + " is missing (" + std::to_string(n) + " cases done)");
 }
 
+// The cases from, from + step, ... below last told to each implementation of the cell's query
+// that asks for them (Implementation::prefetch), as it will see them.
+static void prefetch_block(const Cell& cell, std::uint64_t from, std::uint64_t last, std::uint64_t step,
+                    const std::vector<const Implementation*>& impls) {
+  const QueryInfo& qi = info(cell.q);
+  std::vector<Inputs> made, rounded;
+  for (std::uint64_t i = from; i < last; i += step) made.push_back(make_case_of(cell.key, *cell.family, cell.scale, i));
+  for (const Implementation* im : impls) {
+    if (!im || !im->prefetch || !im->supports(cell.q)) continue;
+    if (im->precision != 24) {
+      im->prefetch(cell.q, made.data(), made.size());
+      continue;
+    }
+    if (rounded.empty())
+      for (const Inputs& in : made) {
+        Inputs f = float_inputs(cell.q, in);
+        if (all_finite(f, qi.inputs.size())) rounded.push_back(f);
+      }
+    im->prefetch(cell.q, rounded.data(), rounded.size());
+  }
+}
+
 void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
   const Spec& spec = s_->spec;
   const std::vector<Cell>& cells = s_->cells;
@@ -658,6 +680,8 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
   bool sets_apart = false;
   for (const Implementation* im : impls) sets_apart = sets_apart || (im && im->set_apart);
   const bool by_block = spec.classification_only && !spec.exact_truth && !sets_apart;
+  bool prefetching = false;
+  for (const Implementation* im : impls) prefetching = prefetching || (im && im->prefetch);
   auto work = [&](int t) {
     try {
       std::vector<std::uint64_t> index(by_block ? block : 0);
@@ -670,8 +694,9 @@ void Work::run(std::uint64_t begin, std::uint64_t end, Results& into) const {
         std::size_t m = 0;  // the block's cases of this shard, graded together
         // the block's cases of this shard: i % shards == shard
         const std::uint64_t shards = std::uint64_t(spec.shards);
-        for (std::uint64_t i = it.first + (std::uint64_t(spec.shard) + shards - it.first % shards) % shards; i < last;
-             i += shards) {
+        const std::uint64_t from = it.first + (std::uint64_t(spec.shard) + shards - it.first % shards) % shards;
+        if (prefetching && !by_block) prefetch_block(cell, from, last, shards, impls);
+        for (std::uint64_t i = from; i < last; i += shards) {
           if (stats.empty())
             for (const Implementation* im : impls)
               stats.push_back(im->supports(cell.q) ? &local[t].cells[{cell.q, im->name, cell.family->name, cell.scale}]

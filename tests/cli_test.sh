@@ -243,4 +243,14 @@ assert sum(f['convention'] for f in obb['families']) > 0, 'the 1e-6 margin sets 
 " || fail "peers FCL rows"
   grep -q "too many iterations in Jacobi" peers.txt && ! grep -q "Jacobi" peers_err.txt || fail "peers FCL messages"
 fi
+# Rapier's rows where its package was installed (scripts/deps.sh, npm), each at f32 through node
+if ! grep -q "Rapier not found at build time" peers.txt; then
+  python3 -c "
+import json
+d = json.load(open('peers.json'))
+ra = [p for p in d if p['library'].startswith('Rapier ')]
+assert len(ra) == 9 and all(p['precision'] == 24 for p in ra), [p['function'] for p in ra]
+assert all(f['cases'] > f['refused'] for p in ra for f in p['families']), 'Rapier refused every case'
+" || fail "peers Rapier rows"
+fi
 echo "cli: all checks passed"

@@ -34,6 +34,9 @@ struct Adapter {
   /// The type whose ulps measure its error: 24 float, 53 double (0: the executable's own type,
   /// float in `cdref`, double in Bullet's float64 helper).
   int precision = 0;
+  /// Optional: told a block of cases before they are run one by one (an adapter whose library
+  /// runs in another process answers them in one exchange; fuzz::Implementation::prefetch).
+  std::function<void(const Inputs* in, std::size_t n)> prefetch{};
 };
 
 /// An output group's index in the query's outputs (its first value's index in *first).

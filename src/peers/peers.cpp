@@ -14,7 +14,8 @@
 // computed for the grading.
 //
 // Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev), Embree (libembree-dev),
-// FCL (libfcl-dev, its own unit: fcl.cpp) and Eigen are present. ODE and FCL run at double
+// FCL (libfcl-dev, its own unit: fcl.cpp), Rapier (npm's WebAssembly package run by node, in
+// scripts/rapier) and Eigen are present. ODE and FCL run at double
 // (Debian's builds; precision 53). GLM, Eigen, Embree and Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
 // Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
 // compiled with CDREF_BULLET64 and BT_USE_DOUBLE_PRECISION), because its inline functions carry
@@ -54,6 +55,9 @@
 #endif
 #if defined(CDREF_HAVE_FCL) && !defined(CDREF_BULLET64)
 #include "fcl.hpp"
+#endif
+#if defined(CDREF_HAVE_RAPIER) && !defined(CDREF_BULLET64)
+#include "rapier.hpp"
 #endif
 
 #ifdef CDREF_HAVE_GLM
@@ -334,6 +338,9 @@ std::vector<Adapter> adapters() {
 #if defined(CDREF_HAVE_FCL) && !defined(CDREF_BULLET64)
   for (Adapter& ad : fcl_adapters()) out.push_back(std::move(ad));
 #endif
+#if defined(CDREF_HAVE_RAPIER) && !defined(CDREF_BULLET64)
+  for (Adapter& ad : rapier::adapters()) out.push_back(std::move(ad));
+#endif
   for (Adapter& ad : out)
     if (!ad.precision) ad.precision = kPrecision;  // this executable's own type
   return out;
@@ -472,6 +479,7 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
   // apart by the engine (CellStats::set_apart), decided on the exact answer it computed
   fuzz::Implementation peer{"peer", ad.precision, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}};
   peer.set_apart = [&ad](Query, const Inputs& in, const Answer& truth) { return ad.differs(in, truth); };
+  if (ad.prefetch) peer.prefetch = [&ad](Query, const Inputs* in, std::size_t n) { ad.prefetch(in, n); };
   spec.custom.push_back(std::move(peer));
   spec.impls = {"peer"};
   std::optional<Captured> said(std::in_place);
@@ -661,6 +669,9 @@ int peers_run(const Args& a) {
 #ifndef CDREF_HAVE_FCL
   human << "(FCL not found at build time: apt-get install libfcl-dev and rebuild)\n";
 #endif
+#ifndef CDREF_HAVE_RAPIER
+  human << "(Rapier not found at build time: scripts/deps.sh installs it with npm into scripts/rapier; rebuild)\n";
+#endif
   nlohmann::json all = nlohmann::json::array();
   for (const Adapter& ad : adapters()) {
     if (!a.wants(ad.library)) continue;
@@ -703,11 +714,11 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's, Eigen's, Embree's, ODE's and FCL's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
+      "GLM's, Bullet's, Eigen's, Embree's, ODE's, FCL's and Rapier's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
-  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL"},
+  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL", "Rapier"},
             "only this library's functions (repeatable; default: every library built in)")
       .text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
       .text("--svg", a->svg_out, "draw the gallery to this SVG");

@@ -161,6 +161,11 @@ struct Implementation {
   // the implementation sees it and the engine's exact answer to it (its classification alone
   // in a campaign grading the classification); empty: no case is set apart.
   std::function<bool(Query, const Inputs& seen, const Answer& truth)> set_apart{};
+  // Told a block's cases (as the implementation sees them: rounded to float at precision 24,
+  // those finite there) before they are run one by one, so that an implementation in another
+  // process can answer them in one exchange and run() then read its answers; run is still
+  // called for every case graded, and the results are the same without it. Empty: not told.
+  std::function<void(Query, const Inputs* seen, std::size_t n)> prefetch{};
   bool supports(Query q) const {
     return queries.empty() || std::find(queries.begin(), queries.end(), q) != queries.end();
   }
