@@ -47,12 +47,13 @@ Vec3<double> Case::vec(const std::string& prefix) const {
   return {(*this)(prefix + "_x"), (*this)(prefix + "_y"), (*this)(prefix + "_z")};
 }
 
-bool Case::exact_classification() const { return fuzz::oracle_truth(qi_->q, *in_, precision_).cls; }
+bool Case::exact_classification() const { return exact_ ? exact_->cls : fuzz::oracle_truth(qi_->q, *in_, precision_).cls; }
+fuzz::Answer Case::exact_answer() const { return exact_ ? *exact_ : fuzz::oracle_truth(qi_->q, *in_, precision_); }
 double Case::exact_value(const std::string& group, int component) const {
   int first = 0;
   const int g = output_group(*qi_, group, &first);
   if (component < 0 || component >= qi_->outputs[g].width) throw std::invalid_argument(group + ": no such component");
-  return double(fuzz::oracle_truth(qi_->q, *in_, precision_).v[first + component]);
+  return double((exact_ ? *exact_ : fuzz::oracle_truth(qi_->q, *in_, precision_)).v[first + component]);
 }
 
 Answer& Answer::value(const std::string& group, double x) {
@@ -64,7 +65,7 @@ Answer& Answer::value(const std::string& group, const Vec3<double>& v) {
   return *this;
 }
 
-Report run(const Options& o, const std::function<Answer(const Case&)>& impl) {
+Report run_engine(const Options& o, const std::function<fuzz::Answer(const Case&)>& impl) {
   const fuzz::Query q = fuzz::query_by_name(o.query);
   const fuzz::QueryInfo& qi = fuzz::info(q);
   if (o.precision != 24 && o.precision != 53 && o.precision != 64)
@@ -81,30 +82,17 @@ Report run(const Options& o, const std::function<Answer(const Case&)>& impl) {
   spec.n = o.n;
   spec.seed = o.seed;
   spec.threads = o.threads;
-  spec.custom.push_back({o.name, o.precision,
-                         [&qi, &impl, &o](fuzz::Query, const fuzz::Inputs& in) {
-                           const Case c(qi, in, o.precision);
-                           const Answer a = impl(c);
-                           fuzz::Answer r;
-                           r.cls = r.pred = a.classification();
-                           r.given = 0;
-                           for (const auto& nv : a.values()) {
-                             int first = 0;
-                             const int g = output_group(qi, nv.group, &first);
-                             if (int(nv.v.size()) != qi.outputs[g].width)
-                               throw std::invalid_argument(nv.group + " has " + std::to_string(qi.outputs[g].width) +
-                                                           " components");
-                             for (std::size_t k = 0; k < nv.v.size(); ++k) r.v[first + k] = nv.v[k];
-                             r.given |= std::uint64_t(1) << g;
-                           }
-                           return r;
-                         },
-                         {q}});
-  // the convention's cases: set apart by the engine, in each cell (CellStats::set_apart)
+  spec.custom.push_back(
+      {o.name, o.precision, [&qi, &impl, &o](fuzz::Query, const fuzz::Inputs& in) { return impl(Case(qi, in, o.precision)); },
+       {q}});
+  // the convention's cases: set apart by the engine, in each cell (CellStats::set_apart), on the
+  // exact answer it computed
   if (o.convention)
-    spec.custom.back().set_apart = [&qi, &o](fuzz::Query, const fuzz::Inputs& in, const fuzz::Answer&) {
-      return o.convention(Case(qi, in, o.precision));
+    spec.custom.back().set_apart = [&qi, &o](fuzz::Query, const fuzz::Inputs& in, const fuzz::Answer& exact) {
+      return o.convention(Case(qi, in, o.precision, exact));
     };
+  if (o.prefetch)
+    spec.custom.back().prefetch = [&o](fuzz::Query, const fuzz::Inputs* in, std::size_t n) { o.prefetch(in, n); };
   Report rep;
   rep.query = qi.name;
   rep.name = o.name;
@@ -113,6 +101,25 @@ Report run(const Options& o, const std::function<Answer(const Case&)>& impl) {
   rep.results = fuzz::run(spec);
   for (const auto& [k, st] : rep.results.cells) rep.convention_cases += st.set_apart;
   return rep;
+}
+
+Report run(const Options& o, const std::function<Answer(const Case&)>& impl) {
+  const fuzz::QueryInfo& qi = fuzz::info(fuzz::query_by_name(o.query));
+  return run_engine(o, [&qi, &impl](const Case& c) {
+    const Answer a = impl(c);
+    fuzz::Answer r;
+    r.cls = r.pred = a.classification();
+    r.given = 0;
+    for (const auto& nv : a.values()) {
+      int first = 0;
+      const int g = output_group(qi, nv.group, &first);
+      if (int(nv.v.size()) != qi.outputs[g].width)
+        throw std::invalid_argument(nv.group + " has " + std::to_string(qi.outputs[g].width) + " components");
+      for (std::size_t k = 0; k < nv.v.size(); ++k) r.v[first + k] = nv.v[k];
+      r.given |= std::uint64_t(1) << g;
+    }
+    return r;
+  });
 }
 
 std::uint64_t Report::cases() const {

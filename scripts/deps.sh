@@ -4,7 +4,7 @@
 set -euo pipefail
 # Extra package names may be given as arguments (the fuzz build adds clang's).
 pkgs=(cmake ninja-build g++ libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libmpfrc++-dev libboost-dev python3
-      gnuplot-nox nlohmann-json3-dev libglm-dev libbullet-dev libode-dev libembree-dev libfcl-dev libbenchmark-dev libopenmpi-dev openmpi-bin
+      gnuplot-nox nlohmann-json3-dev libglm-dev libbullet-dev libode-dev libembree-dev libfcl-dev libopen3d-dev libbenchmark-dev libopenmpi-dev openmpi-bin
       pybind11-dev python3-numpy python3-pytest libgtest-dev libgmock-dev libcli11-dev doxygen)
 given=$#
 [ $# -gt 0 ] && pkgs=("$@")

@@ -197,6 +197,11 @@ for p in d:
             assert e['inputs'] and e['got'] != e['want'], e
 ex = [f for p in d for f in p['families'] if 'misclassified_example' in f]
 assert ex, 'no misclassified example'
+# where each function first goes wrong, and its counts at each family's largest scale
+for p in d:
+    for f in p['families']:
+        assert ('first_misclassified_scale' in f) == (f['false_positives'] + f['false_negatives'] > 0), (p['function'], f['family'])
+assert all('largest_scale' in f for p in d for f in p['families'])
 " || fail "peers JSON"
 grep -q "^Eigen 3.4: AlignedBox3f::exteriorDistance" peers.txt || fail "peers table"
 # --library: one library's rows alone; a library cdref does not know is refused by name
@@ -242,6 +247,17 @@ obb = [p for p in fc if p['query'] == 'obb-obb'][0]
 assert sum(f['convention'] for f in obb['families']) > 0, 'the 1e-6 margin sets no case apart'
 " || fail "peers FCL rows"
   grep -q "too many iterations in Jacobi" peers.txt && ! grep -q "Jacobi" peers_err.txt || fail "peers FCL messages"
+fi
+# Open3D's rows where it was built with it (libopen3d-dev), each at float; the cases its float
+# routine would abort on refused, the process going on
+if ! grep -q "Open3D not found at build time" peers.txt; then
+  python3 -c "
+import json
+d = json.load(open('peers.json'))
+o3 = [p for p in d if p['library'].startswith('Open3D ')]
+assert len(o3) == 2 and all(p['precision'] == 24 for p in o3), [p['function'] for p in o3]
+assert sorted(p['query'] for p in o3) == ['point-triangle', 'ray-triangle-cast']
+" || fail "peers Open3D rows"
 fi
 # Rapier's rows where its package was installed (scripts/deps.sh, npm), each at f32 through node
 if ! grep -q "Rapier not found at build time" peers.txt; then

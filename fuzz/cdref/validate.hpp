@@ -49,6 +49,11 @@ struct Options {
   /// callable not called on them, so a difference of meaning is never reported as drift. It
   /// may read the exact answer through Case::exact_*.
   std::function<bool(const Case&)> convention;
+  /// Optional: told a block's cases (their inputs at the precision) before your callable runs on
+  /// them one by one, for an implementation in another process that answers a block in one
+  /// exchange (fuzz::Implementation::prefetch; the gallery's Rapier rows). The results are the
+  /// same without it.
+  std::function<void(const fuzz::Inputs* in, std::size_t n)> prefetch;
 };
 
 /// One case's inputs, by column name.
@@ -57,6 +62,10 @@ class Case {
   /// A case of query `qi` with inputs `in`, read at `precision` (24: rounded to float).
   Case(const fuzz::QueryInfo& qi, const fuzz::Inputs& in, int precision = 53)
       : qi_(&qi), in_(&in), precision_(precision) {}
+  /// The same, with the exact answer the campaign engine already computed for it (a
+  /// convention's case: Case::exact_* then read it instead of asking the oracle again).
+  Case(const fuzz::QueryInfo& qi, const fuzz::Inputs& in, int precision, const fuzz::Answer& exact)
+      : qi_(&qi), in_(&in), precision_(precision), exact_(&exact) {}
   double operator()(const std::string& column) const;  ///< throws std::invalid_argument naming the columns
   Vec3<double> vec(const std::string& prefix) const;   ///< prefix_x, prefix_y, prefix_z
   const fuzz::Inputs& inputs() const { return *in_; }  ///< every input column, in the query's order
@@ -64,11 +73,15 @@ class Case {
   bool exact_classification() const;
   /// One component of an output group's exact value, rounded to the precision.
   double exact_value(const std::string& group, int component = 0) const;
+  /// The whole exact answer in the engine's form (classification, values by index, rounded to
+  /// the precision).
+  fuzz::Answer exact_answer() const;
 
  private:
   const fuzz::QueryInfo* qi_;
   const fuzz::Inputs* in_;
   int precision_;
+  const fuzz::Answer* exact_ = nullptr;
 };
 
 /// An implementation's answer: the classification, and the output groups it computes.
@@ -128,6 +141,10 @@ class Report {
 /// answer, and returns the report. An unknown query, family or output group throws
 /// std::invalid_argument naming the valid ones.
 Report run(const Options& options, const std::function<Answer(const Case&)>& implementation);
+/// The same for a callable that answers in the engine's form (fuzz::Answer: the classification,
+/// the values by index and the bits of the groups given), as the gallery's adapters do
+/// (src/peers/adapter.hpp): no lookup of group names per case.
+Report run_engine(const Options& options, const std::function<fuzz::Answer(const Case&)>& implementation);
 
 /// The index of a query's output group, and (first_value) where its values start in an
 /// answer; throws std::invalid_argument naming the query's groups.

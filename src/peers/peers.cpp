@@ -14,7 +14,7 @@
 // computed for the grading.
 //
 // Built when GLM (libglm-dev), Bullet (libbullet-dev), ODE (libode-dev), Embree (libembree-dev),
-// FCL (libfcl-dev, its own unit: fcl.cpp), Rapier (npm's WebAssembly package run by node, in
+// FCL (libfcl-dev, its own unit: fcl.cpp), Open3D (libopen3d-dev, its own unit: open3d.cpp), Rapier (npm's WebAssembly package run by node, in
 // scripts/rapier) and Eigen are present. ODE and FCL run at double
 // (Debian's builds; precision 53). GLM, Eigen, Embree and Bullet's float build run at float (precision 24: the inputs are the cases' float roundings);
 // Bullet's float64 build runs at double in its own executable, cdref_peers_bullet64 (this file
@@ -58,6 +58,9 @@
 #endif
 #if defined(CDREF_HAVE_RAPIER) && !defined(CDREF_BULLET64)
 #include "rapier.hpp"
+#endif
+#if defined(CDREF_HAVE_OPEN3D) && !defined(CDREF_BULLET64)
+#include "open3d.hpp"
 #endif
 
 #ifdef CDREF_HAVE_GLM
@@ -341,6 +344,9 @@ std::vector<Adapter> adapters() {
 #if defined(CDREF_HAVE_RAPIER) && !defined(CDREF_BULLET64)
   for (Adapter& ad : rapier::adapters()) out.push_back(std::move(ad));
 #endif
+#if defined(CDREF_HAVE_OPEN3D) && !defined(CDREF_BULLET64)
+  for (Adapter& ad : open3d_adapters()) out.push_back(std::move(ad));
+#endif
   for (Adapter& ad : out)
     if (!ad.precision) ad.precision = kPrecision;  // this executable's own type
   return out;
@@ -419,15 +425,37 @@ std::vector<Adapter> adapters() {
   return o.str();
 }
 
-// What a library writes to std::cerr while its row runs (FCL's "eigen: too many iterations in
-// Jacobi transform." when it fits a bounding box to a degenerate triangle, say): kept from the
-// terminal, counted by line, the first line kept, and both given with the row.
+// What a library writes to standard error while its row runs (FCL's "eigen: too many iterations
+// in Jacobi transform." when it fits a bounding box to a degenerate triangle, an assertion's
+// message from a library's C code): kept from the terminal, counted by line, the first line kept,
+// and both given with the row. std::cerr goes to this buffer, file descriptor 2 to a temporary
+// file read back at the end (the row's engine threads are the only writers meanwhile).
 class Captured : public std::streambuf {
  public:
-  Captured() : old_(std::cerr.rdbuf(this)) {}
-  ~Captured() override { std::cerr.rdbuf(old_); }
+  Captured() : old_(std::cerr.rdbuf(this)) {
+    std::fflush(stderr);
+    file_ = std::tmpfile();
+    saved_ = file_ ? ::dup(2) : -1;
+    if (saved_ >= 0) ::dup2(::fileno(file_), 2);
+  }
+  ~Captured() override { finish(); }
   Captured(const Captured&) = delete;
   Captured& operator=(const Captured&) = delete;
+  /// Standard error given back; what went to file descriptor 2 counted.
+  void finish() {
+    if (old_) std::cerr.rdbuf(old_), old_ = nullptr;
+    if (saved_ >= 0) {
+      std::fflush(stderr);
+      ::dup2(saved_, 2);
+      ::close(saved_);
+      saved_ = -1;
+      std::rewind(file_);
+      char buf[4096];
+      std::size_t k;
+      while ((k = std::fread(buf, 1, sizeof buf, file_)) > 0) put(buf, std::streamsize(k));
+    }
+    if (file_) std::fclose(file_), file_ = nullptr;
+  }
   std::uint64_t lines() const { return lines_; }
   const std::string& first() const { return first_; }
 
@@ -459,6 +487,8 @@ class Captured : public std::streambuf {
     }
   }
   std::streambuf* old_;
+  std::FILE* file_ = nullptr;
+  int saved_ = -1;
   std::mutex m_;
   std::uint64_t lines_ = 0;
   std::string first_;
@@ -470,20 +500,22 @@ class Captured : public std::streambuf {
 // scale, as JSON.
 nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, int threads) {
   const Query q = fuzz::query_by_name(ad.query);
-  fuzz::Spec spec;
-  spec.queries = {q};
-  spec.n = n;
-  spec.seed = seed;
-  spec.threads = threads;
-  // the library's function, once a case; the cases its convention gives another meaning set
-  // apart by the engine (CellStats::set_apart), decided on the exact answer it computed
-  fuzz::Implementation peer{"peer", ad.precision, [&ad](Query, const Inputs& in) -> Answer { return ad.run(in); }, {q}};
-  peer.set_apart = [&ad](Query, const Inputs& in, const Answer& truth) { return ad.differs(in, truth); };
-  if (ad.prefetch) peer.prefetch = [&ad](Query, const Inputs* in, std::size_t n) { ad.prefetch(in, n); };
-  spec.custom.push_back(std::move(peer));
-  spec.impls = {"peer"};
+  // the library's function through the validate API, as a user's own function runs: once a
+  // case, the cases its convention gives another meaning set apart by the engine
+  // (Options::convention, CellStats::set_apart), decided on the exact answer it computed
+  validate::Options o;
+  o.query = ad.query;
+  o.n = n;
+  o.seed = seed;
+  o.precision = ad.precision;
+  o.threads = threads;
+  o.name = "peer";
+  o.convention = [&ad](const validate::Case& c) { return ad.differs(c.inputs(), c.exact_answer()); };
+  if (ad.prefetch) o.prefetch = ad.prefetch;
   std::optional<Captured> said(std::in_place);
-  const fuzz::Results res = fuzz::run(spec);
+  const validate::Report rep = validate::run_engine(o, [&ad](const validate::Case& c) { return ad.run(c.inputs()); });
+  const fuzz::Results& res = rep.results;
+  said->finish();
   const std::uint64_t said_lines = said->lines();
   const std::string said_first = said->first();
   said.reset();
@@ -496,6 +528,10 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     std::map<std::string, std::pair<fuzz::Exemplar, int>> worst;
     std::pair<fuzz::Exemplar, int> missed;
     std::uint64_t missed_most = 0;
+    // the smallest scale with a misclassified case, and the counts at the largest scale
+    std::optional<int> first_wrong;
+    int last_scale = 0;
+    std::uint64_t last_fp = 0, last_fn = 0;
   };
   // an exemplar as JSON: the case's inputs by column name, the function's answer and the truth
   const std::vector<std::string>& columns = fuzz::info(q).inputs;
@@ -518,6 +554,8 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
     f.apart += st.set_apart;
     f.fp += st.cls_fp;
     f.fn += st.cls_fn;
+    if (st.cls_fp + st.cls_fn && !f.first_wrong) f.first_wrong = k.scale;  // (cells in increasing scale)
+    f.last_scale = k.scale, f.last_fp = st.cls_fp, f.last_fn = st.cls_fn;
     if (st.cls_example.set && st.cls_fp + st.cls_fn > f.missed_most) {
       f.missed = {st.cls_example, k.scale};
       f.missed_most = st.cls_fp + st.cls_fn;
@@ -542,7 +580,9 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
                          {"convention", f.apart},
                          {"refused", f.refused},
                          {"false_positives", f.fp},
-                         {"false_negatives", f.fn}};
+                         {"false_negatives", f.fn},
+                         {"largest_scale", {{"scale", f.last_scale}, {"false_positives", f.last_fp}, {"false_negatives", f.last_fn}}}};
+    if (f.first_wrong) jr["first_misclassified_scale"] = *f.first_wrong;
     jr["ulps"] = nlohmann::json::object();
     for (const auto& g : ad.graded) {
       const auto& [h, mx] = f.ulps[g];
@@ -564,14 +604,21 @@ nlohmann::json collect(const Adapter& ad, std::uint64_t n, std::uint64_t seed, i
       << " lines to standard error while it ran (kept from the terminal), the first: "
       << r["library_messages"]["first"].get<std::string>() << "\n";
   char line[256];
-  std::snprintf(line, sizeof line, "  %-18s %8s %10s %16s", "family", "cases", "convention", "misclassified");
+  std::snprintf(line, sizeof line, "  %-18s %8s %10s %8s %16s %12s", "family", "cases", "convention", "refused", "misclassified",
+                "first wrong");
   o << line;
   for (const auto& g : r["graded"]) o << "  " << g.get<std::string>() << " p99/max ulps, max rel";
   o << "\n";
   for (const auto& f : r["families"]) {
-    std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %7llu/%-8llu", f["family"].get<std::string>().c_str(),
+    std::snprintf(line, sizeof line, "  %-18s %8llu %10llu %8llu %7llu/%-8llu", f["family"].get<std::string>().c_str(),
                   f["cases"].get<unsigned long long>(), f["convention"].get<unsigned long long>(),
+                  f["refused"].get<unsigned long long>(),
                   f["false_positives"].get<unsigned long long>(), f["false_negatives"].get<unsigned long long>());
+    o << line;
+    if (f.contains("first_misclassified_scale"))
+      std::snprintf(line, sizeof line, " %12d", f["first_misclassified_scale"].get<int>());
+    else
+      std::snprintf(line, sizeof line, " %12s", "-");
     o << line;
     for (const auto& g : r["graded"]) {
       const auto& u = f["ulps"][g.get<std::string>()];
@@ -651,7 +698,9 @@ int peers_run(const Args& a) {
   human << "Library functions on cdref's families, against the exact answer (" << a.n
             << " cases per family and scale, seed " << a.seed << ").\n"
             << "convention: cases where the library's meaning differs from cdref's (set apart, not drift);\n"
-            << "misclassified: false positives / false negatives among the others; errors in ulps of the function's\n"
+            << "refused: cases the function cannot take (beyond its type's range, or refused for the reason its row states);\n"
+            << "misclassified: false positives / false negatives among the others (first wrong: the smallest of the family's\n"
+               "scales where it misclassifies; the JSON gives the counts at its largest); errors in ulps of the function's\n"
                "type (float; double for ODE, FCL and Bullet's float64 build): p99 / max, and the largest error relative to the\n"
                "inputs' scale.\n";
 #ifndef CDREF_HAVE_GLM
@@ -668,6 +717,9 @@ int peers_run(const Args& a) {
 #endif
 #ifndef CDREF_HAVE_FCL
   human << "(FCL not found at build time: apt-get install libfcl-dev and rebuild)\n";
+#endif
+#ifndef CDREF_HAVE_OPEN3D
+  human << "(Open3D not found at build time: apt-get install libopen3d-dev and rebuild)\n";
 #endif
 #ifndef CDREF_HAVE_RAPIER
   human << "(Rapier not found at build time: scripts/deps.sh installs it with npm into scripts/rapier; rebuild)\n";
@@ -714,11 +766,11 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's, Eigen's, Embree's, ODE's, FCL's and Rapier's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
+      "GLM's, Bullet's, Eigen's, Embree's, ODE's, FCL's, Open3D's and Rapier's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
       "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
       [a] { return peers_run(*a); });
   add_options(c, *a);
-  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL", "Rapier"},
+  c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL", "Open3D", "Rapier"},
             "only this library's functions (repeatable; default: every library built in)")
       .text("--json", a->json_out, "write the rows as JSON to this file (- for standard output)")
       .text("--svg", a->svg_out, "draw the gallery to this SVG");
