@@ -87,6 +87,16 @@ double distance(const ::fcl::CollisionObject<S>& a, const ::fcl::CollisionObject
   return d < 0 ? 0 : d;
 }
 
+/// fcl::collide with a contact asked for, then fcl::distance where FCL finds none: intersect,
+/// depth (the contact's penetration depth, negated where FCL reports it negative) and distance.
+Answer proximity(Query q, const ::fcl::CollisionObject<S>& a, const ::fcl::CollisionObject<S>& b, bool negated_depth) {
+  double depth = 0;
+  const bool hit = collide(a, b, ::fcl::GST_LIBCCD, &depth);
+  Out o(q, hit);
+  o.set("depth", {hit ? (negated_depth ? -depth : depth) : 0.0});
+  return o.set("distance", {hit ? 0.0 : distance(a, b)}).a;
+}
+
 // ---- FCL's conventions evaluated exactly ----
 
 /// OBB<double>::overlap's 15 tests (obbDisjoint) on the case's rationals, with its margin: R =
@@ -195,11 +205,7 @@ std::vector<Adapter> fcl_adapters() {
                  [sphere_tri](const Inputs& in) {
                    const auto a = object(std::make_shared<::fcl::Sphere<S>>(in[3]), at(in, 0));
                    const auto b = object(triangle(in, 4), ::fcl::Transform3<S>::Identity());
-                   double depth = 0;
-                   const bool hit = collide(a, b, ::fcl::GST_LIBCCD, &depth);
-                   Out o(sphere_tri, hit);
-                   o.set("depth", {hit ? -depth : 0.0});
-                   return o.set("distance", {hit ? 0.0 : distance(a, b)}).a;
+                   return proximity(sphere_tri, a, b, true);
                  },
                  53});
   out.push_back({lib, "fcl::collide and fcl::distance (Sphere, Box)", "sphere-box",
@@ -210,11 +216,7 @@ std::vector<Adapter> fcl_adapters() {
                  [sphere_box](const Inputs& in) {
                    const auto a = object(std::make_shared<::fcl::Sphere<S>>(in[3]), at(in, 0));
                    const auto b = object(box(in, 7), at(in, 4));
-                   double depth = 0;
-                   const bool hit = collide(a, b, ::fcl::GST_LIBCCD, &depth);
-                   Out o(sphere_box, hit);
-                   o.set("depth", {hit ? depth : 0.0});
-                   return o.set("distance", {hit ? 0.0 : distance(a, b)}).a;
+                   return proximity(sphere_box, a, b, false);
                  },
                  53});
   out.push_back({lib, "fcl::collide and fcl::distance (Sphere, Sphere)", "sphere-sphere",
@@ -224,11 +226,7 @@ std::vector<Adapter> fcl_adapters() {
                  [sphere_sphere](const Inputs& in) {
                    const auto a = object(std::make_shared<::fcl::Sphere<S>>(in[3]), at(in, 0));
                    const auto b = object(std::make_shared<::fcl::Sphere<S>>(in[7]), at(in, 4));
-                   double depth = 0;
-                   const bool hit = collide(a, b, ::fcl::GST_LIBCCD, &depth);
-                   Out o(sphere_sphere, hit);
-                   o.set("depth", {hit ? depth : 0.0});
-                   return o.set("distance", {hit ? 0.0 : distance(a, b)}).a;
+                   return proximity(sphere_sphere, a, b, false);
                  },
                  53});
   return out;
