@@ -725,10 +725,18 @@ int peers_run(const Args& a) {
   human << "(Rapier not found at build time: scripts/deps.sh installs it with npm into scripts/rapier; rebuild)\n";
 #endif
   nlohmann::json all = nlohmann::json::array();
+  // a row that cannot run (a library's process that cannot start, say) is named and the others
+  // go on: what they computed is written, and the command then fails
+  std::vector<std::string> failed;
   for (const Adapter& ad : adapters()) {
     if (!a.wants(ad.library)) continue;
-    all.push_back(collect(ad, a.n, a.seed, a.threads));
-    print(human, all.back());
+    try {
+      all.push_back(collect(ad, a.n, a.seed, a.threads));
+      print(human, all.back());
+    } catch (const std::exception& e) {
+      failed.push_back(ad.library + ": " + ad.function + ": " + e.what());
+      human << "\n" << ad.library << ": " << ad.function << " could not run: " << e.what() << "\n";
+    }
   }
   // Bullet's float64 build, from its helper beside this executable
   const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
@@ -736,15 +744,19 @@ int peers_run(const Args& a) {
   const bool bullet64 = a.wants("Bullet ");
   if (bullet64 && std::filesystem::exists(helper)) {
     const std::string rows = std::filesystem::temp_directory_path() / ("cdref-peers-" + std::to_string(::getpid()) + ".json");
-    if (!run_helper(helper, {"--n", std::to_string(a.n), "--seed", std::to_string(a.seed), "--threads",
-                             std::to_string(a.threads), "--rows", rows}))
-      throw std::runtime_error("the float64 helper " + helper + " failed");
-    std::ifstream in(rows);
-    const nlohmann::json more = nlohmann::json::parse(in);
-    std::filesystem::remove(rows);
-    for (const auto& r : more) {
-      all.push_back(r);
-      print(human, r);
+    if (run_helper(helper, {"--n", std::to_string(a.n), "--seed", std::to_string(a.seed), "--threads",
+                            std::to_string(a.threads), "--rows", rows})) {
+      std::ifstream in(rows);
+      const nlohmann::json more = nlohmann::json::parse(in);
+      std::filesystem::remove(rows);
+      for (const auto& r : more) {
+        all.push_back(r);
+        print(human, r);
+      }
+    } else {
+      std::filesystem::remove(rows);
+      failed.push_back("the float64 helper " + helper + " failed");
+      human << "\n(Bullet's float64 build: the helper " << helper << " failed)\n";
     }
   } else if (bullet64) {
     human << "\n(Bullet's float64 build: no helper " << helper << ")\n";
@@ -759,6 +771,9 @@ int peers_run(const Args& a) {
       json_file->commit();
     });
   outs.finish();
+  if (!failed.empty())
+    throw std::runtime_error(std::to_string(failed.size()) + " gallery row(s) could not run (the others are written): " +
+                             failed.front());
   return 0;
 }
 
