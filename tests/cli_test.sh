@@ -255,8 +255,8 @@ if ! grep -q "Open3D not found at build time" peers.txt; then
 import json
 d = json.load(open('peers.json'))
 o3 = [p for p in d if p['library'].startswith('Open3D ')]
-assert len(o3) == 2 and all(p['precision'] == 24 for p in o3), [p['function'] for p in o3]
-assert sorted(p['query'] for p in o3) == ['point-triangle', 'ray-triangle-cast']
+assert len(o3) == 3 and all(p['precision'] == 24 for p in o3), [p['function'] for p in o3]
+assert sorted(p['query'] for p in o3) == ['point-triangle', 'ray-fan-cast', 'ray-triangle-cast']
 " || fail "peers Open3D rows"
 fi
 # Rapier's rows where its package was installed (scripts/deps.sh, npm), each at f32 through node

@@ -18,7 +18,7 @@ const Answer none{};
 
 TEST_CASE("Open3D's adapters: hand cases with known answers, and the cases they refuse", "[peers][open3d]") {
   const std::vector<Adapter> all = open3d_adapters();
-  REQUIRE(all.size() == 2);
+  REQUIRE(all.size() == 3);
   for (const Adapter& a : all) CHECK(a.precision == 24);
 
   SECTION("point-triangle: closest point and distance") {
@@ -47,6 +47,12 @@ TEST_CASE("Open3D's adapters: hand cases with known answers, and the cases they 
     CHECK(a.differs(of({-1, 0.25, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0}), none));     // in the plane
     CHECK(a.differs(of({0, 0, -1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 2, 0, 0}), none));        // zero area
     CHECK_FALSE(a.differs(of({0.25, 0.25, -1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0}), none));
+    // on a closed fan (a square pyramid's four sides round the apex), a shot at the apex: no hit
+    // either, a leak at the mesh level
+    const Adapter& f = adapter(all, "ray-fan-cast");
+    const Inputs apex = of({0, 0, 5, 0, 0, -1, 4, 1, 0, 0, 1, 1, 1, -1, 1, -1, -1, -1, -1, -1, -1, 1, -1});
+    CHECK_FALSE(f.run(apex).cls);
+    CHECK_FALSE(f.differs(apex, none));
   }
 }
 

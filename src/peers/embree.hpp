@@ -106,41 +106,6 @@ inline RTCRayHit shoot(const Scene& s, const Inputs& in) {
   return rh;
 }
 
-/// The fan's vertices (the centre, then the ring) and triangles (centre, r_i, r_i+1; closed: also
-/// r_n-1, r_0), from ray-fan-cast's columns (n 6, closed 7, centre 8, r_i 11 + 3i).
-inline void fan(const Inputs& in, std::vector<float>& v, std::vector<unsigned>& tri) {
-  const int n = int(in[6]);
-  if (!(in[6] == double(n)) || n < 2 || n > 8) throw invalid_input("the fan's ring has no 2 to 8 vertices");
-  for (int k = 8; k < 11 + 3 * n; ++k) v.push_back(float(in[std::size_t(k)]));
-  for (unsigned i = 0; i + 1 < unsigned(n); ++i) tri.insert(tri.end(), {0u, 1 + i, 2 + i});
-  if (in[7] != 0) tri.insert(tri.end(), {0u, unsigned(n), 1u});
-}
-
-/// The fan's triangles as rationals, centre and ring (exact helpers for the conventions).
-inline std::vector<std::array<QV, 3>> fan_triangles(const Inputs& in) {
-  const int n = int(in[6]);
-  std::vector<std::array<QV, 3>> t;
-  if (!(in[6] == double(n)) || n < 2 || n > 8) return t;
-  const QV c = qv(in, 8);
-  for (int i = 0; i + 1 < n; ++i) t.push_back({c, qv(in, 11 + 3 * i), qv(in, 14 + 3 * i)});
-  if (in[7] != 0) t.push_back({c, qv(in, 11 + 3 * (n - 1)), qv(in, 11)});
-  return t;
-}
-/// Where Embree's meaning differs on a triangle, for the ray source s + t d: a triangle of zero
-/// area (never hit), the ray in the triangle's plane (never a hit there), and in default mode
-/// (t > tnear = 0) a source in the triangle's plane (a hit at 0 is none).
-inline bool triangle_differs(const std::array<QV, 3>& t, const QV& s, const QV& d, bool robust) {
-  const QV nrm = cross(sub(t[1], t[0]), sub(t[2], t[0]));
-  if (nrm.x == 0 && nrm.y == 0 && nrm.z == 0) return true;
-  return dot(nrm, sub(s, t[0])) == 0 && (dot(nrm, d) == 0 || !robust);
-}
-/// ... and on a fan: on any of its triangles.
-inline bool fan_differs(const Inputs& in, bool robust) {
-  const QV s = qv(in, 0), d = qv(in, 3);
-  for (const auto& t : fan_triangles(in))
-    if (triangle_differs(t, s, d, robust)) return true;
-  return false;
-}
 
 /// Embree's adapters, default mode and robust mode.
 inline std::vector<Adapter> adapters() {

@@ -6,7 +6,8 @@
 // device), one triangle added with AddTriangles, then
 //   CastRays        a ray (origin, direction) against the triangle: t_hit, primitive_uvs (Embree's
 //                   u and v: the barycentric weights of v1 and v2), in Embree's robust mode
-//                   (Open3D sets RTC_SCENE_FLAG_ROBUST) from tnear = 0;
+//                   (Open3D sets RTC_SCENE_FLAG_ROBUST) from tnear = 0; on a fan's triangles
+//                   (ray-fan-cast, the mesh level), with CountIntersections' count of hits;
 //   ComputeClosestPoints and ComputeDistance  a point's closest point on the triangle and its
 //                   distance (Embree's point query with the closest-point routine of Embree's
 //                   tutorials, in float).
@@ -19,6 +20,7 @@
 
 #include <open3d/t/geometry/RaycastingScene.h>
 
+#include <algorithm>
 #include <array>
 #include <cdref/error.hpp>
 #include <cmath>
@@ -104,6 +106,7 @@ std::vector<Adapter> open3d_adapters() {
   const std::string lib = "Open3D " CDREF_OPEN3D_VERSION " (float)";
   const Query ray_tri = fuzz::query_by_name("ray-triangle-cast");
   const Query point_tri = fuzz::query_by_name("point-triangle");
+  const Query ray_fan = fuzz::query_by_name("ray-fan-cast");
   std::vector<Adapter> out;
   out.push_back(
       {lib, "RaycastingScene::CastRays (one triangle)", "ray-triangle-cast",
@@ -112,8 +115,7 @@ std::vector<Adapter> open3d_adapters() {
        "barycentric weights (on Debian no ray hits: Open3D sets each ray's mask to 0 and Debian's Embree tests masks)",
        {"lambda_enter", "u", "v"},
        [](const Inputs& in, const Answer&) {
-         const QV v0 = qv(in, 6), n = cross(sub(qv(in, 9), v0), sub(qv(in, 12), v0));
-         return in_plane(in) || (n.x == 0 && n.y == 0 && n.z == 0);
+         return triangle_differs({qv(in, 6), qv(in, 9), qv(in, 12)}, qv(in, 0), qv(in, 3), true);
        },
        [ray_tri](const Inputs& in) {
          Scene s(in, 6);
@@ -123,6 +125,33 @@ std::vector<Adapter> open3d_adapters() {
          const bool hit = std::isfinite(t);
          Out o(ray_tri, hit);
          if (hit) o.set("lambda_enter", {t}).set("u", {uv[0]}).set("v", {uv[1]});
+         return o.a;
+       },
+       24});
+  out.push_back(
+      {lib, "RaycastingScene::CastRays and CountIntersections (the fan's triangles)", "ray-fan-cast",
+       "Embree's robust mode from tnear = 0 on the mesh: a fan with a triangle of zero area or a ray in a triangle's "
+       "plane is set apart; hits is CountIntersections' count (on Debian no ray hits: every shot of the watertight "
+       "family leaks)",
+       {"lambda_enter", "hits"},
+       [](const Inputs& in, const Answer&) { return fan_differs(in, true); },
+       [ray_fan](const Inputs& in) {
+         std::vector<float> v;
+         std::vector<unsigned> tri;
+         fan(in, v, tri);
+         o3::t::geometry::RaycastingScene scene;
+         o3::core::Tensor vt({std::int64_t(v.size() / 3), 3}, o3::core::Float32);
+         std::copy(v.begin(), v.end(), vt.GetDataPtr<float>());
+         o3::core::Tensor tt({std::int64_t(tri.size() / 3), 3}, o3::core::UInt32);
+         std::copy(tri.begin(), tri.end(), tt.GetDataPtr<std::uint32_t>());
+         scene.AddTriangles(vt, tt);
+         const o3::core::Tensor ray = row(in, 0, 6);
+         auto r = scene.CastRays(ray);
+         const float t = r["t_hit"].GetDataPtr<float>()[0];
+         const int hits = scene.CountIntersections(ray).GetDataPtr<int>()[0];
+         const bool hit = std::isfinite(t);
+         Out o(ray_fan, hit);
+         if (hit) o.set("lambda_enter", {t}).set("hits", {double(hits)});
          return o.a;
        },
        24});

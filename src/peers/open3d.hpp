@@ -8,8 +8,8 @@
 
 namespace cdref::peers {
 
-/// Open3D's adapters: RaycastingScene::CastRays on one triangle, and ComputeClosestPoints with
-/// ComputeDistance from a point to one triangle.
+/// Open3D's adapters: RaycastingScene::CastRays on one triangle and on a fan's triangles (with
+/// CountIntersections), and ComputeClosestPoints with ComputeDistance from a point to one triangle.
 std::vector<Adapter> open3d_adapters();
 
 }  // namespace cdref::peers
