@@ -62,26 +62,28 @@ class Node {
   std::vector<std::vector<double>> ask_many(const std::string& op, const std::vector<std::vector<float>>& args,
                                             std::vector<std::string>& refused) {
     const std::lock_guard<std::mutex> one(m_);
-    if (fd_ < 0) start();
     std::vector<std::vector<double>> out(args.size());
     refused.assign(args.size(), "");
     constexpr std::size_t chunk = 128;  // requests in flight: their replies fit the socket's buffer
-    for (std::size_t first = 0; first < args.size(); first += chunk) {
+    for (std::size_t first = 0; first < args.size();) {
+      if (fd_ < 0) start();
       const std::size_t last = std::min(args.size(), first + chunk);
       std::string lines;
       for (std::size_t k = first; k < last; ++k) lines += request(op, args[k]);
       send_all(lines);
-      for (std::size_t k = first; k < last; ++k) {
+      std::size_t k = first;
+      while (k < last) {
         try {
           out[k] = parse(read_line());
+          ++k;
         } catch (const invalid_input& e) {
-          refused[k] = e.what();
-          if (fd_ < 0) {  // it did not answer: started again, the rest of the chunk asked again
-            for (std::size_t j = k + 1; j < last; ++j) refused[j] = "Rapier's process was started again";
-            break;
-          }
+          refused[k++] = e.what();
+          // no answer in time: the process was stopped; the rest of the chunk is asked again of
+          // a new one
+          if (fd_ < 0) break;
         }
       }
+      first = k;
     }
     return out;
   }
