@@ -20,12 +20,14 @@ root = sys.argv[3] if len(sys.argv) == 4 else os.path.join(os.path.dirname(os.pa
 def run(*args):
     return subprocess.run([cdref, *args], check=True, capture_output=True, text=True).stdout
 
-queries = [line.split(":")[0] for line in run("describe").splitlines() if line and not line.startswith(" ")]
+# (cdref is asked once for the queries and their families, and once per query for every
+# family's cases: each run of it loads every library it links)
+described = run("describe").splitlines()
+queries = [line.split(":")[0] for line in described if line and not line.startswith(" ")]
 
 def families(q):
-    out = run("describe")
     fams, inside = [], False
-    for line in out.splitlines():
+    for line in described:
         if line.startswith(q + ":"):
             inside = True
         elif not line.startswith(" ") and inside:
@@ -61,14 +63,19 @@ def halves_encoded(vals):
 for q in queries:
     d = os.path.join(root, q)
     os.makedirs(d, exist_ok=True)
-    for fam in families(q):
-        lines = run("cases", "--query", q, "--family", fam, "--n", "2", "--seed", "11").splitlines()
-        header = lines[0].split(",")
-        for row in lines[1:]:
-            cells = row.split(",")
-            data = b"".join(b"\xff" + struct.pack("<d", float.fromhex(c)) for c in cells[3:])
-            with open(os.path.join(d, f"{fam}-{cells[0]}.bin"), "wb") as f:
-                f.write(data)
+    # every family's cases in one call: each family's are those `--family F` alone gives, the
+    # case column counting on across families (so a file is named by its place in its family)
+    args = [a for fam in families(q) for a in ("--family", fam)]
+    lines = run("cases", "--query", q, *args, "--n", "2", "--seed", "11").splitlines()
+    seen = {}
+    for row in lines[1:]:
+        cells = row.split(",")
+        fam = cells[1]
+        k = seen.get(fam, 0)
+        seen[fam] = k + 1
+        data = b"".join(b"\xff" + struct.pack("<d", float.fromhex(c)) for c in cells[3:])
+        with open(os.path.join(d, f"{fam}-{k}.bin"), "wb") as f:
+            f.write(data)
     cases = [dyadic(v) for v in exact[q]] if q in exact else [halves_encoded(v) for v in halves(q)]
     for i, data in enumerate(cases):
         with open(os.path.join(d, f"exact-{i}.bin"), "wb") as f:

@@ -6,12 +6,15 @@
 //   cdref --version             the version and the commit
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -25,11 +28,28 @@
 #include <cdref/fuzz/work.hpp>
 #include "casefiles.hpp"
 #include "report.hpp"
+#include "peers/command.hpp"
 #include "scene/scene.hpp"
 
 namespace cdref::peers {
-void add_peers_command(cli::Program& program);  // src/peers/peers.cpp
+// `cdref peers ARGS`: the gallery's program (cdref_peers, beside this executable) run in this
+// process's place as `cdref peers ARGS`, no shell between; it parses, prints and exits as a
+// command of cdref. Returns only by throwing, naming the program that could not run.
+int run_gallery(const std::vector<std::string>& args) {
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
+  const std::string program = exe.substr(0, exe.rfind('/') + 1) + program_name;
+  std::vector<std::string> all = {"cdref", "peers"};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::cout.flush();
+  std::fflush(stdout);
+  ::execv(program.c_str(), argv.data());
+  throw std::runtime_error("peers: cannot run the gallery's program " + program + ": " + std::strerror(errno) +
+                           " (it is built beside cdref: cmake --build --preset release --target cdref_tools)");
 }
+}  // namespace cdref::peers
 
 int run_demo();
 
@@ -159,6 +179,7 @@ int main(int argc, char* argv[]) {
   program
       .add("help", "this help, or a command's (cdref help COMMAND)",
            [&program, help_of] {
+             if (*help_of == "peers") return peers::run_gallery({"--help"});  // (the gallery's own help)
              std::cout << program.help(*help_of);
              return 0;
            })
@@ -170,7 +191,9 @@ int main(int argc, char* argv[]) {
   add_plot_command(program);
   add_report_command(program);
   scene::add_scene_command(program);
-  peers::add_peers_command(program);
+  auto gallery = std::make_shared<Command>(nullptr);
+  *gallery = program.add("peers", peers::description, [gallery] { return peers::run_gallery(gallery->rest()); });
+  gallery->pass_through();
 
   auto dflt = std::make_shared<CampaignCommand>();
   return program.run(argc, argv, [dflt] { return campaign(*dflt, true); });

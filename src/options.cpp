@@ -193,6 +193,13 @@ Command& Command::queries(const std::string& name, std::vector<std::string>& int
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   return *this;
 }
+Command& Command::pass_through() {
+  app_->set_help_flag();  // (--help is the other program's)
+  app_->allow_extras();
+  app_->prefix_command();
+  return *this;
+}
+std::vector<std::string> Command::rest() const { return app_->remaining(); }
 Command& Command::flag(const std::string& name, bool& into, const std::string& help) {
   app_->add_flag(name, into, help);
   return *this;

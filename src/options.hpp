@@ -73,6 +73,10 @@ class Command {
   Command& excludes(const std::vector<std::string>& others);
   // After parsing: whether the option was given.
   bool given(const std::string& name) const;
+  // The command takes every argument after its name unparsed, --help included (a command that
+  // another program answers); after parsing, rest() gives them in order.
+  Command& pass_through();
+  std::vector<std::string> rest() const;
 
  private:
   CLI::App* app_;

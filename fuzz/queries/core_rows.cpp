@@ -22,12 +22,12 @@
 namespace cdref::fuzz::spec {
 
 template <class Spec>
-TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases, Mode m) {
-  return exact_row<Spec, CORE::Expr>(cases, m);
+TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases) {
+  return exact_row<Spec, CORE::Expr, exact_mode<Spec>>(cases);
 }
 
 #define CDREF_CORE_ROW(S, ...) \
-  template TimedRow::Batch core_expr_row<queries::S>(const std::vector<Inputs>&, Mode);
+  template TimedRow::Batch core_expr_row<queries::S>(const std::vector<Inputs>&);
 #define CDREF_CORE_ROWS(fn, list) list(CDREF_CORE_ROW)
 CDREF_QUERY_GROUPS(CDREF_CORE_ROWS)
 

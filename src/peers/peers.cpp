@@ -22,6 +22,7 @@
 // the same names as the float build's.
 #include <Eigen/Geometry>
 #include <cdref/error.hpp>
+#include <cdref/exact/gmp_pool.hpp>
 #include <cdref/fuzz/campaign.hpp>
 #include <cdref/validate.hpp>
 #include <algorithm>
@@ -47,6 +48,7 @@
 #include "../options.hpp"
 #include "../output.hpp"
 #include "adapter.hpp"
+#include "command.hpp"
 #if defined(CDREF_HAVE_ODE) && !defined(CDREF_BULLET64)
 #include "ode.hpp"
 #endif
@@ -781,8 +783,7 @@ void add_peers_command(cli::Program& program) {
   auto a = std::make_shared<Args>();
   cli::Command c = program.add(
       "peers",
-      "GLM's, Bullet's, Eigen's, Embree's, ODE's, FCL's, Open3D's and Rapier's functions on cdref's families at float (ODE, FCL and Bullet's float64 build at double) against the exact "
-      "answer: cases where their convention gives another meaning set apart, misclassifications, p99/max ulps",
+      description,
       [a] { return peers_run(*a); });
   add_options(c, *a);
   c.choices("--library", a->libraries, {"GLM", "Bullet", "Eigen", "Embree", "ODE", "FCL", "Open3D", "Rapier"},
@@ -798,5 +799,15 @@ void add_peers_command(cli::Program& program) {
 int main(int argc, char** argv) {
   cdref::cli::io::init();
   return cdref::peers::helper_main(argc, argv);
+}
+#elif defined(CDREF_PEERS_PROGRAM)
+// cdref_peers, the gallery's program: `cdref peers ARGS` runs it in its own place as
+// `cdref peers ARGS`, so that it parses, prints and exits as cdref's command did.
+int main(int argc, char** argv) {
+  cdref::exact::use_gmp_pool();  // GMP's small blocks cached per thread (gmp_pool.hpp), as in cdref
+  cdref::cli::io::init();
+  cdref::cli::Program program("cdref", "cdref's gallery: run it as cdref peers [OPTIONS]");
+  cdref::peers::add_peers_command(program);
+  return program.run(argc, argv, []() -> int { throw std::runtime_error("the gallery runs as: cdref peers [OPTIONS]"); });
 }
 #endif

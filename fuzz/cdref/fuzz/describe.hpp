@@ -77,26 +77,50 @@ TimedRow::Batch batch_over(std::shared_ptr<std::vector<P>> p, F f) {
   };
 }
 
-template <class Spec, class T>
-TimedRow::Batch book_row(const std::vector<Inputs>& cases, Mode m) {
-  auto p = prepare<Spec, T>(cases);
-  if (m == Mode::classify)
-    return batch_over(p, [](const auto& ab) { return Spec::book_pred(ab.first, ab.second); });
-  return batch_over(p, [m](const auto& ab) { return finish<Spec>(Spec::book(ab.first, ab.second, unsigned(want_all)), m); });
-}
-// The truth's formulation at an exact type T (the book, unless the spec says otherwise).
-template <class Spec, class T>
-TimedRow::Batch exact_row(const std::vector<Inputs>& cases, Mode m) {
-  auto p = prepare<Spec, T>(cases);
-  if (m == Mode::classify)
-    return batch_over(p, [](const auto& ab) { return truth_predicate<Spec>(ab.first, ab.second); });
-  return batch_over(
-      p, [m](const auto& ab) { return finish<Spec>(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m); });
-}
-// exact_row<Spec, CORE::Expr>, instantiated for every query in fuzz/queries/core_rows.cpp alone:
-// the query groups do not include CORE (cdref/exact/core_expr.hpp says what that saves).
+// Whether a query answers values beyond its classification, known when it is compiled: its
+// book's result is not a bool (describe() checks this against its outputs()). A row's two
+// formulations are chosen by it at compile time, so that a row instantiates the one it times.
 template <class Spec>
-TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases, Mode m);
+constexpr bool has_values = !std::is_same_v<
+    decltype(Spec::book(Spec::template make<double>(std::declval<const Inputs&>()).first,
+                        Spec::template make<double>(std::declval<const Inputs&>()).second, 0u)),
+    bool>;
+// The mode of the rows that time a query's full answer: every output, or the classification
+// where it has no other.
+template <class Spec>
+constexpr Mode full_mode = has_values<Spec> ? Mode::full : Mode::classify;
+
+// A row of the book at T in mode M: Mode::classify times book_pred, the others book with every
+// output asked (finish() says what each does with the result).
+template <class Spec, class T, Mode M>
+TimedRow::Batch book_row(const std::vector<Inputs>& cases) {
+  auto p = prepare<Spec, T>(cases);
+  if constexpr (M == Mode::classify)
+    return batch_over(p, [](const auto& ab) { return Spec::book_pred(ab.first, ab.second); });
+  else
+    return batch_over(p, [m = M](const auto& ab) {
+      return finish<Spec>(Spec::book(ab.first, ab.second, unsigned(want_all)), m);
+    });
+}
+// The truth's formulation at an exact type T (the book, unless the spec says otherwise), in mode
+// M as book_row; the exact rows' mode is exact_mode.
+template <class Spec>
+constexpr Mode exact_mode = has_values<Spec> ? Mode::first_rounded : Mode::classify;
+template <class Spec, class T, Mode M>
+TimedRow::Batch exact_row(const std::vector<Inputs>& cases) {
+  auto p = prepare<Spec, T>(cases);
+  if constexpr (M == Mode::classify)
+    return batch_over(p, [](const auto& ab) { return truth_predicate<Spec>(ab.first, ab.second); });
+  else
+    return batch_over(p, [m = M](const auto& ab) {
+      return finish<Spec>(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m);
+    });
+}
+// exact_row<Spec, CORE::Expr, exact_mode<Spec>>, instantiated for every query in
+// fuzz/queries/core_rows.cpp alone: the query groups do not include CORE
+// (cdref/exact/core_expr.hpp says what that saves).
+template <class Spec>
+TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases);
 template <class Spec, class K>
 auto prepare_cgal(const std::vector<Inputs>& cases) {
   using P = decltype(Spec::template cgal_make<K>(cases.front()));
@@ -104,12 +128,15 @@ auto prepare_cgal(const std::vector<Inputs>& cases) {
   for (const Inputs& in : cases) p->push_back(Spec::template cgal_make<K>(in));
   return p;
 }
-template <class Spec, class F>
-TimedRow::Batch stable_row(const std::vector<Inputs>& cases, Mode m) {
+template <class Spec, class F, Mode M>
+TimedRow::Batch stable_row(const std::vector<Inputs>& cases) {
   auto p = prepare<Spec, F>(cases);
-  if (m == Mode::classify)
+  if constexpr (M == Mode::classify)
     return batch_over(p, [](const auto& ab) { return Spec::stable_pred(ab.first, ab.second); });
-  return batch_over(p, [m](const auto& ab) { return finish<Spec>(Spec::stable(ab.first, ab.second, unsigned(want_all)), m); });
+  else
+    return batch_over(p, [m = M](const auto& ab) {
+      return finish<Spec>(Spec::stable(ab.first, ab.second, unsigned(want_all)), m);
+    });
 }
 template <class Spec, class T>
 TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
@@ -131,28 +158,28 @@ TimedRow::Batch robust_row(const std::vector<Inputs>& cases) {
 template <class Spec>
 std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,
                                  const std::string& hard_name) {
-  const bool values = !Spec::outputs().empty();  // outputs beyond the classification
-  const Mode full = values ? Mode::full : Mode::classify;
+  constexpr bool values = has_values<Spec>;  // outputs beyond the classification
+  constexpr Mode full = full_mode<Spec>;
   std::vector<TimedRow> rows;
   // the exact and multiprecision types' rows: the first slow_row_cases only (campaign.hpp)
   const std::vector<Inputs> head(cases.begin(), cases.begin() + std::ptrdiff_t(std::min(cases.size(), slow_row_cases)));
   rows.push_back({"bare (book at double, unchecked)", "", "as book",
                   batch_over(prepare<Spec, double>(cases),
                              [](const auto& ab) { return Spec::bare(ab.first, ab.second); })});
-  rows.push_back({"book float", "book-float", "", book_row<Spec, float>(cases, full)});
-  rows.push_back({"book double", "book-double", "", book_row<Spec, double>(cases, full)});
+  rows.push_back({"book float", "book-float", "", book_row<Spec, float, full>(cases)});
+  rows.push_back({"book double", "book-double", "", book_row<Spec, double, full>(cases)});
   if (values) {
     // a separating-axis query's classification is its full query; its predicate column is
     // another formulation, named as such
     const bool label = Spec::outputs().front().label;
     rows.push_back({label ? std::string("book double, predicate column (") + Spec::pred_name + ")"
                           : std::string("book double, classification"),
-                    "", "as above", book_row<Spec, double>(cases, Mode::classify)});
+                    "", "as above", book_row<Spec, double, Mode::classify>(cases)});
   }
-  rows.push_back({"book long double", "book-long-double", "", book_row<Spec, long double>(cases, full)});
+  rows.push_back({"book long double", "book-long-double", "", book_row<Spec, long double, full>(cases)});
   for (int bits : {128, 256}) {
     const mpfr_precision at{bits};  // inputs made at this precision
-    auto row = book_row<Spec, mpfr::mpreal>(head, full);
+    auto row = book_row<Spec, mpfr::mpreal, full>(head);
     rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured",
                     [row, bits](std::size_t first, std::size_t n, char* out) {
                       const mpfr_precision again{bits};  // and the constants it makes
@@ -161,10 +188,10 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
     rows.back().cases = head.size();
   }
   if constexpr (has_stable<Spec>) {
-    rows.push_back({"stable float", "stable-float", "", stable_row<Spec, float>(cases, full)});
-    rows.push_back({"stable double", "stable-double", "", stable_row<Spec, double>(cases, full)});
+    rows.push_back({"stable float", "stable-float", "", stable_row<Spec, float, full>(cases)});
+    rows.push_back({"stable double", "stable-double", "", stable_row<Spec, double, full>(cases)});
     if (values)
-      rows.push_back({"stable double, classification", "", "as above", stable_row<Spec, double>(cases, Mode::classify)});
+      rows.push_back({"stable double, classification", "", "as above", stable_row<Spec, double, Mode::classify>(cases)});
     rows.push_back({"stable double, unchecked", "", "as above",
                     batch_over(prepare<Spec, double>(cases),
                                [](const auto& ab) { return Spec::stable_bare(ab.first, ab.second); })});
@@ -225,11 +252,10 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   rows.push_back(
       {"staged, classification" + hard_name, "", "exact", batch_over(prepare<Spec, double>(hard), staged_cls), true});
   if (values) rows.push_back({"staged, every output" + hard_name, "", "exact", batch_over(hc, staged_all), true});
-  const Mode exact_mode = values ? Mode::first_rounded : Mode::classify;
   const std::string at = Spec::book_is_truth ? "book at " : "exact formulation at ";
-  rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq>(head, exact_mode)});
-  rows.push_back({at + "Epeck::FT", "", "exact", exact_row<Spec, CGAL::Epeck::FT>(head, exact_mode)});
-  rows.push_back({at + "CORE::Expr", "", "exact", core_expr_row<Spec>(head, exact_mode)});
+  rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq, exact_mode<Spec>>(head)});
+  rows.push_back({at + "Epeck::FT", "", "exact", exact_row<Spec, CGAL::Epeck::FT, exact_mode<Spec>>(head)});
+  rows.push_back({at + "CORE::Expr", "", "exact", core_expr_row<Spec>(head)});
   for (std::size_t j = rows.size() - 3; j < rows.size(); ++j) rows[j].cases = head.size();
   if constexpr (requires(const Inputs& in) { Spec::template cgal_make<CGAL::Epick>(in); }) {
     const auto cgal = [](const auto& ab) { return Spec::cgal(ab.first, ab.second); };
@@ -245,6 +271,9 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
 template <class Spec>
 QueryInfo describe() {
   static_assert(check<Spec>());
+  if (has_values<Spec> == Spec::outputs().empty())
+    throw std::logic_error(std::string(Spec::name) + ": the book's result is a bool exactly when the query has no "
+                           "outputs beyond its classification");
   QueryInfo qi;
   qi.q = Query{Spec::id};
   qi.name = Spec::name;
