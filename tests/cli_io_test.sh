@@ -40,6 +40,15 @@ refused "^cdref: --scale: wants a scale .* not 'abc'" cases --query ray-box --sc
 refused "--scale 5000: family uniform of ray-box has the scales" cases --query ray-box --scale 5000
 refused "^cdref: --n: wants a whole number" plot --query ray-box --family uniform --n -1
 refused "^cdref: --threads: wants a whole number from 1 to 4096, not '999999999999'" peers --threads 999999999999
+# the gallery is a program of its own beside cdref: without it, `cdref peers` fails naming it
+# (a copy of cdref alone in a folder), and `cdref help peers` is the gallery's own help
+mkdir alone && cp "$cdref" alone/cdref
+run alone/cdref peers --n 1
+[ "$st" = 2 ] && grep -q "^cdref: peers: cannot run the gallery's program .*/alone/cdref_peers: No such file" err.txt ||
+  fail "peers without its program: status $st, $(head -c 300 err.txt)"
+run "$cdref" help peers
+[ "$st" = 0 ] && grep -q "^Usage: cdref peers \[OPTIONS\]" out.txt && grep -q -- "--library" out.txt ||
+  fail "help peers: $st $(head -3 out.txt err.txt)"
 refused "^cdref: --seed: wants a whole number from 0 to 18446744073709551615, not '-1'" campaign --seed -1
 refused "--scale 5000: no chosen family has this scale" campaign --query ray-box --scale 5000
 refused "not expected: extra" describe extra
