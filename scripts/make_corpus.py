@@ -21,7 +21,7 @@ def run(*args):
     return subprocess.run([cdref, *args], check=True, capture_output=True, text=True).stdout
 
 # (cdref is asked once for the queries and their families, and once per query for every
-# family's cases: each run of it loads every library it links)
+# family's cases, not once per family)
 described = run("describe").splitlines()
 queries = [line.split(":")[0] for line in described if line and not line.startswith(" ")]
 

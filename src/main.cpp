@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -36,8 +35,7 @@ namespace cdref::peers {
 // process's place as `cdref peers ARGS`, no shell between; it parses, prints and exits as a
 // command of cdref. Returns only by throwing, naming the program that could not run.
 int run_gallery(const std::vector<std::string>& args) {
-  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
-  const std::string program = exe.substr(0, exe.rfind('/') + 1) + program_name;
+  const std::string program = beside_this_program(program_name);
   std::vector<std::string> all = {"cdref", "peers"};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;

@@ -3,6 +3,9 @@
 // `cdref peers ARGS` runs in its place as `cdref peers ARGS`.
 #pragma once
 
+#include <filesystem>
+#include <string>
+
 namespace cdref::peers {
 
 // The gallery's line in `cdref --help` and its own help.
@@ -13,5 +16,12 @@ inline constexpr const char* description =
 
 // The gallery's program, beside cdref.
 inline constexpr const char* program_name = "cdref_peers";
+
+// The path of the program `name` in the folder of the running executable (where cdref's build
+// and install put cdref, the gallery's program and its float64 helper side by side).
+inline std::string beside_this_program(const std::string& name) {
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
+  return exe.substr(0, exe.rfind('/') + 1) + name;
+}
 
 }  // namespace cdref::peers

@@ -741,8 +741,7 @@ int peers_run(const Args& a) {
     }
   }
   // Bullet's float64 build, from its helper beside this executable
-  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
-  const std::string helper = exe.substr(0, exe.rfind('/') + 1) + "cdref_peers_bullet64";
+  const std::string helper = beside_this_program("cdref_peers_bullet64");
   const bool bullet64 = a.wants("Bullet ");
   if (bullet64 && std::filesystem::exists(helper)) {
     const std::string rows = std::filesystem::temp_directory_path() / ("cdref-peers-" + std::to_string(::getpid()) + ".json");
