@@ -10,6 +10,13 @@
 
 namespace cdref::fuzz {
 
+QueryInfo::QueryInfo() = default;
+QueryInfo::QueryInfo(const QueryInfo&) = default;
+QueryInfo::QueryInfo(QueryInfo&&) noexcept = default;
+QueryInfo& QueryInfo::operator=(const QueryInfo&) = default;
+QueryInfo& QueryInfo::operator=(QueryInfo&&) noexcept = default;
+QueryInfo::~QueryInfo() = default;
+
 namespace {
 
 const std::vector<QueryInfo>& registry() {

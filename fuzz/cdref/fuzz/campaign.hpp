@@ -252,6 +252,16 @@ struct QueryInfo {
   // the patched float variants engines ship, the book at an exact type where it is not the
   // truth. Each has `queries` = {q}; variants of several queries may share a name.
   std::vector<Implementation> variants;
+
+  // A descriptor's construction, copies, moves and destruction (about forty members, most of
+  // them std::function) are compiled once, in fuzz/queries.cpp, not in every unit that
+  // describes a query.
+  QueryInfo();
+  QueryInfo(const QueryInfo&);                 // a copy of every member
+  QueryInfo(QueryInfo&&) noexcept;             // every member moved
+  QueryInfo& operator=(const QueryInfo&);      // every member copied
+  QueryInfo& operator=(QueryInfo&&) noexcept;  // every member moved
+  ~QueryInfo();
 };
 const QueryInfo& info(Query q);
 const std::vector<Query>& all_queries();
