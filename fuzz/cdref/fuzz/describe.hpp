@@ -288,37 +288,29 @@ QueryInfo describe() {
   qi.book_is_truth = Spec::book_is_truth;
   if constexpr (requires { Spec::mesh_level; }) qi.mesh_level = Spec::mesh_level;
   qi.book = [](int precision, const Inputs& in) {
-    if (precision == 24) return book_at<Spec, float, float>(in, true);
-    if (precision == 64) return book_at<Spec, long double, long double>(in, true);
-    return book_at<Spec, double, double>(in, true);
+    return at_precision(precision, [&in]<class F>(F*) { return book_at<Spec, F, F>(in, true); });
   };
   qi.book_classification = [](int precision, const Inputs& in) {
-    if (precision == 24) return book_at<Spec, float, float>(in, false);
-    if (precision == 64) return book_at<Spec, long double, long double>(in, false);
-    return book_at<Spec, double, double>(in, false);
+    return at_precision(precision, [&in]<class F>(F*) { return book_at<Spec, F, F>(in, false); });
   };
   qi.book_classification_block = [](int precision, const Inputs* in, std::size_t n, Verdict* out) {
-    if (precision == 24) return book_classification_block<Spec, float>(in, n, out);
-    if (precision == 64) return book_classification_block<Spec, long double>(in, n, out);
-    return book_classification_block<Spec, double>(in, n, out);
+    at_precision(precision, [&]<class F>(F*) { book_classification_block<Spec, F>(in, n, out); });
   };
   qi.robust = [](int precision, const Inputs& in) {
-    if (precision == 24) return robust_at<Spec, float>(in);
-    if (precision == 64) return robust_at<Spec, long double>(in);
-    return robust_at<Spec, double>(in);
+    return at_precision(precision, [&in]<class F>(F*) { return robust_at<Spec, F>(in); });
   };
+  // (the stable tier at float and double: at_precision<false>)
   if constexpr (has_stable<Spec>)
     qi.stable = [](int precision, const Inputs& in) {
-      return precision == 24 ? stable_at<Spec, float>(in) : stable_at<Spec, double>(in);
+      return at_precision<false>(precision, [&in]<class F>(F*) { return stable_at<Spec, F>(in); });
     };
   if constexpr (has_stable<Spec>)
     qi.stable_classification = [](int precision, const Inputs& in) {
-      return precision == 24 ? stable_at<Spec, float>(in, false) : stable_at<Spec, double>(in, false);
+      return at_precision<false>(precision, [&in]<class F>(F*) { return stable_at<Spec, F>(in, false); });
     };
   if constexpr (has_stable<Spec>)
     qi.stable_classification_block = [](int precision, const Inputs* in, std::size_t n, Verdict* out) {
-      return precision == 24 ? stable_classification_block<Spec, float>(in, n, out)
-                             : stable_classification_block<Spec, double>(in, n, out);
+      at_precision<false>(precision, [&]<class F>(F*) { stable_classification_block<Spec, F>(in, n, out); });
     };
   qi.book_exact = [](Exact t, const Inputs& in) {
     return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)

@@ -452,28 +452,50 @@ template <class Spec, class T>
   }
 }
 
-// certified: T is exact or certifies every decision it takes (oracle::Bounded2 throws
-// oracle::uncertain rather than decide a sign it cannot), so the predicate is the full
-// query's classification (the two formulations agree exactly: tested) and is not evaluated again.
-template <class Spec, class T, class F>
-Answer book_at(const Inputs& in, bool values, bool certified = false) {
+// One evaluation of a query on a case's columns, the shape of every tier's: the primitives made
+// at T, `full(a, b, want)` (the full query, every output asked when `values`) put into the answer
+// with its values rounded to F, and `pred(a, b)` in the predicate column. `certified`: T is exact
+// or certifies every decision it takes (oracle::Bounded2 throws oracle::uncertain rather than
+// decide a sign it cannot), so the predicate is the full query's classification (the two
+// formulations agree exactly: tested) and is not evaluated again. Columns T cannot hold
+// (infinite or NaN at an exact or bounded type) are refused first (require_finite).
+template <class Spec, class T, class F, class Full, class Pred>
+[[gnu::always_inline]] inline Answer answer_at(const Inputs& in, bool values, bool certified, const Full& full,
+                                               const Pred& pred) {
   require_finite<Spec, T>(in);
   const auto [a, b] = Spec::template make<T>(in);
   Answer r;
-  put<Spec, F>(r, Spec::book(a, b, values ? unsigned(want_all) : 0u), values);
-  r.pred = certified ? r.cls : bool(Spec::book_pred(a, b));
+  put<Spec, F>(r, full(a, b, values ? unsigned(want_all) : 0u), values);
+  r.pred = certified ? r.cls : bool(pred(a, b));
   return r;
+}
+
+// The book at T.
+template <class Spec, class T, class F>
+Answer book_at(const Inputs& in, bool values, bool certified = false) {
+  return answer_at<Spec, T, F>(
+      in, values, certified, [](const auto& a, const auto& b, unsigned want) { return Spec::book(a, b, want); },
+      [](const auto& a, const auto& b) { return Spec::book_pred(a, b); });
 }
 
 // The truth's formulation at T (the book, unless the spec says otherwise).
 template <class Spec, class T, class F>
 Answer truth_at(const Inputs& in, bool values, bool certified = false) {
-  require_finite<Spec, T>(in);
-  const auto [a, b] = Spec::template make<T>(in);
-  Answer r;
-  put<Spec, F>(r, truth_formulation<Spec>(a, b, values ? unsigned(want_all) : 0u), values);
-  r.pred = certified ? r.cls : truth_predicate<Spec>(a, b);
-  return r;
+  return answer_at<Spec, T, F>(
+      in, values, certified,
+      [](const auto& a, const auto& b, unsigned want) { return truth_formulation<Spec>(a, b, want); },
+      [](const auto& a, const auto& b) { return truth_predicate<Spec>(a, b); });
+}
+
+// The float type of a precision (24: float, 64: long double where the evaluation has one, any
+// other: double), handed to f as a null pointer of that type: the one dispatch of the
+// evaluations that report in a case's precision.
+template <bool long_double = true, class Fn>
+decltype(auto) at_precision(int precision, const Fn& f) {
+  if (precision == 24) return f(static_cast<float*>(nullptr));
+  if constexpr (long_double)
+    if (precision == 64) return f(static_cast<long double*>(nullptr));
+  return f(static_cast<double*>(nullptr));
 }
 
 template <class Spec>
@@ -507,11 +529,9 @@ Answer robust_at(const Inputs& in) {
 // The stable tier (float/cdref/stable): the full query and its classification alone.
 template <class Spec, class F>
 Answer stable_at(const Inputs& in, bool values = true) {
-  const auto [a, b] = Spec::template make<F>(in);
-  Answer r;
-  put<Spec, F>(r, Spec::stable(a, b, values ? unsigned(want_all) : 0u), values);
-  r.pred = Spec::stable_pred(a, b);
-  return r;
+  return answer_at<Spec, F, F>(
+      in, values, false, [](const auto& a, const auto& b, unsigned want) { return Spec::stable(a, b, want); },
+      [](const auto& a, const auto& b) { return Spec::stable_pred(a, b); });
 }
 // A block of cases' verdicts: set(in[k], v) fills v's classification and predicate; inputs it
 // refuses (invalid_input) leave v refused and nothing else.
@@ -557,9 +577,7 @@ constexpr bool has_stable = requires(const Inputs& in) {
 
 template <class Spec>
 Answer truth_of(const Inputs& in, int precision) {
-  if (precision == 24) return truth_at<Spec, CGAL::Gmpq, float>(in, true);
-  if (precision == 64) return truth_at<Spec, CGAL::Gmpq, long double>(in, true);
-  return truth_at<Spec, CGAL::Gmpq, double>(in, true);
+  return at_precision(precision, [&in]<class F>(F*) { return truth_at<Spec, CGAL::Gmpq, F>(in, true); });
 }
 
 // The truth's formulation run on oracle::Bounded2 (a double word with a rigorous error
@@ -580,12 +598,9 @@ constexpr bool has_oracle_formulation = requires(const Inputs& in) {
 template <class Spec, class T, class F>
   requires has_oracle_formulation<Spec>
 Answer formulation_at(const Inputs& in) {
-  require_finite<Spec, T>(in);
-  const auto [a, b] = Spec::template make<T>(in);
-  Answer r;
-  put<Spec, F>(r, Spec::oracle_formulation(a, b, unsigned(want_all)), true);
-  r.pred = r.cls;
-  return r;
+  return answer_at<Spec, T, F>(
+      in, true, true, [](const auto& a, const auto& b, unsigned want) { return Spec::oracle_formulation(a, b, want); },
+      [](const auto&, const auto&) { return false; });
 }
 // Where the spec also has `oracle_formulation_first(a, b)` (at double), the cases it names try the other
 // formulation first: those where the truth's own is seldom certain, whose failed attempt (an
@@ -742,9 +757,8 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
   if constexpr (has_oracle_rounded<Spec>)
     if (Answer r; precision == 53 && oracle_rounded_of<Spec>(in, r)) return r;
   try {
-    return precision == 24   ? oracle_formulation_at<Spec, oracle::Bounded2, float>(in)
-           : precision == 64 ? oracle_formulation_at<Spec, oracle::Bounded2, long double>(in)
-                             : oracle_formulation_at<Spec, oracle::Bounded2, double>(in);
+    return at_precision(precision,
+                        [&in]<class F>(F*) { return oracle_formulation_at<Spec, oracle::Bounded2, F>(in); });
   } catch (const oracle::uncertain&) {
   }
   if (exact_used) *exact_used = true;
@@ -775,9 +789,7 @@ Answer staged_truth_of(const Inputs& in, int precision, int* stage) {
     return staged::evaluate<first>([&in]<class T>(staged::at<T>) { return truth_at<Spec, T, F>(in, true, true); },
                                    &st);
   };
-  const Answer r = precision == 24   ? run(static_cast<float*>(nullptr))
-                   : precision == 64 ? run(static_cast<long double*>(nullptr))
-                                     : run(static_cast<double*>(nullptr));
+  const Answer r = at_precision(precision, run);
   if (stage) *stage = int(st);
   return r;
 }

@@ -198,8 +198,8 @@ QueryInfo describe_with_truth_api() {
   void attach_truth_api<queries::Spec>(QueryInfo & qi) {                                                      \
     qi.truth_api_check = [](const Inputs& in, int precision) {                                                \
       const auto call = [](const auto& a, const auto& b, truth::Path p) { return truth::fn(a, b, p); };       \
-      return precision == 24 ? truth_api_check<queries::Spec, float>(in, call)                                \
-                             : truth_api_check<queries::Spec, double>(in, call);                              \
+      return at_precision<false>(precision,                                                                   \
+                                 [&]<class F>(F*) { return truth_api_check<queries::Spec, F>(in, call); });   \
     };                                                                                                        \
     qi.timed_rows = [base = qi.timed_rows](const std::vector<Inputs>& cases, const std::vector<Inputs>& hard,   \
                                            const std::string& hard_name) {                                    \
