@@ -1,8 +1,8 @@
 // fuzz/queries/group_triangle_casts.hpp - the group of the casts on a triangle and on a fan of
 // triangles (Section 3.4): its specs and its list, one X(spec, Result, name, A, B) line a query
 // (groups.hpp says what the fields are). Adding a query to the group is its spec's include and its
-// line here; triangle_casts.cpp describes the group and core_rows.cpp gives each query its
-// CORE::Expr row.
+// line here; unit_triangles.cpp describes the group (with the others it shares most with) and
+// core_rows.cpp gives each query its CORE::Expr row.
 #pragma once
 
 #include "fan_casts.hpp"

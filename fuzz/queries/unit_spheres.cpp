@@ -1,0 +1,10 @@
+// fuzz/queries/unit_spheres.cpp - the descriptors of the sphere queries (Section 3.1),
+// sphere-box and point-triangle: one of the three translation units that instantiate the exact
+// types for the queries (groups.hpp says which groups each holds and why).
+#include <cdref/fuzz/describe.hpp>
+#include <cdref/fuzz/truth_api.hpp>
+
+#include "group_spheres.hpp"
+#include "groups.hpp"
+
+CDREF_GROUP_UNIT(sphere_queries, CDREF_SPHERE_QUERIES)
