@@ -20,7 +20,7 @@
 //   unit_spheres.cpp    spheres (the sphere queries, sphere-box, point-triangle)
 // Measured (g++ 12.2 -O3 with the units' precompiled header, user CPU, two compiles side by side,
 // 2026-12-05): the nine groups in units of their own took 349 s, these three 242 s (116, 70 and
-// 56 s); all nine in one unit 237 s, which would leave one core idle for most of the build.
+// 56 s); all nine in one unit 237 s, one job of four minutes that would hold up the whole build.
 //
 // What an edit recompiles: a spec's header (or an algorithm only its queries include), its
 // unit, core_rows.cpp and the test units whose files include that spec (the hand filters'
