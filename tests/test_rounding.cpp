@@ -415,7 +415,9 @@ TEST_CASE("oracle::Bounded2 certifies square roots that the double filter cannot
 
 TEST_CASE("GMP's block cache: installed, exact sizes kept, contents moved, threads and their ends", "[rounding][gmp-pool]") {
   namespace gp = cdref::exact::gmp_pool_detail;
-  // tests/main.cpp installs it, as cdref's main does
+  // tests/main.cpp's listener installs it when the run starts, as cdref's main does (and sets
+  // MPFR's default precision)
+  REQUIRE(mpfr::mpreal::get_default_prec() == 128);
   void* (*a)(std::size_t) = nullptr;
   void* (*r)(void*, std::size_t, std::size_t) = nullptr;
   void (*f)(void*, std::size_t) = nullptr;

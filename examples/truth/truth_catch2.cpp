@@ -1,5 +1,5 @@
-// examples/truth/truth_catch2.cpp - the exact answer for one input, in a Catch2 test.
-#define CATCH_CONFIG_MAIN
+// examples/truth/truth_catch2.cpp - the exact answer for one input, in a Catch2 test (Catch2's
+// runner comes from the library target Catch2::Catch2WithMain, CMakeLists.txt).
 #include <catch2/catch.hpp>
 #include <cdref/testing/catch2.hpp>
 #include <cmath>

@@ -1,7 +1,7 @@
 // examples/validate/test_my_raycast.cpp - your float code checked by cdref, in your own tests.
 // A textbook ray-sphere cast in float (as a game would ship it) and a careful one in double,
-// each validated against the exact answer with cdref::validate.
-#define CATCH_CONFIG_MAIN
+// each validated against the exact answer with cdref::validate. (Catch2's runner comes from the
+// library target Catch2::Catch2WithMain, CMakeLists.txt.)
 #include <catch2/catch.hpp>
 #include <cdref/validate.hpp>
 #include <cmath>
