@@ -647,6 +647,31 @@ TEMPLATE_TEST_CASE("triangle-triangle (3.4) on hard cases", "[triangle-triangle]
   }
 }
 
+TEST_CASE("triangle-triangle's book at double where the products overflow: a cut of NaN signs takes no point, "
+          "and the answer is the same every time",
+          "[triangle-triangle]") {
+  // A pair of the magnitude family at 1e150 (a campaign's case): nA and nB near 1e300, the plane
+  // distances inf - inf = NaN, so neither cut takes a point; the ends were once left
+  // uninitialized and the campaign's p and q differed from run to run.
+  const Triangle<double> a{{Vec3<double>(-0x1.eddc661ad6aa1p+496, -0x1.37b6d394e16d8p+497, -0x1.d0dccedb1e6ddp+497),
+                            Vec3<double>(0x1.1de249ca26ce2p+496, 0x1.081554c679019p+499, 0x1.f70ffbac40a5bp+497),
+                            Vec3<double>(0x1.15a32323264a6p+493, 0x1.1f7b5b1254a31p+499, 0x1.74e460fca4a22p+498)}};
+  const Triangle<double> b{{Vec3<double>(0x1.66c6a8c46b7e7p+498, 0x1.28e2db8d80913p+499, -0x1.f3d4a70d7e419p+496),
+                            Vec3<double>(0x1.5d7fa30491fccp+497, 0x1.5b460e73b2d9fp+498, 0x1.ede7abbd899b2p+498),
+                            Vec3<double>(-0x1.b73b3a4d87162p+497, 0x1.372c077fce88cp+499, 0x1.006d13219f668p+498)}};
+  const auto r = book::intersect(a, b);
+  REQUIRE(r.intersect);
+  REQUIRE_FALSE(r.coplanar);
+  for (int i = 0; i < 3; ++i) {
+    REQUIRE(r.p[i] == 0.0);
+    REQUIRE(r.q[i] == 0.0);
+  }
+  // the exact answer: they meet, on a segment far from the origin
+  const auto e = book::intersect(convert_prim<CGAL::Gmpq>(a), convert_prim<CGAL::Gmpq>(b));
+  REQUIRE(e.intersect);
+  REQUIRE(std::fabs(CGAL::to_double(e.p[0])) > 0x1p+490);
+}
+
 TEMPLATE_TEST_CASE("robust triangle-triangle: exact classification and accurate ends on the hard cases",
                    "[triangle-triangle][robust]", float, double, long double) {
   using F = TestType;

@@ -30,7 +30,10 @@
 ///
 /// Floating point: the cut points divide by dA_i - dA_j; two nearly parallel triangles, or a
 /// vertex a hair from the other plane, leave the signs and the overlap to rounding (and an
-/// absolute epsilon, as in Moller's code, misjudges every pair whose size is far from 1).
+/// absolute epsilon, as in Moller's code, misjudges every pair whose size is far from 1). Where
+/// the products overflow (coordinates past ~1e100 at double) the signs can be NaN and a cut then
+/// takes no point at all: its ends and its extent along D stay 0, so such a pair is answered as
+/// meeting at p = q = 0 (every run alike; the exact answer grades it).
 #pragma once
 
 #include "common.hpp"
@@ -163,7 +166,8 @@ TriangleIntersection<T> intersect_triangles(const Triangle<T>& A, const Triangle
     return r;
   }
   const Vec3<T> D = nA.cross(nB);
-  Vec3<T> a0, a1, b0, b1;
+  // (a cut that takes no point, its signs NaN, leaves these as they start: the header says)
+  Vec3<T> a0 = zero_vec<T>(), a1 = zero_vec<T>(), b0 = zero_vec<T>(), b1 = zero_vec<T>();
   T ta0(0), ta1(0), tb0(0), tb1(0);
   cut(A, dA, D, a0, a1, ta0, ta1);
   cut(B, dB, D, b0, b1, tb0, tb1);
