@@ -1,8 +1,9 @@
 // fuzz/queries/group_spheres.hpp - the group of the sphere queries (Section 3.1), sphere-box and
 // point-triangle (the light closest-point queries): its specs and its list, one X(spec, Result,
 // name, A, B) line a query (groups.hpp says what the fields are). Adding a query to the group is
-// its spec's include and its line here; unit_spheres.cpp describes the group (a unit of its own:
-// it shares little with the others) and core_rows.cpp gives each query its CORE::Expr row.
+// its spec's include and its line here; unit_spheres.cpp describes the group (a unit of its own: it
+// shares little with the others) and exact_paths.cpp compiles each query's evaluations at the exact
+// types.
 #pragma once
 
 #include "point_triangle.hpp"

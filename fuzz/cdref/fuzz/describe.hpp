@@ -10,6 +10,10 @@
 #include <cdref/fuzz/spec.hpp>
 #include <memory>
 
+namespace CORE {
+class Expr;  // (cdref/exact/core_expr.hpp: its rows are compiled in one unit, below)
+}
+
 namespace cdref::fuzz::spec {
 
 // ---- the rows of the cost report ----
@@ -116,11 +120,14 @@ TimedRow::Batch exact_row(const std::vector<Inputs>& cases) {
       return finish<Spec>(truth_formulation<Spec>(ab.first, ab.second, unsigned(want_all)), m);
     });
 }
-// exact_row<Spec, CORE::Expr, exact_mode<Spec>>, instantiated for every query in
-// fuzz/queries/core_rows.cpp alone: the query groups do not include CORE
-// (cdref/exact/core_expr.hpp says what that saves).
+// exact_row<Spec, T, exact_mode<Spec>> for T = CGAL::Gmpq, CGAL::Epeck::FT and CORE::Expr, and
+// the book's row at MPFR (mode full_mode<Spec>), defined for every query in
+// fuzz/queries/exact_paths.cpp alone, with the other evaluations at the exact types (spec.hpp);
+// the query groups do not include CORE (cdref/exact/core_expr.hpp says what that saves).
+template <class Spec, class T>
+TimedRow::Batch exact_type_row(const std::vector<Inputs>& cases);
 template <class Spec>
-TimedRow::Batch core_expr_row(const std::vector<Inputs>& cases);
+TimedRow::Batch mpfr_book_row(const std::vector<Inputs>& cases);
 template <class Spec, class K>
 auto prepare_cgal(const std::vector<Inputs>& cases) {
   using P = decltype(Spec::template cgal_make<K>(cases.front()));
@@ -179,7 +186,7 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
   rows.push_back({"book long double", "book-long-double", "", book_row<Spec, long double, full>(cases)});
   for (int bits : {128, 256}) {
     const mpfr_precision at{bits};  // inputs made at this precision
-    auto row = book_row<Spec, mpfr::mpreal, full>(head);
+    auto row = mpfr_book_row<Spec>(head);
     rows.push_back({"book MPFR-" + std::to_string(bits), "", "not measured",
                     [row, bits](std::size_t first, std::size_t n, char* out) {
                       const mpfr_precision again{bits};  // and the constants it makes
@@ -253,9 +260,9 @@ std::vector<TimedRow> timed_rows(const std::vector<Inputs>& cases, const std::ve
       {"staged, classification" + hard_name, "", "exact", batch_over(prepare<Spec, double>(hard), staged_cls), true});
   if (values) rows.push_back({"staged, every output" + hard_name, "", "exact", batch_over(hc, staged_all), true});
   const std::string at = Spec::book_is_truth ? "book at " : "exact formulation at ";
-  rows.push_back({at + "Gmpq", "", "exact", exact_row<Spec, CGAL::Gmpq, exact_mode<Spec>>(head)});
-  rows.push_back({at + "Epeck::FT", "", "exact", exact_row<Spec, CGAL::Epeck::FT, exact_mode<Spec>>(head)});
-  rows.push_back({at + "CORE::Expr", "", "exact", core_expr_row<Spec>(head)});
+  rows.push_back({at + "Gmpq", "", "exact", exact_type_row<Spec, CGAL::Gmpq>(head)});
+  rows.push_back({at + "Epeck::FT", "", "exact", exact_type_row<Spec, CGAL::Epeck::FT>(head)});
+  rows.push_back({at + "CORE::Expr", "", "exact", exact_type_row<Spec, CORE::Expr>(head)});
   for (std::size_t j = rows.size() - 3; j < rows.size(); ++j) rows[j].cases = head.size();
   if constexpr (requires(const Inputs& in) { Spec::template cgal_make<CGAL::Epick>(in); }) {
     const auto cgal = [](const auto& ab) { return Spec::cgal(ab.first, ab.second); };
@@ -313,11 +320,10 @@ QueryInfo describe() {
       at_precision<false>(precision, [&]<class F>(F*) { stable_classification_block<Spec, F>(in, n, out); });
     };
   qi.book_exact = [](Exact t, const Inputs& in) {
-    return t == Exact::gmpq ? book_at<Spec, CGAL::Gmpq, double>(in, true)
-                            : book_at<Spec, CGAL::Epeck::FT, double>(in, true);
+    return t == Exact::gmpq ? exact_book_at<Spec, CGAL::Gmpq>(in) : exact_book_at<Spec, CGAL::Epeck::FT>(in);
   };
   qi.truth = truth_of<Spec>;
-  qi.truth_classification = [](const Inputs& in) { return truth_at<Spec, CGAL::Gmpq, double>(in, false); };
+  qi.truth_classification = [](const Inputs& in) { return gmpq_truth_at<Spec, double>(in, false, false); };
   qi.oracle_truth = oracle_truth_of<Spec>;
   qi.oracle_classify = oracle_classify_of<Spec>;
   qi.oracle_classify_block = oracle_classify_block_of<Spec>;

@@ -396,6 +396,34 @@ bool truth_predicate(const A& a, const B& b) {
     return bool(Spec::truth_pred(a, b));
 }
 
+// ---- the evaluations at the exact types, compiled in one unit of their own ----
+// The evaluations below reach a query at CGAL::Gmpq (and CGAL::Epeck::FT) only through these
+// functions (and the rows and the truth API's exact path through theirs, describe.hpp and
+// truth_api.hpp), declared here and defined for every query in fuzz/queries/exact_paths.cpp
+// alone, compiled at -O1: their time is GMP's and CGAL's arithmetic, not the inliner's, and
+// at -O3 each query unit spent about a quarter of its compile on them. (a hand-written
+// oracle's own exact stage stays with its query)
+// The primitives of a case at double.
+template <class Spec>
+using DoublePair = decltype(Spec::template make<double>(std::declval<const Inputs&>()));
+template <class Spec>
+using DoubleA = typename DoublePair<Spec>::first_type;
+template <class Spec>
+using DoubleB = typename DoublePair<Spec>::second_type;
+// truth_at<Spec, CGAL::Gmpq, F> (F = float, double, long double).
+template <class Spec, class F>
+Answer gmpq_truth_at(const Inputs& in, bool values, bool certified);
+// book_at<Spec, T, double>(in, true) for T = CGAL::Gmpq and CGAL::Epeck::FT.
+template <class Spec, class T>
+Answer exact_book_at(const Inputs& in);
+// The classification of the truth's formulation at CGAL::Gmpq, on a case's double primitives.
+template <class Spec>
+bool gmpq_classification(const DoubleA<Spec>& a, const DoubleB<Spec>& b);
+// A cast's lambda_enter: the truth's formulation at CGAL::Gmpq asked for it alone, rounded
+// correctly to double (on a hit).
+template <class Spec>
+double gmpq_enter(const Inputs& in);
+
 // ---- the classification oracle ----
 // A spec's own `oracle(a, b, Stage*)` (its hand-written filters: a fast path) where it has
 // one, else the generic staged path on its primitives (cdref/exact/staged.hpp): the truth's
@@ -410,7 +438,11 @@ template <class Spec, class A, class B>
 bool staged_classification(const A& a, const B& b, staged::Stage* st) {
   return staged::evaluate(
       [&]<class T>(staged::at<T>) {
-        return classification_of(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
+        if constexpr (std::is_same_v<T, CGAL::Gmpq> && std::is_same_v<A, DoubleA<Spec>> &&
+                      std::is_same_v<B, DoubleB<Spec>>)
+          return gmpq_classification<Spec>(a, b);
+        else
+          return classification_of(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
       },
       st);
 }
@@ -577,7 +609,7 @@ constexpr bool has_stable = requires(const Inputs& in) {
 
 template <class Spec>
 Answer truth_of(const Inputs& in, int precision) {
-  return at_precision(precision, [&in]<class F>(F*) { return truth_at<Spec, CGAL::Gmpq, F>(in, true); });
+  return at_precision(precision, [&in]<class F>(F*) { return gmpq_truth_at<Spec, F>(in, true, false); });
 }
 
 // The truth's formulation run on oracle::Bounded2 (a double word with a rigorous error
@@ -679,7 +711,7 @@ oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
     } catch (const oracle::uncertain&) {
     }
     if (exact_used) *exact_used = true;
-    e.lambda_enter = enter_at(static_cast<CGAL::Gmpq*>(nullptr));
+    e.lambda_enter = gmpq_enter<Spec>(in);
     return e;
   }
 }
@@ -786,8 +818,14 @@ Answer staged_truth_of(const Inputs& in, int precision, int* stage) {
   staged::Stage st;
   const auto run = [&]<class F>(F*) {
     constexpr auto first = std::is_same_v<F, float> ? staged::Stage::bounded : staged::Stage::word;
-    return staged::evaluate<first>([&in]<class T>(staged::at<T>) { return truth_at<Spec, T, F>(in, true, true); },
-                                   &st);
+    return staged::evaluate<first>(
+        [&in]<class T>(staged::at<T>) {
+          if constexpr (std::is_same_v<T, CGAL::Gmpq>)
+            return gmpq_truth_at<Spec, F>(in, true, true);
+          else
+            return truth_at<Spec, T, F>(in, true, true);
+        },
+        &st);
   };
   const Answer r = at_precision(precision, run);
   if (stage) *stage = int(st);
@@ -809,7 +847,7 @@ void oracle_classify_block_of(const Inputs* in, std::size_t n, Verdict* out) {
 // alone, apart from any rounding.
 template <class Spec>
 Implementation book_exact_variant() {
-  return {"book-exact", 53, [](Query, const Inputs& in) { return book_at<Spec, CGAL::Gmpq, double>(in, true); },
+  return {"book-exact", 53, [](Query, const Inputs& in) { return exact_book_at<Spec, CGAL::Gmpq>(in); },
           {Query{Spec::id}}};
 }
 

@@ -40,10 +40,15 @@ using TruthResult = decltype(rounded<F>(
     truth_formulation<Spec>(std::declval<const A&>(), std::declval<const B&>(), unsigned(want_all))));
 
 // Step 4 alone: the truth's formulation at CGAL::Gmpq, each field rounded to F. a and b are
-// checked (finite, in the query's domain) double primitives.
+// checked (finite, in the query's domain) double primitives. Defined for every query with the
+// other evaluations at the exact types, in fuzz/queries/exact_paths.cpp (spec.hpp says why).
+template <class Spec, class F>
+TruthResult<Spec, F, DoubleA<Spec>, DoubleB<Spec>> gmpq_result(const DoubleA<Spec>& a, const DoubleB<Spec>& b);
 template <class Spec, class F, class A, class B>
 TruthResult<Spec, F, A, B> exact_result(const A& a, const B& b) {
-  return rounded<F>(truth_formulation<Spec>(rebind<CGAL::Gmpq>(a), rebind<CGAL::Gmpq>(b), unsigned(want_all)));
+  static_assert(std::is_same_v<A, DoubleA<Spec>> && std::is_same_v<B, DoubleB<Spec>>,
+                "the exact path takes the query's primitives at double");
+  return gmpq_result<Spec, F>(a, b);
 }
 
 // Steps 1-4 (see the file's comment).
