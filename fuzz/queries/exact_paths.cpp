@@ -1,17 +1,17 @@
-// fuzz/queries/exact_paths.cpp - every query's evaluations at the exact types, in one
-// translation unit of the campaign library compiled at -O1: the truth at CGAL::Gmpq (the
-// exact path of `cdref oracle`, of the truth API and of the staged path's last stage), the
-// book at CGAL::Gmpq and CGAL::Epeck::FT, and the cost report's rows at CGAL::Gmpq,
-// CGAL::Epeck::FT, CORE::Expr and MPFR. The query units (unit_*.cpp) call them through their
-// declarations in cdref/fuzz/spec.hpp, describe.hpp and truth_api.hpp and compile none of them.
+// fuzz/queries/exact_paths.cpp - every query's evaluations at the exact types, in one translation
+// unit of the campaign library compiled at -O1: the truth at CGAL::Gmpq (the exact path of `cdref
+// oracle`, of the truth API and of the staged path's last stage), the book at CGAL::Gmpq and
+// CGAL::Epeck::FT, and the cost report's rows at CGAL::Gmpq, CGAL::Epeck::FT, CORE::Expr and MPFR.
+// The query units (unit_*.cpp) call them through their declarations in cdref/fuzz/spec.hpp,
+// describe.hpp and truth_api.hpp and compile none of them.
 //
-// Why apart, and why -O1: an exact evaluation's time is GMP's, MPFR's and CGAL's arithmetic,
-// not what -O3's inlining and loop passes do to cdref's own code, and these instantiations
-// were about a quarter of each query unit's compile at -O3. This is also the one unit of the
-// library that includes CORE: CGAL ships it header-only and a unit that includes it compiles
-// most of CORE's functions (cdref/exact/core_expr.hpp). The queries come from the groups'
-// lists (groups.hpp), so a query added to a group has its exact paths here too; a new group
-// adds its header below.
+// Why apart, and why -O1: an exact evaluation's time is GMP's, MPFR's and CGAL's arithmetic, not
+// what -O3's inlining and loop passes do to cdref's own code, and these instantiations were nearly
+// a third of the query units' compile at -O3 (groups.hpp: the figures). This is also the one unit
+// of the library that includes CORE: CGAL ships it header-only and a unit that includes it compiles
+// most of CORE's functions (cdref/exact/core_expr.hpp). The queries come from the groups' lists
+// (groups.hpp), so a query added to a group has its exact paths here too; a new group adds its
+// header below.
 #include <cdref/exact/core_expr.hpp>
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
@@ -41,14 +41,13 @@ Answer exact_book_at(const Inputs& in) {
 
 template <class Spec>
 bool gmpq_classification(const DoubleA<Spec>& a, const DoubleB<Spec>& b) {
-  return classification_of(truth_formulation<Spec>(rebind<CGAL::Gmpq>(a), rebind<CGAL::Gmpq>(b), 0u));
+  return classification_at<Spec, CGAL::Gmpq>(a, b);
 }
 
 template <class Spec>
 double gmpq_enter(const Inputs& in) {
   if constexpr (is_cast<Spec>) {
-    const auto [x, y] = Spec::template make<CGAL::Gmpq>(in);
-    return double(value<double>(entry_value(truth_formulation<Spec>(x, y, unsigned(want_lambda_enter)))));
+    return entry_at<Spec, CGAL::Gmpq>(in);
   } else {
     throw std::logic_error(std::string(Spec::name) + " is not a cast: it has no lambda_enter");
   }

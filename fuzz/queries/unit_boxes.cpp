@@ -1,7 +1,8 @@
 // fuzz/queries/unit_boxes.cpp - the descriptors of the axis-aligned box queries (Section 3.2) and
 // of the oriented-box queries (Section 3.3: the separating-axis queries, the casts and
-// sphere-obb): one of the three translation units that instantiate the exact types for the
-// queries, its groups together because they share much of what they instantiate (groups.hpp).
+// sphere-obb): one of the three translation units that describe the queries (their evaluations at
+// the exact types are exact_paths.cpp's), its groups together because they share much of what
+// they instantiate (groups.hpp).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 

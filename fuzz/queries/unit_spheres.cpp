@@ -1,6 +1,7 @@
 // fuzz/queries/unit_spheres.cpp - the descriptors of the sphere queries (Section 3.1),
-// sphere-box and point-triangle: one of the three translation units that instantiate the exact
-// types for the queries (groups.hpp says which groups each holds and why).
+// sphere-box and point-triangle: one of the three translation units that describe the queries
+// (their evaluations at the exact types are exact_paths.cpp's; groups.hpp says which groups each
+// unit holds and why).
 #include <cdref/fuzz/describe.hpp>
 #include <cdref/fuzz/truth_api.hpp>
 

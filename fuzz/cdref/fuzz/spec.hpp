@@ -396,12 +396,18 @@ bool truth_predicate(const A& a, const B& b) {
     return bool(Spec::truth_pred(a, b));
 }
 
+// The classification of the truth's formulation at T, on primitives rebound to T.
+template <class Spec, class T, class A, class B>
+bool classification_at(const A& a, const B& b) {
+  return classification_of(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
+}
+
 // ---- the evaluations at the exact types, compiled in one unit of their own ----
 // The evaluations below reach a query at CGAL::Gmpq (and CGAL::Epeck::FT) only through these
 // functions (and the rows and the truth API's exact path through theirs, describe.hpp and
 // truth_api.hpp), declared here and defined for every query in fuzz/queries/exact_paths.cpp
 // alone, compiled at -O1: their time is GMP's and CGAL's arithmetic, not the inliner's, and
-// at -O3 each query unit spent about a quarter of its compile on them. (a hand-written
+// at -O3 they were nearly a third of the query units' compile (groups.hpp). (a hand-written
 // oracle's own exact stage stays with its query)
 // The primitives of a case at double.
 template <class Spec>
@@ -416,11 +422,10 @@ Answer gmpq_truth_at(const Inputs& in, bool values, bool certified);
 // book_at<Spec, T, double>(in, true) for T = CGAL::Gmpq and CGAL::Epeck::FT.
 template <class Spec, class T>
 Answer exact_book_at(const Inputs& in);
-// The classification of the truth's formulation at CGAL::Gmpq, on a case's double primitives.
+// classification_at<Spec, CGAL::Gmpq> on a case's double primitives.
 template <class Spec>
 bool gmpq_classification(const DoubleA<Spec>& a, const DoubleB<Spec>& b);
-// A cast's lambda_enter: the truth's formulation at CGAL::Gmpq asked for it alone, rounded
-// correctly to double (on a hit).
+// entry_at<Spec, CGAL::Gmpq> (below): a cast's lambda_enter, exact, rounded correctly to double.
 template <class Spec>
 double gmpq_enter(const Inputs& in);
 
@@ -442,7 +447,7 @@ bool staged_classification(const A& a, const B& b, staged::Stage* st) {
                       std::is_same_v<B, DoubleB<Spec>>)
           return gmpq_classification<Spec>(a, b);
         else
-          return classification_of(truth_formulation<Spec>(rebind<T>(a), rebind<T>(b), 0u));
+          return classification_at<Spec, T>(a, b);
       },
       st);
 }
@@ -690,6 +695,14 @@ template <class Spec>
 constexpr bool is_cast = requires(const Inputs& in) {
   entry_value(Spec::book(Spec::template make<double>(in).first, Spec::template make<double>(in).second, 0u));
 };
+// A cast's lambda_enter from the truth's formulation at T asked for it alone, rounded to double
+// (at oracle::Bounded2 where certain, or it throws oracle::uncertain; at an exact type
+// correctly). On a hit.
+template <class Spec, class T>
+double entry_at(const Inputs& in) {
+  const auto [x, y] = Spec::template make<T>(in);
+  return double(value<double>(entry_value(truth_formulation<Spec>(x, y, unsigned(want_lambda_enter)))));
+}
 template <class Spec>
 oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
   require_finite<Spec, CGAL::Gmpq>(in);
@@ -701,12 +714,8 @@ oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
     oracle::Entry e;
     e.hit = oracle_of<Spec>(a, b, nullptr);
     if (!e.hit) return e;
-    const auto enter_at = [&in]<class T>(T*) {
-      const auto [x, y] = Spec::template make<T>(in);
-      return double(value<double>(entry_value(truth_formulation<Spec>(x, y, unsigned(want_lambda_enter)))));
-    };
     try {
-      e.lambda_enter = enter_at(static_cast<oracle::Bounded2*>(nullptr));
+      e.lambda_enter = entry_at<Spec, oracle::Bounded2>(in);
       return e;
     } catch (const oracle::uncertain&) {
     }
