@@ -854,7 +854,7 @@ TEST_CASE("the oracle gives exactly the exact answer, on every family of every q
             if (precision == 64) ++cases64, filtered64 += !used_exact;
           }
         }
-  // The double-word filter (oracle::Bounded2) certifies the decisions and the values,
+  // The double-word filter (cdref::Bounded2) certifies the decisions and the values,
   // square roots included, unless a sign or a rounding is within ~2^-100 relative of its
   // boundary or the book's own cancellation eats the extra 53 bits (long range past ~1e6
   // radii; the casts on a sphere then try their foot formulation, oracle/sphere_cast_foot.hpp):

@@ -3039,7 +3039,7 @@ bool same_cast(const Cast<S>& x, const Cast<S>& y) {
 
 // The every-output oracle's second formulation for the casts on a sphere (oracle/sphere_cast_foot.hpp):
 // at CGAL::Gmpq every output equals the book's exactly (the quadratic-field values compared
-// exactly), and on oracle::Bounded2, wherever it is certain, its rounded outputs are the truth's
+// exactly), and on cdref::Bounded2, wherever it is certain, its rounded outputs are the truth's
 // bit for bit. It must carry the long-range families, where the book's own formulation in double
 // words is certain on about two thirds of the draws (measured with CDREF_TEST_REPORT=1 on
 // 2026-11-28: 200 and 198 of 312 for the ray and the segment, the foot's 312 and 312).
@@ -3070,12 +3070,12 @@ TEMPLATE_TEST_CASE("the sphere casts' foot formulation is the book at Gmpq, and 
         // (computed before REQUIRE: Catch2 would report the uncertain case's exception itself)
         std::optional<Answer> by_book, by_foot;
         try {
-          by_book = spec::truth_at<Q, oracle::Bounded2, double>(in, true, true);
-        } catch (const oracle::uncertain&) {
+          by_book = spec::truth_at<Q, cdref::Bounded2, double>(in, true, true);
+        } catch (const cdref::uncertain&) {
         }
         try {
-          by_foot = spec::formulation_at<Q, oracle::Bounded2, double>(in);
-        } catch (const oracle::uncertain&) {
+          by_foot = spec::formulation_at<Q, cdref::Bounded2, double>(in);
+        } catch (const cdref::uncertain&) {
         }
         if (by_book) REQUIRE(same_bits(*by_book, truth));
         if (by_foot) REQUIRE(same_bits(*by_foot, truth));

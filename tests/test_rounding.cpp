@@ -272,11 +272,11 @@ TEST_CASE("rationals and a + b sqrt(d) round to the nearest long double", "[roun
   REQUIRE(exact::round_long_double(tie2) == std::nextafter(up, 2.0L));
 }
 
-// ---- oracle::Bounded2: every operation's bound holds, checked exactly ----
+// ---- cdref::Bounded2: every operation's bound holds, checked exactly ----
 
 namespace {
 
-using oracle::Bounded2;
+using cdref::Bounded2;
 
 // Exact value hi + lo of a Bounded2, and the check |X - (hi + lo)| <= e for an exact X.
 Q dw_value(const Bounded2& b) { return Q(b.hi()) + Q(b.lo()); }
@@ -297,7 +297,7 @@ struct Tracked {
 
 }  // namespace
 
-TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[rounding][oracle]") {
+TEST_CASE("cdref::Bounded2 encloses the exact value after + - * / sqrt", "[rounding][oracle]") {
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> mant(-1, 1);
   std::uniform_int_distribution<int> expo(-60, 60), pick(0, 5);
@@ -335,12 +335,12 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
               const long double l = root.rounded_long_double();
               REQUIRE(l == exact::round_long_double(QS::sqrt_of(s.x)));
               ++long_doubles;
-            } catch (const oracle::uncertain&) {
+            } catch (const cdref::uncertain&) {
             }
             continue;  // the root is not rational: not kept in the pool
           }
         }
-      } catch (const oracle::uncertain&) {
+      } catch (const cdref::uncertain&) {
         continue;  // a divisor that may be zero, a root of a maybe-negative value
       }
       if (!r.b.finite()) continue;
@@ -352,7 +352,7 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
       auto certain = [](auto f) -> std::optional<decltype(f())> {
         try {
           return f();
-        } catch (const oracle::uncertain&) {
+        } catch (const cdref::uncertain&) {
           return std::nullopt;
         }
       };
@@ -376,40 +376,40 @@ TEST_CASE("oracle::Bounded2 encloses the exact value after + - * / sqrt", "[roun
   CHECK(long_doubles > 20000);  // long double roundings the double word certifies
 }
 
-TEST_CASE("oracle::Bounded2 rounds to long double: midpoints uncertain, either side decided", "[rounding][oracle]") {
+TEST_CASE("cdref::Bounded2 rounds to long double: midpoints uncertain, either side decided", "[rounding][oracle]") {
   if (std::numeric_limits<long double>::digits != 64) {  // (then rounded_long_double is rounded() or uncertain)
     WARN("long double is not the x87 extended format here: nothing to check");
     return;
   }
   // 1 and 1 + 2^-63 are neighbours; 1 + 2^-64 is the midpoint between them, a double word
   const long double up = 1.0L + std::ldexp(1.0L, -63);
-  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, 0x1p-64).rounded_long_double(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, 0x1p-64).rounded_long_double(), cdref::uncertain);
   CHECK(Bounded2::exact_pair(1.0, 0x1p-64 + 0x1p-116).rounded_long_double() == up);
   CHECK(Bounded2::exact_pair(1.0, 0x1p-64 - 0x1p-117).rounded_long_double() == 1.0L);
   // an error bound that reaches the midpoint is uncertain; one that stops short is not
-  CHECK_THROWS_AS(Bounded2::within(1.0, 0x1p-64 + 0x1p-100, 0x1p-99).rounded_long_double(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2::within(1.0, 0x1p-64 + 0x1p-100, 0x1p-99).rounded_long_double(), cdref::uncertain);
   CHECK(Bounded2::within(1.0, 0x1p-64 + 0x1p-100, 0x1p-102).rounded_long_double() == up);
   // below a power of two the gap halves: 1 - 2^-65 is the midpoint between 1 - 2^-64 and 1
-  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, -0x1p-65).rounded_long_double(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2::exact_pair(1.0, -0x1p-65).rounded_long_double(), cdref::uncertain);
   CHECK(Bounded2::exact_pair(1.0, -0x1p-65 + 0x1p-118).rounded_long_double() == 1.0L);
   CHECK(Bounded2::exact_pair(1.0, -0x1p-65 - 0x1p-117).rounded_long_double() == 1.0L - std::ldexp(1.0L, -64));
   // negative values, zero, and the ends of the range it takes
   CHECK(Bounded2::exact_pair(-1.0, -0x1p-64 - 0x1p-116).rounded_long_double() == -up);
   CHECK(std::signbit(Bounded2(0.0).rounded_long_double()) == false);
   CHECK(Bounded2(0x1p-899).rounded_long_double() == std::ldexp(1.0L, -899));
-  CHECK_THROWS_AS(Bounded2(0x1p-1000).rounded_long_double(), oracle::uncertain);
-  CHECK_THROWS_AS(Bounded2(0x1p1010).rounded_long_double(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2(0x1p-1000).rounded_long_double(), cdref::uncertain);
+  CHECK_THROWS_AS(Bounded2(0x1p1010).rounded_long_double(), cdref::uncertain);
 }
 
-TEST_CASE("oracle::Bounded2 certifies square roots that the double filter cannot", "[rounding][oracle]") {
+TEST_CASE("cdref::Bounded2 certifies square roots that the double filter cannot", "[rounding][oracle]") {
   // sqrt(2): the double filter's bound is an ulp or so, too wide to round; the double word
   // is 2^-100 close and rounds it.
-  CHECK_THROWS_AS(oracle::Bounded::root(oracle::Bounded(2.0)).rounded(), oracle::uncertain);
+  CHECK_THROWS_AS(cdref::Bounded::root(cdref::Bounded(2.0)).rounded(), cdref::uncertain);
   CHECK(Bounded2::root(Bounded2(2.0)).rounded() == std::sqrt(2.0));
   // a square root exactly between two floats is a tie: uncertain, never guessed
   const double mid = 1.0 + std::ldexp(1.0, -24);  // halfway between 1 and 1 + 2^-23
   CHECK((Bounded2(mid) * Bounded2(mid)).rounded() == mid * mid);  // 49 bits: exact
-  CHECK_THROWS_AS(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded_float(), oracle::uncertain);
+  CHECK_THROWS_AS(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded_float(), cdref::uncertain);
   CHECK(Bounded2::root(Bounded2(mid) * Bounded2(mid)).rounded() == mid);
 }
 

@@ -1,5 +1,5 @@
 // tests/test_staged.cpp - the generic staged path (cdref/exact/staged.hpp): every query's own
-// truth code run on oracle::Bounded, then oracle::Bounded2, then CGAL::Gmpq. On every family
+// truth code run on cdref::Bounded, then cdref::Bounded2, then CGAL::Gmpq. On every family
 // and scale of every query it must equal the exact answer (the truth at Gmpq) and the
 // hand-written oracle (oracle_classify, oracle_truth) it stands beside, bit for bit; refusals
 // must agree; the bounded stages must decide random placements. And the bounded double's
@@ -160,7 +160,7 @@ TEST_CASE("every output through the stages equals the oracle's and the truth's, 
 }
 
 TEST_CASE("the bounded double keeps exact zeros exact and decides only certain signs", "[staged]") {
-  using oracle::Bounded;
+  using cdref::Bounded;
   const Bounded third = Bounded(1.0) / Bounded(3.0);  // inexact
   REQUIRE(third.bound() > 0);
   // an exact 0 times or over an inexact value is exactly 0: its sign is decided
@@ -169,24 +169,24 @@ TEST_CASE("the bounded double keeps exact zeros exact and decides only certain s
   REQUIRE((Bounded(0.0) / third).sign() == 0);
   // an inexact value equal to an exact one is not decided
   const Bounded one = third * Bounded(3.0);
-  REQUIRE_THROWS_AS((one - Bounded(1.0)).sign(), oracle::uncertain);
-  REQUIRE_THROWS_AS(one == Bounded(1.0), oracle::uncertain);
+  REQUIRE_THROWS_AS((one - Bounded(1.0)).sign(), cdref::uncertain);
+  REQUIRE_THROWS_AS(one == Bounded(1.0), cdref::uncertain);
   REQUIRE(one > Bounded(0.5));
   REQUIRE(surely_positive(one));
   REQUIRE(!surely_positive(one - Bounded(1.0)));  // never throws
   REQUIRE(!surely_positive(Bounded(0.0)));
   // a divisor that may be zero is uncertain
-  REQUIRE_THROWS_AS(Bounded(1.0) / (one - Bounded(1.0)), oracle::uncertain);
+  REQUIRE_THROWS_AS(Bounded(1.0) / (one - Bounded(1.0)), cdref::uncertain);
   // rounding: exact values are themselves at every type; an inexact one to long double is
   // left to the next stage
   REQUIRE(Bounded(0.1).rounded_long_double() == static_cast<long double>(0.1));
-  REQUIRE_THROWS_AS(third.rounded_long_double(), oracle::uncertain);
+  REQUIRE_THROWS_AS(third.rounded_long_double(), cdref::uncertain);
   REQUIRE(Bounded(4.0).rounded() == 4.0);
   REQUIRE(sqrt(Bounded(4.0)).sign() == 1);
   REQUIRE(sqrt(Bounded(4.0)).rounded_float() == 2.0f);
   // a non-finite value decides nothing
   const Bounded inf(std::numeric_limits<double>::infinity());
-  REQUIRE_THROWS_AS(inf.sign(), oracle::uncertain);
+  REQUIRE_THROWS_AS(inf.sign(), cdref::uncertain);
   REQUIRE(!surely_positive(inf));
 }
 

@@ -23,7 +23,7 @@
 ///                        to GMP rationals (number_traits<T>::to_rational) and the sign computed
 ///                        exactly;
 ///   other types          (the oracle's filter types) the determinant in T, whose comparison
-///                        is certain or throws oracle::uncertain.
+///                        is certain or throws cdref::uncertain.
 #pragma once
 
 #include <gmp.h>

@@ -13,7 +13,7 @@
 // classification (oracle::classify: filter, double words, expansions, rationals; each query's
 // own stages); on a hit a double path whose error is bounded rigorously, accepted when the
 // exact value cannot lie on the other side of a rounding midpoint (Bounded2::try_rounded);
-// otherwise the truth's formulation at oracle::Bounded2, then
+// otherwise the truth's formulation at cdref::Bounded2, then
 // at CGAL::Gmpq.
 //
 // This file holds what the casts share: the exact path, the double paths' plumbing (the fused

@@ -7,7 +7,7 @@
 namespace cdref::oracle {
 
 // Double inputs moved exactly to a number type T that holds every double (CGAL::Gmpq,
-// oracle::Bounded2): fields.hpp's rebind, for a point or any primitive over double.
+// cdref::Bounded2): fields.hpp's rebind, for a point or any primitive over double.
 template <class T, class P>
 auto exactly(const P& p) {
   return rebind<T>(p);

@@ -25,7 +25,7 @@
 //                (sat_grid.hpp: every tie of a zero-area triangle, a flat box or a face's plane
 //                decided); then the robust
 //                versions' evaluation of
-//                the whole formulation on oracle::Bounded2 (robust/separating_axes.hpp),
+//                the whole formulation on cdref::Bounded2 (robust/separating_axes.hpp),
 //                certain when every decisive comparison is (Stage::expansion names this stage);
 //   3. rational  the formulation at CGAL::Gmpq.
 // classify() interleaves stages 1 and 2 where that decides sooner: the double words of what the

@@ -1,6 +1,6 @@
 // cdref/oracle/sphere_cast_foot.hpp - Algorithm 3.1's every output in the perpendicular foot's
 // formulation: equal to book::cast at every exact type, and the one the every-output oracle
-// evaluates on oracle::Bounded2 (double words with a rigorous error bound, certain or it throws)
+// evaluates on cdref::Bounded2 (double words with a rigorous error bound, certain or it throws)
 // where the book's own formulation is not certain there, before the exact path
 // (fuzz/cdref/fuzz/spec.hpp, oracle_truth_of).
 //

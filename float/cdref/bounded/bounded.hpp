@@ -1,5 +1,7 @@
-// cdref/bounded/bounded.hpp - a double with a rigorous bound on its error: the filter of the
-// fast exact oracle.
+// cdref/bounded/bounded.hpp - a double with a rigorous bound on its error: the first stage of
+// the staged evaluation of any book template (cdref/robust/staged.hpp: the robust tier's
+// certificates, and with the exact stage the oracle's generic path) and the number type of the
+// oracle's hand filters. A number type like the others, in namespace cdref.
 //
 // A Bounded value (v, e) says: the exact value x of this quantity satisfies |x - v| <= e.
 // Inputs are exact (e = 0). Each operation computes v in double, round to nearest, and a
@@ -19,7 +21,7 @@
 //
 // A comparison is certain when the sign of the difference is: d = a - b (a Bounded), and
 // d.v - d.e > 0, d.v + d.e < 0, or d.v = d.e = 0 (both exact and equal). Otherwise it
-// throws oracle::uncertain, and the caller runs the same code on an exact type. A value is
+// throws cdref::uncertain, and the caller runs the same code on an exact type. A value is
 // known correctly rounded to double when e is below half the gap to both neighbours of v.
 #pragma once
 
@@ -30,12 +32,15 @@
 #include <limits>
 #include <string>
 
-namespace cdref::oracle {
+namespace cdref {
 
+/// Thrown by a comparison of bounded values (Bounded, Bounded2) whose sign the bound cannot
+/// tell, and by a rounding it cannot certify: the caller runs the same code at the next stage.
 struct uncertain : std::exception {
-  const char* what() const noexcept override { return "cdref::oracle: the filter cannot decide"; }
+  const char* what() const noexcept override { return "cdref::uncertain: a bounded value cannot decide the comparison"; }
 };
 
+/// A double with a rigorous bound on its error (the derivation above).
 class Bounded {
  public:
   static constexpr double u = 0x1p-53;
@@ -180,29 +185,27 @@ class Bounded {
   double v_ = 0, e_ = 0;
 };
 
-}  // namespace cdref::oracle
 
-namespace cdref {
 template <>
-struct number_traits<oracle::Bounded> {
-  static constexpr bool is_exact = false;  // a filter: it answers or throws oracle::uncertain
+struct number_traits<cdref::Bounded> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws cdref::uncertain
   static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
-  using sqrt_type = oracle::Bounded;
-  static oracle::Bounded sqrt(const oracle::Bounded& x) { return oracle::Bounded::root(x); }
-  static bool is_finite(const oracle::Bounded& x) { return x.finite(); }
-  static double to_double(const oracle::Bounded& x) { return x.rounded(); }
-  static float to_float(const oracle::Bounded& x) { return x.rounded_float(); }
+  using sqrt_type = cdref::Bounded;
+  static cdref::Bounded sqrt(const cdref::Bounded& x) { return cdref::Bounded::root(x); }
+  static bool is_finite(const cdref::Bounded& x) { return x.finite(); }
+  static double to_double(const cdref::Bounded& x) { return x.rounded(); }
+  static float to_float(const cdref::Bounded& x) { return x.rounded_float(); }
   static std::string name() { return "Bounded"; }
 };
 }  // namespace cdref
 
 namespace Eigen {
 template <>
-struct NumTraits<cdref::oracle::Bounded> {
-  using Real = cdref::oracle::Bounded;
-  using NonInteger = cdref::oracle::Bounded;
-  using Nested = cdref::oracle::Bounded;
-  using Literal = cdref::oracle::Bounded;
+struct NumTraits<cdref::Bounded> {
+  using Real = cdref::Bounded;
+  using NonInteger = cdref::Bounded;
+  using Nested = cdref::Bounded;
+  using Literal = cdref::Bounded;
   static inline Real epsilon() { return Real(0); }
   static inline Real dummy_precision() { return Real(0); }
   static inline int digits10() { return 15; }

@@ -1,8 +1,8 @@
 // cdref/bounded/bounded2.hpp - a double-word number (an unevaluated sum hi + lo of two
-// doubles) with a rigorous bound on its error: the second stage of the fast exact oracle,
+// doubles) with a rigorous bound on its error: the second stage of the staged evaluation,
 // the one that certifies the correct rounding of square roots and quotients.
 //
-// oracle::Bounded (bounded.hpp) carries a double and an error of a few ulps: enough to
+// cdref::Bounded (bounded.hpp) carries a double and an error of a few ulps: enough to
 // decide most signs, too wide to round a square root correctly (that needs the error
 // below the distance to the nearest rounding midpoint, half an ulp or much less). A
 // Bounded2 value (hi, lo, e) says: the exact value x of this quantity satisfies
@@ -70,8 +70,9 @@
 
 #include "bounded.hpp"
 
-namespace cdref::oracle {
+namespace cdref {
 
+/// A double word with a rigorous bound on its error (the derivation above).
 class Bounded2 {
  public:
   static constexpr double u = 0x1p-53;
@@ -382,29 +383,27 @@ class Bounded2 {
   double hi_ = 0, lo_ = 0, e_ = 0;
 };
 
-}  // namespace cdref::oracle
 
-namespace cdref {
 template <>
-struct number_traits<oracle::Bounded2> {
-  static constexpr bool is_exact = false;  // a filter: it answers or throws oracle::uncertain
+struct number_traits<cdref::Bounded2> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws cdref::uncertain
   static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
-  using sqrt_type = oracle::Bounded2;
-  static oracle::Bounded2 sqrt(const oracle::Bounded2& x) { return oracle::Bounded2::root(x); }
-  static bool is_finite(const oracle::Bounded2& x) { return x.finite(); }
-  static double to_double(const oracle::Bounded2& x) { return x.rounded(); }
-  static float to_float(const oracle::Bounded2& x) { return x.rounded_float(); }
+  using sqrt_type = cdref::Bounded2;
+  static cdref::Bounded2 sqrt(const cdref::Bounded2& x) { return cdref::Bounded2::root(x); }
+  static bool is_finite(const cdref::Bounded2& x) { return x.finite(); }
+  static double to_double(const cdref::Bounded2& x) { return x.rounded(); }
+  static float to_float(const cdref::Bounded2& x) { return x.rounded_float(); }
   static std::string name() { return "Bounded2"; }
 };
 }  // namespace cdref
 
 namespace Eigen {
 template <>
-struct NumTraits<cdref::oracle::Bounded2> {
-  using Real = cdref::oracle::Bounded2;
-  using NonInteger = cdref::oracle::Bounded2;
-  using Nested = cdref::oracle::Bounded2;
-  using Literal = cdref::oracle::Bounded2;
+struct NumTraits<cdref::Bounded2> {
+  using Real = cdref::Bounded2;
+  using NonInteger = cdref::Bounded2;
+  using Nested = cdref::Bounded2;
+  using Literal = cdref::Bounded2;
   static inline Real epsilon() { return Real(0); }
   static inline Real dummy_precision() { return Real(0); }
   static inline int digits10() { return 31; }

@@ -141,7 +141,7 @@ template <bool Correct>
 bool first_look_kept(const Pair<double>& v, double err) {
   if constexpr (Correct) {
     double r;
-    return std::fabs(v.hi) >= 0x1p-960 && oracle::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
+    return std::fabs(v.hi) >= 0x1p-960 && cdref::Bounded2::within(v.hi, v.lo, err + 0x1p-1070).try_rounded(r) &&
            r == v.hi;
   } else {
     return std::isfinite(v.hi) && err + 0x1p-1070 <= 0.25 * first_look_u * std::fabs(v.hi);
@@ -180,7 +180,7 @@ bool unit_words(const double* nh, const double* nl, const double* ne, const Pair
 // is known exactly (then x), as a triangle's vertex or a coordinate its feature's vertices share.
 // Correct: each value kept only where it is the truth correctly rounded (its interval, the
 // value before its last rounding and its bound, within the rounding interval of the double it
-// rounds to: oracle::Bounded2::try_rounded), for the oracle's every-output path.
+// rounds to: cdref::Bounded2::try_rounded), for the oracle's every-output path.
 template <class Mul, bool Correct, class Stage, class Exact>
 unsigned first_look_values(const Sphere<double>& sp, const FirstLookPoint& P, bool point, int& cls, int unknown,
                            unsigned w, Proximity<double>& res, double* key, Stage first_stage, Exact exact) {

@@ -93,7 +93,7 @@ int triangle_first_stage(const Ray<F>& r, const Triangle<F>& t) {
 inline int sign_or_unknown(const W& x) {
   try {
     return x > W(0.0) ? 1 : (x < W(0.0) ? -1 : 0);
-  } catch (const oracle::uncertain&) {
+  } catch (const cdref::uncertain&) {
     return 2;
   }
 }
@@ -145,7 +145,7 @@ int words_hit_or_orientation(const Shot& shot, const Triangle<F>& tri, bool boun
 // there, also for a zero-area triangle's span). s + lambda d carries lambda's u^2 times |lambda d|,
 // the whole distance from the source; the barycentric form u^2 of the triangle's size, and none
 // at a vertex or on an edge, where the weights are exact (a ray through a polygon's vertex gave a
-// coordinate of 1e-32 where the truth is 0). Both are rigorous enclosures (oracle::Bounded2),
+// coordinate of 1e-32 where the truth is 0). Both are rigorous enclosures (cdref::Bounded2),
 // so the point keeps whichever bound is smaller.
 template <class Shot, class Tri>
 auto cast_on_words(const Shot& a, const Tri& b) {

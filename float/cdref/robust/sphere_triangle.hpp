@@ -68,7 +68,7 @@
 // Every value asked, or the path below for all of them. For the oracle's every-output path
 // (sphere_triangle_rounded; polygon.hpp's first look for a fan) each value is kept instead
 // where the interval of its double word before the last rounding and its bound rounds to one
-// double (oracle::Bounded2::try_rounded): then it is the truth correctly rounded.
+// double (cdref::Bounded2::try_rounded): then it is the truth correctly rounded.
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>

@@ -5,15 +5,15 @@
 // The derivation. Let f be an algorithm written over a number type T (a book template: its
 // decisions are comparisons of values computed with + - * / and sqrt from the inputs). Run at
 // a type whose every comparison either returns the sign of the exact difference or throws
-// oracle::uncertain, and whose values round to a float type only when the rounding is certain,
+// cdref::uncertain, and whose values round to a float type only when the rounding is certain,
 // f takes exactly the branches it takes at an exact type. So where it returns, its
 // classification is the exact one and every value it rounds is the exact value rounded
 // correctly: no error analysis per algorithm, the bound travels with each number (CGAL's
 // Filtered_predicate rests on the same observation). The stages:
-//   1. oracle::Bounded (cdref/bounded/bounded.hpp): a double with a running error bound, a few
+//   1. cdref::Bounded (cdref/bounded/bounded.hpp): a double with a running error bound, a few
 //      ulps after each operation. Decides every comparison that is not close to a tie; seldom
 //      rounds a value that is not exact correctly to double, never to long double.
-//   2. oracle::Bounded2 (bounded2.hpp): a double word with a bound of the order of 2^-106
+//   2. cdref::Bounded2 (bounded2.hpp): a double word with a bound of the order of 2^-106
 //      relative. Decides the comparisons closer to a tie, rounds square roots and quotients
 //      correctly to float, double and x87 long double.
 // certify() runs them in turn and answers with the first that is certain, or with nothing:
@@ -23,7 +23,7 @@
 // Boundary cases. The inputs must be doubles exactly (float's are; a long double with more
 // than 53 significant bits is not, and decide() and rounded() answer in F uncertified for it).
 // An input the algorithm refuses (invalid_input: not finite, a zero direction, a degenerate
-// shape) is refused at the first stage as in F: exceptions other than oracle::uncertain pass
+// shape) is refused at the first stage as in F: exceptions other than cdref::uncertain pass
 // through. Overflow and underflow are in the bounds (a non-finite value or bound makes every
 // comparison uncertain; an underflowing product or quotient adds 2^-1074), so near the ends
 // of the exponent range the stages are uncertain, not wrong.
@@ -53,20 +53,20 @@ struct at {
 /// answer at the first stage that is certain, else nothing. `stage`, when given, receives the
 /// stage that answered.
 template <Stage First = Stage::bounded, class Fn>
-auto certify(Fn&& fn, Stage* stage = nullptr) -> std::optional<decltype(fn(at<oracle::Bounded2>{}))> {
+auto certify(Fn&& fn, Stage* stage = nullptr) -> std::optional<decltype(fn(at<cdref::Bounded2>{}))> {
   if constexpr (First == Stage::bounded) {
     try {
-      auto r = fn(at<oracle::Bounded>{});
+      auto r = fn(at<cdref::Bounded>{});
       if (stage) *stage = Stage::bounded;
       return r;
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
   }
   try {
-    auto r = fn(at<oracle::Bounded2>{});
+    auto r = fn(at<cdref::Bounded2>{});
     if (stage) *stage = Stage::word;
     return r;
-  } catch (const oracle::uncertain&) {
+  } catch (const cdref::uncertain&) {
   }
   return std::nullopt;
 }
@@ -88,7 +88,7 @@ bool fits_double(const P& p) {
   }
 }
 
-/// A bounded value rounded correctly to F, or oracle::uncertain where the bound cannot tell.
+/// A bounded value rounded correctly to F, or cdref::uncertain where the bound cannot tell.
 template <class F, class B>
 F rounded_value(const B& x) {
   if constexpr (std::is_same_v<F, float>)
@@ -100,7 +100,7 @@ F rounded_value(const B& x) {
 }
 
 /// A result over a bounded type, each field rounded correctly to F (fields.hpp's rounded_by), or
-/// oracle::uncertain where one cannot be; a bool is its own.
+/// cdref::uncertain where one cannot be; a bool is its own.
 template <class F, template <class> class R, class B>
 R<F> rounded(const R<B>& r) {
   return rounded_by<F>(r, [](const auto& x) { return rounded_value<F>(x); });

@@ -1,8 +1,8 @@
 // cdref/robust/words.hpp - the robust versions' double-word evaluation: a formulation run on
-// oracle::Bounded2 (double words hi + lo with a rigorous running bound on their error; its
+// cdref::Bounded2 (double words hi + lo with a rigorous running bound on their error; its
 // header derives every operation's bound) on the exact inputs, every length first scaled by a
 // power of two. Each decisive comparison is certain when the double word's sign is, and the
-// evaluation then completes; otherwise oracle::uncertain ends it and the caller falls back to
+// evaluation then completes; otherwise cdref::uncertain ends it and the caller falls back to
 // the formulation in F, uncertain. Used by robust/separating_axes.hpp and
 // robust/sphere_triangle.hpp.
 //
@@ -35,7 +35,7 @@ namespace cdref::robust {
 
 namespace detail {
 
-using W = oracle::Bounded2;
+using W = cdref::Bounded2;
 
 // x as an exact double word, or nothing.
 template <class F>
@@ -207,7 +207,7 @@ auto on_words(const A& a, const B& b, Fn f, Scale* used = nullptr)
   if (!w.ok) return std::nullopt;
   try {
     return words_call(f, aw, bw);
-  } catch (const oracle::uncertain&) {
+  } catch (const cdref::uncertain&) {
     return std::nullopt;
   }
 }

@@ -224,7 +224,7 @@ struct QueryInfo {
   // queries that are not casts.
   std::function<Answer(const Inputs&, bool* exact_used)> oracle_enter;
   // The generic staged path (cdref/exact/staged.hpp): the truth's own formulation run on
-  // oracle::Bounded, then oracle::Bounded2, then CGAL::Gmpq, the first certain answer taken;
+  // cdref::Bounded, then cdref::Bounded2, then CGAL::Gmpq, the first certain answer taken;
   // no error analysis of the query's own. `stage` (may be null) receives the stage that
   // answered (0 bounded double, 1 bounded double word, 2 exact). The classification alone
   // (cls = pred), and every output correctly rounded to the precision (24, 53 or 64). The

@@ -248,7 +248,7 @@ inline constexpr const char* sat_help =
 // rounded correctly to F).
 template <class F, class S>
 long double value(const S& x) {
-  if constexpr (std::is_same_v<S, oracle::Bounded2> || std::is_same_v<S, oracle::Bounded>)
+  if constexpr (std::is_same_v<S, cdref::Bounded2> || std::is_same_v<S, cdref::Bounded>)
     return staged::rounded_value<F>(x);  // certain, or it throws
   else if constexpr (!number_traits<S>::is_exact)
     return static_cast<long double>(x);
@@ -346,7 +346,7 @@ consteval bool check() {
   static_assert(requires(const Inputs& in) {
     Spec::template make<double>(in).first;
     Spec::template make<double>(in).second;
-    Spec::template make<oracle::Bounded>(in).first;
+    Spec::template make<cdref::Bounded>(in).first;
     Spec::template make<CGAL::Gmpq>(in).second;
   }, "a spec needs `template <class T> static std::pair<A<T>, B<T>> make(const Inputs&)`: its two primitives "
      "from a case's columns, at every number type");
@@ -492,7 +492,7 @@ template <class Spec, class T>
 // One evaluation of a query on a case's columns, the shape of every tier's: the primitives made
 // at T, `full(a, b, want)` (the full query, every output asked when `values`) put into the answer
 // with its values rounded to F, and `pred(a, b)` in the predicate column. `certified`: T is exact
-// or certifies every decision it takes (oracle::Bounded2 throws oracle::uncertain rather than
+// or certifies every decision it takes (cdref::Bounded2 throws cdref::uncertain rather than
 // decide a sign it cannot), so the predicate is the full query's classification (the two
 // formulations agree exactly: tested) and is not evaluated again. Columns T cannot hold
 // (infinite or NaN at an exact or bounded type) are refused first (require_finite).
@@ -617,20 +617,20 @@ Answer truth_of(const Inputs& in, int precision) {
   return at_precision(precision, [&in]<class F>(F*) { return gmpq_truth_at<Spec, F>(in, true, false); });
 }
 
-// The truth's formulation run on oracle::Bounded2 (a double word with a rigorous error
+// The truth's formulation run on cdref::Bounded2 (a double word with a rigorous error
 // bound, about 106 bits: room for a float's, a double's and a long double's rounding),
 // accepted when every comparison and every rounding is certain; otherwise the exact path.
 // Where the spec has `oracle_formulation` (the truth's outputs in another formulation, equal to
 // the truth's at every exact type and better conditioned in double words: the casts on a sphere,
-// oracle/sphere_cast_foot.hpp), it runs on oracle::Bounded2 where the truth's own formulation is
+// oracle/sphere_cast_foot.hpp), it runs on cdref::Bounded2 where the truth's own formulation is
 // not certain there. The truth's goes first because it is the cheaper where it is certain: on
 // the uniform draws (about 99% of which it answers) the every-output path took 745-779 ns a ray
 // cast trying it first and 864-895 ns with the other alone; a test checks the formulation equal
 // to the truth at CGAL::Gmpq on every family.
 template <class Spec>
 constexpr bool has_oracle_formulation = requires(const Inputs& in) {
-  Spec::oracle_formulation(Spec::template make<oracle::Bounded2>(in).first,
-                           Spec::template make<oracle::Bounded2>(in).second, 0u);
+  Spec::oracle_formulation(Spec::template make<cdref::Bounded2>(in).first,
+                           Spec::template make<cdref::Bounded2>(in).second, 0u);
 };
 template <class Spec, class T, class F>
   requires has_oracle_formulation<Spec>
@@ -655,14 +655,14 @@ Answer oracle_formulation_at(const Inputs& in) {
       if (Spec::oracle_formulation_first(a, b)) {
         try {
           return formulation_at<Spec, T, F>(in);
-        } catch (const oracle::uncertain&) {
+        } catch (const cdref::uncertain&) {
         }
         return truth_at<Spec, T, F>(in, true, true);
       }
     }
     try {
       return truth_at<Spec, T, F>(in, true, true);
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
     return formulation_at<Spec, T, F>(in);
   } else {
@@ -679,7 +679,7 @@ constexpr bool has_oracle_enter = requires(const Inputs& in, bool* e) {
 
 // Every cast's hit and lambda_enter alone: oracle::enter where the spec has it (every cast
 // cdref has), otherwise the oracle's classification, then on a hit the truth's formulation
-// asked for lambda_enter alone, on oracle::Bounded2 (certain, or it throws) and then at
+// asked for lambda_enter alone, on cdref::Bounded2 (certain, or it throws) and then at
 // CGAL::Gmpq, rounded correctly to double.
 template <class R>
   requires requires(const R& r) { r.lambda_enter; }
@@ -696,7 +696,7 @@ constexpr bool is_cast = requires(const Inputs& in) {
   entry_value(Spec::book(Spec::template make<double>(in).first, Spec::template make<double>(in).second, 0u));
 };
 // A cast's lambda_enter from the truth's formulation at T asked for it alone, rounded to double
-// (at oracle::Bounded2 where certain, or it throws oracle::uncertain; at an exact type
+// (at cdref::Bounded2 where certain, or it throws cdref::uncertain; at an exact type
 // correctly). On a hit.
 template <class Spec, class T>
 double entry_at(const Inputs& in) {
@@ -715,9 +715,9 @@ oracle::Entry oracle_enter_of(const Inputs& in, bool* exact_used) {
     e.hit = oracle_of<Spec>(a, b, nullptr);
     if (!e.hit) return e;
     try {
-      e.lambda_enter = entry_at<Spec, oracle::Bounded2>(in);
+      e.lambda_enter = entry_at<Spec, cdref::Bounded2>(in);
       return e;
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
     if (exact_used) *exact_used = true;
     e.lambda_enter = gmpq_enter<Spec>(in);
@@ -799,8 +799,8 @@ Answer oracle_truth_of(const Inputs& in, int precision, bool* exact_used) {
     if (Answer r; precision == 53 && oracle_rounded_of<Spec>(in, r)) return r;
   try {
     return at_precision(precision,
-                        [&in]<class F>(F*) { return oracle_formulation_at<Spec, oracle::Bounded2, F>(in); });
-  } catch (const oracle::uncertain&) {
+                        [&in]<class F>(F*) { return oracle_formulation_at<Spec, cdref::Bounded2, F>(in); });
+  } catch (const cdref::uncertain&) {
   }
   if (exact_used) *exact_used = true;
   return truth_of<Spec>(in, precision);

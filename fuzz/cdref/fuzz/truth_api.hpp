@@ -10,7 +10,7 @@
 //      default result (no hit, every value 0), as the book's at an exact type;
 //   2. at double, the robust tier's first look where the spec has it (oracle_rounded) and it
 //      proves every rounding;
-//   3. the truth's formulation (or the spec's oracle_formulation) on oracle::Bounded2, accepted
+//   3. the truth's formulation (or the spec's oracle_formulation) on cdref::Bounded2, accepted
 //      when every comparison and every rounding is certain;
 //   4. the truth's formulation at CGAL::Gmpq, rounded.
 // exact_result is step 4 alone (Path::exact). The group files (fuzz/queries/*.cpp) define the
@@ -27,7 +27,7 @@
 namespace cdref::fuzz::spec {
 
 // ---- a result rounded to F, field by field (fields.hpp's rounded_by; spec.hpp's value: exact
-// values rounded correctly, bounded ones where certain, or oracle::uncertain) ----
+// values rounded correctly, bounded ones where certain, or cdref::uncertain) ----
 template <class F, template <class> class R, class S>
 R<F> rounded(const R<S>& r) {
   return rounded_by<F>(r, [](const auto& x) { return static_cast<F>(value<F>(x)); });
@@ -69,27 +69,27 @@ TruthResult<Spec, F, A, B> oracle_result(const A& a, const B& b, bool* exact_use
   // (two lambdas, the other formulation's named only where the spec has it: clang instantiates
   // the parts of a generic lambda that do not depend on its own parameters)
   const auto own = [&] {
-    return rounded<F>(truth_formulation<Spec>(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b), unsigned(want_all)));
+    return rounded<F>(truth_formulation<Spec>(rebind<cdref::Bounded2>(a), rebind<cdref::Bounded2>(b), unsigned(want_all)));
   };
   if constexpr (has_oracle_formulation<Spec>) {
     const auto other = [&] {
       return rounded<F>(
-          Spec::oracle_formulation(rebind<oracle::Bounded2>(a), rebind<oracle::Bounded2>(b), unsigned(want_all)));
+          Spec::oracle_formulation(rebind<cdref::Bounded2>(a), rebind<cdref::Bounded2>(b), unsigned(want_all)));
     };
     bool other_first = false;
     if constexpr (has_formulation_first<Spec>) other_first = Spec::oracle_formulation_first(a, b);
     try {
       return other_first ? R(other()) : R(own());
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
     try {
       return other_first ? R(own()) : R(other());
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
   } else {
     try {
       return own();
-    } catch (const oracle::uncertain&) {
+    } catch (const cdref::uncertain&) {
     }
   }
   if (exact_used) *exact_used = true;

@@ -32,7 +32,7 @@ S min_of(const S& a, const S& b) {
 }
 
 /// Whether x > 0 is certain: x > 0 at an exact type or a float; a number type whose signs may be
-/// too close to call provides its own (found by argument-dependent lookup: oracle::Bounded2,
+/// too close to call provides its own (found by argument-dependent lookup: cdref::Bounded2,
 /// false there, never throwing and never lenient). For a shortcut taken only where it is certain,
 /// with the general formulation behind it.
 template <class S>
