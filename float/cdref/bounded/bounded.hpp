@@ -37,7 +37,9 @@ namespace cdref {
 /// Thrown by a comparison of bounded values (Bounded, Bounded2) whose sign the bound cannot
 /// tell, and by a rounding it cannot certify: the caller runs the same code at the next stage.
 struct uncertain : std::exception {
-  const char* what() const noexcept override { return "cdref::uncertain: a bounded value cannot decide the comparison"; }
+  const char* what() const noexcept override {
+    return "cdref::uncertain: a bounded value cannot decide the comparison";
+  }
 };
 
 /// A double with a rigorous bound on its error (the derivation above).
@@ -185,16 +187,15 @@ class Bounded {
   double v_ = 0, e_ = 0;
 };
 
-
 template <>
-struct number_traits<cdref::Bounded> {
-  static constexpr bool is_exact = false;  // a filter: it answers or throws cdref::uncertain
+struct number_traits<Bounded> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws uncertain
   static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
-  using sqrt_type = cdref::Bounded;
-  static cdref::Bounded sqrt(const cdref::Bounded& x) { return cdref::Bounded::root(x); }
-  static bool is_finite(const cdref::Bounded& x) { return x.finite(); }
-  static double to_double(const cdref::Bounded& x) { return x.rounded(); }
-  static float to_float(const cdref::Bounded& x) { return x.rounded_float(); }
+  using sqrt_type = Bounded;
+  static Bounded sqrt(const Bounded& x) { return Bounded::root(x); }
+  static bool is_finite(const Bounded& x) { return x.finite(); }
+  static double to_double(const Bounded& x) { return x.rounded(); }
+  static float to_float(const Bounded& x) { return x.rounded_float(); }
   static std::string name() { return "Bounded"; }
 };
 }  // namespace cdref

@@ -383,16 +383,15 @@ class Bounded2 {
   double hi_ = 0, lo_ = 0, e_ = 0;
 };
 
-
 template <>
-struct number_traits<cdref::Bounded2> {
-  static constexpr bool is_exact = false;  // a filter: it answers or throws cdref::uncertain
+struct number_traits<Bounded2> {
+  static constexpr bool is_exact = false;  // a filter: it answers or throws uncertain
   static constexpr sqrt_support sqrt_kind = sqrt_support::rounded;
-  using sqrt_type = cdref::Bounded2;
-  static cdref::Bounded2 sqrt(const cdref::Bounded2& x) { return cdref::Bounded2::root(x); }
-  static bool is_finite(const cdref::Bounded2& x) { return x.finite(); }
-  static double to_double(const cdref::Bounded2& x) { return x.rounded(); }
-  static float to_float(const cdref::Bounded2& x) { return x.rounded_float(); }
+  using sqrt_type = Bounded2;
+  static Bounded2 sqrt(const Bounded2& x) { return Bounded2::root(x); }
+  static bool is_finite(const Bounded2& x) { return x.finite(); }
+  static double to_double(const Bounded2& x) { return x.rounded(); }
+  static float to_float(const Bounded2& x) { return x.rounded_float(); }
   static std::string name() { return "Bounded2"; }
 };
 }  // namespace cdref
