@@ -28,8 +28,8 @@
 #include "queries/triangle_casts.hpp"
 #include "queries/sphere_triangle.hpp"
 #include "queries/triangle_triangle.hpp"
-#include <cdref/filter/sat_grid.hpp>
-#include <cdref/filter/sat_words.hpp>
+#include <cdref/filters/sat_grid.hpp>
+#include <cdref/filters/sat_words.hpp>
 #include <cdref/robust/box_box.hpp>
 #include <cdref/robust/ray_box.hpp>
 #include <algorithm>
@@ -147,7 +147,7 @@ TEST_CASE("oracle::classify equals the book at Gmpq on every family of every que
 TEST_CASE("the sphere filter's sign of sigma at range near tangency equals the exact one", "[oracle-classify]") {
   // Shots tangent to the sphere from 10^4 to 10^12 radii away, 10,000 a scale: there the crude
   // bound on sigma's error (|s|^2 |r|^2) declines and the Cauchy-Schwarz bound or the finer one
-  // decides (float/cdref/filter/sphere_filter.hpp). Every sign the filter gives is the rational
+  // decides (float/cdref/filters/sphere_filter.hpp). Every sign the filter gives is the rational
   // stage's. Both bounds decide most cases at 10^4 and 10^5 radii and few beyond 10^7 (the band
   // they leave is about u |s| wide), so the cells hold decisions in both regimes; a bound left
   // six times too small decided some of them wrongly.
@@ -333,10 +333,10 @@ std::optional<double> double_path(const Shot& x, const Solid& y, int stage) {
   else {
     if (stage != 1) return std::nullopt;
     std::optional<double> v;
-    std::optional<oracle::word_bounds::ObbFace> face;  // an oriented box's entering face, from its filter
+    std::optional<filters::obb_face::ObbFace> face;  // an oriented box's entering face, from its filter
     if constexpr (std::is_same_v<Solid, OrientedBox<double>>) {
-      oracle::staged::ObbFilter filter = oracle::staged::obb_filter(x, y);
-      oracle::staged::filter(filter);
+      filters::staged::ObbFilter filter = filters::staged::obb_filter(x, y);
+      filters::staged::filter(filter);
       face = ed::crossed_face(filter, det3_sign(y.axis[0], y.axis[1], y.axis[2]), false);
       v = ed::obb_double<ed::SplitProduct>(x, y, face);
       // every face, without the filter's pick: the same value wherever both answer
@@ -484,8 +484,8 @@ TEST_CASE("oracle::enter on an oriented box: the entering face alone outside in_
       INFO("case " << n);
       REQUIRE(same_enter(oracle::enter(shot, b), want));
       if (!truth.hit) return;
-      oracle::staged::ObbFilter f = oracle::staged::obb_filter(shot, b);
-      oracle::staged::filter(f);
+      filters::staged::ObbFilter f = filters::staged::obb_filter(shot, b);
+      filters::staged::filter(f);
       const auto face = ed::crossed_face(f, det3_sign(b.axis[0], b.axis[1], b.axis[2]), false);
       if (!face || face->plane < 0) return;
       ++tried;
@@ -810,7 +810,7 @@ TEST_CASE("the triangle filter's exact second look: shots through vertices and e
 
 TEST_CASE("the triangle filter's grid: each axis's coordinates as integers, triple products exact in 128 and 192 bits",
           "[oracle-classify][triangle-cast]") {
-  namespace ev = oracle::ray_triangle::exact_eval;
+  namespace ev = filters::ray_triangle::exact_eval;
   // dyadic(): x = m 2^e with m odd
   CHECK((ev::dyadic(12).m == 3 && ev::dyadic(12).e == 2));
   CHECK((ev::dyadic(-0.375).m == -3 && ev::dyadic(-0.375).e == -3));
@@ -945,7 +945,7 @@ void obb_words_on_every_family(std::uint64_t& decided, std::uint64_t& left_by_fi
       for (std::uint64_t i = 0; i < 60; ++i) {
         const Inputs in = make_case(5, q, f, k, i);
         const auto [shot, box] = Q::template make<double>(in);
-        const int w = oracle::word_bounds::obb_cast_words(shot, box);
+        const int w = filters::box_cast_words::obb_cast_words(shot, box);
         const bool filter_left = oracle::sat::at_stage(Stage::filter, shot, box) == oracle::sat::unknown;
         INFO(Q::name << " " << f.name << "/" << k << " case " << i);
         if (f.name == "long-range" && filter_left) {
@@ -993,8 +993,8 @@ void aabb_pairs_on_every_family(std::uint64_t& decided, std::uint64_t& left, std
           if constexpr (Ray) return a.direction; else return a.target;
         }();
         const staged::BoxExact x(a.source, to, b, !Ray);
-        const oracle::word_bounds::AabbWords<robust::SplitProduct> ws(a.source, to, b, !Ray);
-        const oracle::word_bounds::AabbWords<robust::FusedProduct> wf(a.source, to, b, !Ray);
+        const filters::box_cast_words::AabbWords<robust::SplitProduct> ws(a.source, to, b, !Ray);
+        const filters::box_cast_words::AabbWords<robust::FusedProduct> wf(a.source, to, b, !Ray);
         unsigned bs = 0, bt = 0;
         for (int j = 0; j < 3; ++j) {
           if (x.src_lo(j) < 0) bs |= 1u << (2 * j);
@@ -1042,9 +1042,9 @@ void aabb_cast_words_on_every_family(std::uint64_t& decided, std::uint64_t& left
         const auto [a, b] = Q::template make<double>(make_case(13, q, f, k, i));
         INFO(Q::name << " " << f.name << "/" << k << " case " << i);
         const bool near = f.name == "grazing" && k >= 20;
-        const bool filtered = oracle::staged::filter(a, b) != oracle::staged::unknown;
+        const bool filtered = filters::staged::filter(a, b) != filters::staged::unknown;
         near_left += near && !filtered;
-        const int w = oracle::word_bounds::aabb_cast_words(a, b);
+        const int w = filters::box_cast_words::aabb_cast_words(a, b);
         if (w == oracle::staged::unknown) {
           ++left;
           continue;
@@ -1087,7 +1087,7 @@ namespace {
 struct OpenAxesCounts {
   std::uint64_t left = 0, decided = 0, near_left = 0, near_decided = 0;
 };
-// The axes the first stage leaves open, on double words alone (filter/sat_words.hpp): wherever
+// The axes the first stage leaves open, on double words alone (filters/sat_words.hpp): wherever
 // they decide, the solid's answer at CGAL::Gmpq; the robust tier's certified decision agrees.
 template <class Q>
 void open_axes_on_every_family(OpenAxesCounts& c) {
@@ -1098,7 +1098,7 @@ void open_axes_on_every_family(OpenAxesCounts& c) {
         const Inputs in = make_case(7, q, f, k, i);
         const auto [a, b] = Q::template make<double>(in);
         unsigned open = 0;
-        const int fil = oracle::sat::filter(a, b, nullptr, &open);
+        const int fil = filters::sat::filter(a, b, nullptr, &open);
         INFO(Q::name << " " << f.name << "/" << k << " case " << i << " open axes " << open);
         if (fil != oracle::sat::unknown) {
           REQUIRE(open == 0);  // a decided first stage leaves nothing open
@@ -1107,8 +1107,8 @@ void open_axes_on_every_family(OpenAxesCounts& c) {
         ++c.left;
         const bool near = (f.name == "near-touching" || f.name == "grazing") && k >= 20;
         c.near_left += near;
-        const int w = oracle::sat_words::decide(a, b, open);
-        if (w == oracle::sat_words::unknown) continue;
+        const int w = filters::sat_words::decide(a, b, open);
+        if (w == filters::sat_words::unknown) continue;
         ++c.decided;
         c.near_decided += near;
         REQUIRE(w == oracle::sat::at_stage(Stage::rational, a, b));
@@ -1120,7 +1120,7 @@ void open_axes_on_every_family(OpenAxesCounts& c) {
 }  // namespace
 
 namespace {
-// Every axis's s1 = lo - r_B and s2 = -r_B - hi on double words (filter/sat_words.hpp) against the
+// Every axis's s1 = lo - r_B and s2 = -r_B - hi on double words (filters/sat_words.hpp) against the
 // same expressions at CGAL::Gmpq on the same exact pairs: each word within its bound.
 using Qn = CGAL::Gmpq;
 Qn qpair(const robust::Pair<double>& p) { return Qn(p.hi) + Qn(p.lo); }
@@ -1136,7 +1136,7 @@ Qn qradius(const robust::Pair<double> (&g)[3][3], const double (&h)[3], const Qn
   for (int k = 0; k < 3; ++k) r += Qn(h[k]) * CGAL::abs(qdot(g[k], L));
   return r;
 }
-void exact_axis(const oracle::sat_words::Shapes& s, int index, Qn& s1, Qn& s2) {
+void exact_axis(const filters::sat_words::Shapes& s, int index, Qn& s1, Qn& s2) {
   Qn L[3];
   if (index < s.faces) {
     if (s.zonotope) qcross(s.ga[(index + 1) % 3], s.ga[(index + 2) % 3], L);
@@ -1163,7 +1163,7 @@ void exact_axis(const oracle::sat_words::Shapes& s, int index, Qn& s1, Qn& s2) {
   s1 = lo - rb, s2 = -rb - hi;
 }
 template <class Mul>
-void check_enclosure(const oracle::word_bounds::Word& w, const Qn& exact, double& worst) {
+void check_enclosure(const word_bounds::Word& w, const Qn& exact, double& worst) {
   const Qn err = CGAL::abs(qpair(w.v) - exact);
   REQUIRE(err <= Qn(w.e));
   if (w.e > 0) worst = std::max(worst, CGAL::to_double(err / Qn(w.e)));
@@ -1176,19 +1176,19 @@ void enclosures_on_families(std::uint64_t& axes, double& worst) {
     for (int k : f.scales)
       for (std::uint64_t i = 0; i < 8; ++i) {
         const auto [a, b] = Q::template make<double>(make_case(9, q, f, k, i));
-        const oracle::sat_words::Shapes s = oracle::sat_words::shapes(a, b);
+        const filters::sat_words::Shapes s = filters::sat_words::shapes(a, b);
         if (!s.ok) continue;
         INFO(Q::name << " " << f.name << "/" << k << " case " << i);
         for (int index = 0; index < s.faces + 3 + 3 * s.edges; ++index) {
           Qn e1, e2;
           exact_axis(s, index, e1, e2);
-          oracle::word_bounds::Word w1, w2;
-          oracle::sat_words::axis_words<oracle::word_bounds::SplitProduct>(s, index, w1, w2);
-          check_enclosure<oracle::word_bounds::SplitProduct>(w1, e1, worst);
-          check_enclosure<oracle::word_bounds::SplitProduct>(w2, e2, worst);
-          oracle::sat_words::axis_words<oracle::word_bounds::FusedProduct>(s, index, w1, w2);
-          check_enclosure<oracle::word_bounds::FusedProduct>(w1, e1, worst);
-          check_enclosure<oracle::word_bounds::FusedProduct>(w2, e2, worst);
+          word_bounds::Word w1, w2;
+          filters::sat_words::axis_words<word_bounds::SplitProduct>(s, index, w1, w2);
+          check_enclosure<word_bounds::SplitProduct>(w1, e1, worst);
+          check_enclosure<word_bounds::SplitProduct>(w2, e2, worst);
+          filters::sat_words::axis_words<word_bounds::FusedProduct>(s, index, w1, w2);
+          check_enclosure<word_bounds::FusedProduct>(w1, e1, worst);
+          check_enclosure<word_bounds::FusedProduct>(w2, e2, worst);
           ++axes;
         }
       }
@@ -1212,7 +1212,7 @@ namespace {
 struct FaceCounts {
   std::uint64_t decided = 0, open_cases = 0, axes_checked = 0, words_decided = 0, near_open = 0, near_decided = 0;
 };
-// Theorem 3.1 in B's face coordinates (filter/sat_filter.hpp, filter_face_coordinates): wherever it
+// Theorem 3.1 in B's face coordinates (filters/sat_filter.hpp, filter_face_coordinates): wherever it
 // decides, the solid's answer at CGAL::Gmpq; where it leaves axes open, every other axis has exact
 // s1, s2 < 0 in the world coordinates the double words use (the oracle and the robust tier take
 // the open axes straight to the words: robust/separating_axes.hpp, stages_before_whole), and the
@@ -1227,7 +1227,7 @@ void face_coordinates_on_every_family(FaceCounts& c, int per_scale) {
         const auto [a, b] = Q::template make<double>(make_case(11, q, f, k, i));
         INFO(Q::name << " " << f.name << "/" << k << " case " << i);
         unsigned open = 0;
-        const int face = oracle::sat::filter_face_coordinates(a, b, &open);
+        const int face = filters::sat::filter_face_coordinates(a, b, &open);
         if (face != oracle::sat::unknown) {
           ++c.decided;
           REQUIRE(open == 0);
@@ -1235,7 +1235,7 @@ void face_coordinates_on_every_family(FaceCounts& c, int per_scale) {
           continue;
         }
         if (open == 0 || scaled) continue;
-        const oracle::sat_words::Shapes s = oracle::sat_words::shapes(a, b);
+        const filters::sat_words::Shapes s = filters::sat_words::shapes(a, b);
         if (!s.ok) continue;
         INFO("open " << open);
         ++c.open_cases;
@@ -1249,8 +1249,8 @@ void face_coordinates_on_every_family(FaceCounts& c, int per_scale) {
           REQUIRE(e2 < 0);
           ++c.axes_checked;
         }
-        const int w = oracle::sat_words::decide(a, b, open);
-        if (w == oracle::sat_words::unknown) continue;
+        const int w = filters::sat_words::decide(a, b, open);
+        if (w == filters::sat_words::unknown) continue;
         ++c.words_decided;
         c.near_decided += near;
         REQUIRE(w == oracle::sat::at_stage(Stage::rational, a, b));
@@ -1317,10 +1317,10 @@ TEST_CASE("the open axes alone decide: a triangle's plane 2^-48 from a box's cor
     const Triangle<double> tri{{Vec3<double>(5 + t, -1 + t, -1 + t), Vec3<double>(-1 + t, 5 + t, -1 + t),
                                 Vec3<double>(-1 + t, -1 + t, 5 + t)}};
     unsigned open = 0;
-    REQUIRE(oracle::sat::filter(tri, b, nullptr, &open) == oracle::sat::unknown);
+    REQUIRE(filters::sat::filter(tri, b, nullptr, &open) == filters::sat::unknown);
     INFO("open axes " << open);
     REQUIRE(open == 1u);
-    const int w = oracle::sat_words::decide(tri, b, open);
+    const int w = filters::sat_words::decide(tri, b, open);
     REQUIRE(w == (t < 0 ? 1 : 0));
     REQUIRE(w == oracle::sat::at_stage(Stage::rational, tri, b));
     REQUIRE(oracle::classify(tri, b) == (t < 0));
@@ -1366,7 +1366,7 @@ TEMPLATE_TEST_CASE("a triangle and a box on a grid: the book's 13 axes exactly, 
           for (int c = 0; c < 3; ++c) finite = finite && std::isfinite(v[c]);
         if (!finite) continue;
         const auto dv = [](const Vec3<F>& v) { return Vec3<double>(v[0], v[1], v[2]); };
-        const oracle::sat_grid::TriangleBox g(Triangle<double>{{dv(t.vertex[0]), dv(t.vertex[1]), dv(t.vertex[2])}},
+        const filters::sat_grid::TriangleBox g(Triangle<double>{{dv(t.vertex[0]), dv(t.vertex[1]), dv(t.vertex[2])}},
                                               Box<double>{dv(b.center), dv(b.extent)});
         ++total;
         const bool degen = f.name == "degenerate";
@@ -1415,7 +1415,7 @@ void shot_box_on_every_family(int& on_grid, int& total, int& off_grid_near) {
         if (!finite) continue;
         ++total;
         const auto dv = [](const Vec3<F>& v) { return Vec3<double>(v[0], v[1], v[2]); };
-        const oracle::sat_grid::ShotBox g(dv(a.source), dv(to), Box<double>{dv(b.center), dv(b.extent)}, !IsRay);
+        const filters::sat_grid::ShotBox g(dv(a.source), dv(to), Box<double>{dv(b.center), dv(b.extent)}, !IsRay);
         // every coordinate within a few units of the origin: on a grid (not so 10^k away, and a
         // ray nearly parallel to a face takes direction grids too far apart)
         const bool near_origin = f.name == "uniform" || f.name == "grazing" || f.name == "planes" || f.name == "degenerate";
@@ -1450,7 +1450,7 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
   const double h = std::ldexp(1.0, -50), tiny = std::ldexp(1.0, -1070);
   const auto both = [&](const Segment<double>& sg, bool meets) {
     INFO("segment " << sg.source << " -> " << sg.target);
-    const oracle::sat_grid::ShotBox g(sg.source, sg.target, unit, true);
+    const filters::sat_grid::ShotBox g(sg.source, sg.target, unit, true);
     REQUIRE(g.ok);
     REQUIRE((g.axis < 0) == meets);
     require_book_at_gmpq(robust::separate(sg, unit), sg, unit);
@@ -1473,12 +1473,12 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
     for (const bool past : {false, true}) {
       INFO((past ? "past" : "on") << " the face");
       const Segment<double> sg{V(K, 3, -7), V(past ? e + std::ldexp(1.0, -51) : e, 0.5, 0.25)};
-      const oracle::sat_grid::ShotBox g(sg.source, sg.target, fine, true);
+      const filters::sat_grid::ShotBox g(sg.source, sg.target, fine, true);
       REQUIRE(g.ok);
       REQUIRE((g.axis < 0) == !past);
       require_book_at_gmpq(robust::separate(sg, fine), sg, fine);
       const Ray<double> r{V(K, past ? e + std::ldexp(1.0, -51) : e, 0.25), V(-1, 0, 0)};  // along the face y = e
-      const oracle::sat_grid::ShotBox gr(r.source, r.direction, fine, false);
+      const filters::sat_grid::ShotBox gr(r.source, r.direction, fine, false);
       REQUIRE(gr.ok);
       REQUIRE((gr.axis < 0) == !past);
       require_book_at_gmpq(robust::separate(r, fine), r, fine);
@@ -1488,12 +1488,12 @@ TEMPLATE_TEST_CASE("a segment or a ray and a box on a grid: the book's 6 axes ex
   }
   const Box<double> sub{V(tiny, tiny, tiny), V(tiny, 0, tiny)};
   const Segment<double> across{V(-4 * tiny, tiny, tiny), V(4 * tiny, tiny, tiny)};
-  const oracle::sat_grid::ShotBox g(across.source, across.target, sub, true);
+  const filters::sat_grid::ShotBox g(across.source, across.target, sub, true);
   REQUIRE(g.ok);
   REQUIRE(g.axis < 0);
   require_book_at_gmpq(robust::separate(across, sub), across, sub);
   const Segment<double> above{V(-4 * tiny, 2 * tiny, tiny), V(4 * tiny, 3 * tiny, tiny)};
-  REQUIRE(oracle::sat_grid::ShotBox(above.source, above.target, sub, true).axis >= 0);
+  REQUIRE(filters::sat_grid::ShotBox(above.source, above.target, sub, true).axis >= 0);
   require_book_at_gmpq(robust::separate(above, sub), above, sub);
 }
 
@@ -1569,7 +1569,7 @@ TEST_CASE("a triangle and a box on a grid: exact ties, subnormals, and inputs no
   };
   for (const Case& c : cases) {
     INFO(c.what);
-    const oracle::sat_grid::TriangleBox g(c.t, c.b);
+    const filters::sat_grid::TriangleBox g(c.t, c.b);
     REQUIRE(g.ok);
     REQUIRE((g.axis < 0) == c.intersect);
     require_book_at_gmpq(robust::separate(c.t, c.b), c.t, c.b);
@@ -1584,7 +1584,7 @@ TEST_CASE("a triangle and a box on a grid: exact ties, subnormals, and inputs no
     const double s = std::ldexp(1.0, -530), w = std::ldexp(1.0, -565);
     const Triangle<double> t{{V(0, 0, 0), V(0, (1 + std::ldexp(1.0, -14) + std::ldexp(1.0, -15)) * s, w), V(0, w, s)}};
     const Box<double> b{V(-2 * s, 0, 0), V(s, s, s)};
-    const oracle::sat_grid::TriangleBox g(t, b);
+    const filters::sat_grid::TriangleBox g(t, b);
     REQUIRE(g.ok);
     REQUIRE(g.axis == 0);
     Vec3<double> n;
@@ -1596,18 +1596,18 @@ TEST_CASE("a triangle and a box on a grid: exact ties, subnormals, and inputs no
   // extent's grid, their differences and the extent far fewer: on the grid
   const Triangle<double> far{{V(1e12, 0, 0), V(1e12, 1, 0), V(1e12, 0, 1)}};
   const Box<double> near{V(1e12 - 1, 0, 0), V(1 + 0.1, 1, 1)};
-  REQUIRE(oracle::sat_grid::TriangleBox(far, near).ok);
+  REQUIRE(filters::sat_grid::TriangleBox(far, near).ok);
   require_book_at_gmpq(robust::separate(far, near), far, near);
   // a vertex 10^12 from a box of extent 0.1: the difference needs about 95 bits there: no grid,
   // and the other stages answer
   const Triangle<double> away{{V(1e12, 0, 0), V(0, 0.05, 0), V(0, 0, 0.05)}};
   const Box<double> small{V(0, 0, 0), V(0.1, 0.1, 0.1)};
-  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(away, small).ok);
+  REQUIRE_FALSE(filters::sat_grid::TriangleBox(away, small).ok);
   REQUIRE(oracle::classify(away, small) ==
           book::separate(oracle::rational_inputs::toq(away), oracle::rational_inputs::toq(small)).intersect);
   // a NaN is on no grid (the checks refuse it before any stage)
   const Triangle<double> bad{{V(std::nan(""), 0, 0), V(0, 0, 0), V(0, 0, 0)}};
-  REQUIRE_FALSE(oracle::sat_grid::TriangleBox(bad, unit).ok);
+  REQUIRE_FALSE(filters::sat_grid::TriangleBox(bad, unit).ok);
 }
 
 TEST_CASE("a sphere and an oriented box: the first stage's certificates on double words decide as the solid at Gmpq",
@@ -1619,23 +1619,23 @@ TEST_CASE("a sphere and an oriented box: the first stage's certificates on doubl
     for (int k : f.scales)
       for (std::uint64_t i = 0; i < 60; ++i) {
         const auto [s0, b0] = Q::template make<double>(make_case(7, q, f, k, i));
-        if (oracle::sphere_obb::filter(s0, b0) != oracle::sat::unknown) continue;
+        if (filters::sphere_obb::filter(s0, b0) != filters::sat::unknown) continue;
         INFO(f.name << "/" << k << " case " << i);
         const bool near = f.name == "near-touching" && k >= 20;
         ++left;
         near_left += near;
-        const int w = oracle::sat_words::decide(s0, b0);
-        if (w == oracle::sat_words::unknown) continue;
+        const int w = filters::sat_words::decide(s0, b0);
+        if (w == filters::sat_words::unknown) continue;
         ++decided;
         near_decided += near;
         REQUIRE(w == int(oracle::sphere_obb::rational(s0, b0)));
         Sphere<double> s;
         OrientedBox<double> b;
-        REQUIRE(oracle::word_bounds::in_word_range(s0, b0, s, b));
+        REQUIRE(word_bounds::in_word_range(s0, b0, s, b));
         if (w == 1) {  // the certificate itself, at Gmpq: x in the box and |q - x| <= rho
           robust::Pair<double> dp[3], g[3];
-          oracle::word_bounds::Word ww[3];
-          oracle::sat_words::sphere_obb_point<oracle::word_bounds::SplitProduct>(s, b, dp, g, ww);
+          word_bounds::Word ww[3];
+          filters::sat_words::sphere_obb_point<word_bounds::SplitProduct>(s, b, dp, g, ww);
           Qn dist2 = 0;
           for (int c = 0; c < 3; ++c) {
             Qn x = Qn(b.center[c]);
@@ -1694,7 +1694,7 @@ TEST_CASE("a sphere touching an oriented box with the coordinate axes exactly is
     if (off == 2) s.radius = std::nextafter(s.radius, 1e300);
     INFO("case " << n);
     Box<double> aabb;
-    REQUIRE(oracle::sphere_obb::as_axis_aligned(b, aabb));
+    REQUIRE(filters::sphere_obb::as_axis_aligned(b, aabb));
     const bool truth = oracle::sphere_obb::rational(s, b);
     REQUIRE(truth == (off != 1));  // the solid at Gmpq: touching meets, one ulp short does not
     REQUIRE(truth == staged::rational(s, aabb));  // the same box as an axis-aligned one
@@ -1708,16 +1708,16 @@ TEST_CASE("a sphere touching an oriented box with the coordinate axes exactly is
   OrientedBox<double> r{Vec3<double>(0, 0, 0), Vec3<double>(1, 1, 1),
                         {Vec3<double>(0.6, 0.8, 0), Vec3<double>(-0.8, 0.6, 0), Vec3<double>(0, 0, 1)}};
   Box<double> aabb;
-  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  CHECK_FALSE(filters::sphere_obb::as_axis_aligned(r, aabb));
   r.axis = {Vec3<double>(1, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 0, 1)};  // repeated axis
-  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  CHECK_FALSE(filters::sphere_obb::as_axis_aligned(r, aabb));
   r.axis = {Vec3<double>(2, 0, 0), Vec3<double>(0, 1, 0), Vec3<double>(0, 0, 1)};  // not unit
-  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  CHECK_FALSE(filters::sphere_obb::as_axis_aligned(r, aabb));
   r.axis = {Vec3<double>(1, 0, 0), Vec3<double>(0, -1, 0), Vec3<double>(0, 0, std::nan(""))};
-  CHECK_FALSE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  CHECK_FALSE(filters::sphere_obb::as_axis_aligned(r, aabb));
   r.axis = {Vec3<double>(0, 0, -1), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)};
   r.extent = Vec3<double>(1, 2, 3);
-  REQUIRE(oracle::sphere_obb::as_axis_aligned(r, aabb));
+  REQUIRE(filters::sphere_obb::as_axis_aligned(r, aabb));
   CHECK(aabb.extent == Vec3<double>(2, 3, 1));
 }
 
@@ -1754,7 +1754,7 @@ void orientation_words_on_families(std::uint64_t& left, std::uint64_t& decided, 
 
 TEST_CASE("two polygons: the pairs' first stage with its open plane signs on double words decides as the union at Gmpq",
           "[oracle-classify][triangle]") {
-  // filter/triangle_words.hpp, polygon_on_words: wherever it decides, the union of the fan pairs'
+  // filters/triangle_words.hpp, polygon_on_words: wherever it decides, the union of the fan pairs'
   // answers at CGAL::Gmpq, the robust decision certain and equal, and everything the static
   // bounds alone decide (polygon_filter), with the same answer.
   using Q = queries::PolygonPolygon;
@@ -1766,8 +1766,8 @@ TEST_CASE("two polygons: the pairs' first stage with its open plane signs on dou
         const auto [a, b] = Q::template make<double>(make_case(17, q, f, k, i));
         INFO(f.name << "/" << k << " case " << i);
         bool words = false;
-        const int w = oracle::triangle_triangle::polygon_on_words(a, b, &words);
-        const int fil = oracle::triangle_triangle::polygon_filter(a, b);
+        const int w = filters::triangle_triangle::polygon_on_words(a, b, &words);
+        const int fil = filters::triangle_triangle::polygon_filter(a, b);
         const bool is_near = f.name == "near-touching" && k >= 50;
         near += is_near;
         near_filter += is_near && fil != oracle::triangle_triangle::unknown;
@@ -1820,12 +1820,12 @@ void sphere_triangle_words_on_families(std::uint64_t& left, std::uint64_t& decid
     for (int k : f.scales)
       for (std::uint64_t i = 0; i < (f.name == "near-touching" ? 300u : 60u); ++i) {
         const auto [s, t] = Q::template make<double>(make_case(7, q, f, k, i));
-        if (oracle::sphere_triangle::filter(s, t) != oracle::sphere_triangle::unknown) continue;
+        if (filters::sphere_triangle::filter(s, t) != filters::sphere_triangle::unknown) continue;
         INFO(f.name << "/" << k << " case " << i);
         const bool near = f.name == "near-touching" && k >= 20;
         ++left;
         near_left += near;
-        const int w = oracle::sphere_triangle::certificates_on_words(s, t);
+        const int w = filters::sphere_triangle::certificates_on_words(s, t);
         if (w == oracle::sphere_triangle::unknown) continue;
         ++decided;
         near_decided += near;
@@ -2612,7 +2612,7 @@ TEST_CASE("two triangles on a grid: a separating plane and a coplanar pair exact
       for (std::uint64_t i = 0; i < 40; ++i) {
         const auto [a, b] = Q::template make<double>(make_case(17, q, f, k, i));
         INFO(f.name << "/" << k << " case " << i);
-        const int g = oracle::triangle_triangle::on_grid(a, b);
+        const int g = filters::triangle_triangle::on_grid(a, b);
         const bool cop = f.name == "coplanar";
         coplanar_cases += cop;
         if (g == oracle::triangle_triangle::unknown) continue;
@@ -2663,7 +2663,7 @@ TEST_CASE("two triangles on a grid: a separating plane and a coplanar pair exact
     for (const bool swap : {false, true}) {
       const Triangle<double>& a = swap ? c.b : c.a;
       const Triangle<double>& b = swap ? c.a : c.b;
-      REQUIRE(oracle::triangle_triangle::on_grid(a, b) == int(c.intersect));
+      REQUIRE(filters::triangle_triangle::on_grid(a, b) == int(c.intersect));
       const TriangleIntersection<double> r = robust::intersect(a, b);
       REQUIRE(r.intersect == c.intersect);
       REQUIRE(r.coplanar == c.intersect);
@@ -2672,13 +2672,13 @@ TEST_CASE("two triangles on a grid: a separating plane and a coplanar pair exact
     }
   }
   // crossing planes, a zero-area triangle, an axis too wide for a grid: not decided here
-  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, -1), V(2, 0, 1), V(0, 2, 1)}},
+  REQUIRE(filters::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, -1), V(2, 0, 1), V(0, 2, 1)}},
                                              Triangle<double>{{V(0, 0, 1), V(2, 0, -1), V(0, 2, -1)}}) ==
           oracle::triangle_triangle::unknown);
-  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, 3), V(1, 1, 3), V(2, 2, 3)}},
+  REQUIRE(filters::triangle_triangle::on_grid(Triangle<double>{{V(0, 0, 3), V(1, 1, 3), V(2, 2, 3)}},
                                              Triangle<double>{{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}) ==
           oracle::triangle_triangle::unknown);
-  REQUIRE(oracle::triangle_triangle::on_grid(Triangle<double>{{V(1e12, 0, 3), V(0.1, 0, 3), V(0, 2, 3)}},
+  REQUIRE(filters::triangle_triangle::on_grid(Triangle<double>{{V(1e12, 0, 3), V(0.1, 0, 3), V(0, 2, 3)}},
                                              Triangle<double>{{V(0, 0, 3), V(2, 0, 3), V(0, 2, 3)}}) ==
           oracle::triangle_triangle::unknown);
 }
@@ -2693,7 +2693,7 @@ TEST_CASE("two triangles: the first stage's tests with their signs on double wor
       for (std::uint64_t i = 0; i < (f.name == "near-touching" ? 200u : 40u); ++i) {
         const auto [a, b] = Q::template make<double>(make_case(7, q, f, k, i));
         const bool near = f.name == "near-touching" && k >= 20;
-        const bool filter_left = oracle::triangle_triangle::filter(a, b) == oracle::triangle_triangle::unknown;
+        const bool filter_left = filters::triangle_triangle::filter(a, b) == filters::triangle_triangle::unknown;
         near_filtered += near && !filter_left;
         // what the filter leaves, and every near-touching case (its edge tests' exact grid look
         // decides those; the words meet them where an axis is too wide for the look)
@@ -2701,7 +2701,7 @@ TEST_CASE("two triangles: the first stage's tests with their signs on double wor
         INFO(f.name << "/" << k << " case " << i);
         ++left;
         near_left += near;
-        const int w = oracle::triangle_triangle::tests_on_words(a, b);
+        const int w = filters::triangle_triangle::tests_on_words(a, b);
         if (w == oracle::triangle_triangle::unknown) continue;
         ++decided;
         near_decided += near;
@@ -2825,7 +2825,7 @@ TEST_CASE("the box casts' separating axes filter alone equals the truth wherever
 TEST_CASE("the sphere filter's sigma decides only with the exact sign, its cruder bound near its edge",
           "[oracle-classify][sphere-cast]") {
   // sigma = |r|^2 rho^2 - |s x r|^2 is decided first against 23u |s|^2 |r|^2, then against the
-  // bound by components (filter/sphere_filter.hpp). Lines placed so that |sigma| is 2^-10 to
+  // bound by components (filters/sphere_filter.hpp). Lines placed so that |sigma| is 2^-10 to
   // 2^6 times u |s|^2 |r|^2 (log-uniform, either sign: the rounding errors of the computed
   // sigma are of that order, so a bound too small gets signs wrong), the source 1 to 2^24
   // radii from the centre (beyond, sigma cannot reach the band): wherever sigma() decides,

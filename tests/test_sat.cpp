@@ -382,7 +382,7 @@ TEST_CASE("with exactly orthonormal frames the book's oriented-box tests are the
 }
 
 TEST_CASE("the oriented box's slab filter is the solid's answer wherever it decides", "[sat][obb][oracle]") {
-  // The first stage for a segment or a ray and an oriented box (filter/box_cast_filter.hpp:
+  // The first stage for a segment or a ray and an oriented box (filters/box_cast_filter.hpp:
   // Algorithm 3.3 in face coordinates, static bounds) against Theorem 3.1 on the polytopes at
   // CGAL::Gmpq, on shots aimed at a face, an edge or a corner to within 2^-k of an extent (k up
   // to 60: the exact boundary and both sides of it), from near and from 10^12 away, on
@@ -428,13 +428,13 @@ TEST_CASE("the oriented box's slab filter is the solid's answer wherever it deci
     const bool ray = n % 2 == 1;
     const Segment<double> seg{aim + far * w, g() % 4 == 0 ? aim : Vec3<double>(aim - 2 * U(g) * w)};
     const Ray<double> r{aim + far * w, Vec3<double>(-w + 1e-3 * U(g) * vec())};
-    const int f = ray ? oracle::sat::filter(r, b) : oracle::sat::filter(seg, b);
+    const int f = ray ? filters::sat::filter(r, b) : filters::sat::filter(seg, b);
     const OrientedBox<Q> bq{toq(b.center), toq(b.extent), {toq(b.axis[0]), toq(b.axis[1]), toq(b.axis[2])}};
     const bool truth = ray ? solid::separate(Ray<Q>{toq(r.source), toq(r.direction)}, bq).intersect
                            : solid::separate(Segment<Q>{toq(seg.source), toq(seg.target)}, bq).intersect;
     ++total;
     hits += truth;
-    if (f != oracle::sat::unknown) {
+    if (f != filters::sat::unknown) {
       ++decided;
       if (f != int(truth)) {
         ++wrong;
@@ -453,7 +453,7 @@ TEST_CASE("the oriented box's slab filter is the solid's answer wherever it deci
 
 TEST_CASE("two oriented boxes: the face-coordinate filter is the solid's answer wherever it decides",
           "[sat][obb][oracle]") {
-  // filter/sat_filter.hpp's first stage for two oriented boxes (Theorem 3.1 in A's face
+  // filters/sat_filter.hpp's first stage for two oriented boxes (Theorem 3.1 in A's face
   // coordinates, static bounds) against Theorem 3.1 on the polytopes at CGAL::Gmpq: rotated,
   // sheared and scaled frames, B placed along a random direction from just inside to just
   // outside contact (a distance found in double, then moved by 2^-k), near and 10^12 away.
@@ -487,18 +487,18 @@ TEST_CASE("two oriented boxes: the face-coordinate filter is the solid's answer 
     }
     const double d = n % 3 == 0 ? 8 * std::fabs(U(g)) : lo * (1 + U(g) * std::ldexp(1.0, -int(g() % 50)));
     B.center = A.center + d * w;
-    const int f = oracle::sat::filter_face_coordinates(A, B);
+    const int f = filters::sat::filter_face_coordinates(A, B);
     const OrientedBox<Q> Aq{toq(A.center), toq(A.extent), {toq(A.axis[0]), toq(A.axis[1]), toq(A.axis[2])}};
     const OrientedBox<Q> Bq{toq(B.center), toq(B.extent), {toq(B.axis[0]), toq(B.axis[1]), toq(B.axis[2])}};
     const bool truth = solid::separate(Aq, Bq).intersect;
     ++total;
     hits += truth;
-    if (f != oracle::sat::unknown) {
+    if (f != filters::sat::unknown) {
       ++decided;
       INFO("case " << n);
       REQUIRE(f == int(truth));
     }
-    REQUIRE(oracle::sat::filter(A, B) != int(!truth));  // the whole first stage, too
+    REQUIRE(filters::sat::filter(A, B) != int(!truth));  // the whole first stage, too
   }
   CHECK(hits > total / 10);
   CHECK(total - hits > total / 10);
@@ -697,7 +697,7 @@ TEMPLATE_TEST_CASE("robust sphere-box: an exact touch is certain and so is one u
         const OrientedBox<double> obb{box.center, Vec3<double>(box.extent[1], box.extent[2], box.extent[0]),
                                       {Vec3<double>(0, 1, 0), Vec3<double>(0, 0, -1), Vec3<double>(-1, 0, 0)}};
         Box<double> back;
-        REQUIRE(oracle::sphere_obb::as_axis_aligned(obb, back));
+        REQUIRE(filters::sphere_obb::as_axis_aligned(obb, back));
         REQUIRE(back.extent == box.extent);
         const robust::Decision o = robust::decide(sp, obb);
         REQUIRE(o.certain);

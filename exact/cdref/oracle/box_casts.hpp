@@ -19,15 +19,15 @@
 
 #include <cdref/oracle/expansions.hpp>
 #include <cdref/oracle/stages.hpp>
-#include <cdref/filter/box_cast_filter.hpp>
-#include <cdref/bounded/word_bounds.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
+#include <cdref/filters/box_cast_words.hpp>
 
 namespace cdref::oracle {
 
 namespace staged {
 
 // ======================= ray / segment on a box =======================
-// Stage 1 (outcodes and the plane pairs in double): filter/box_cast_filter.hpp, which the robust
+// Stage 1 (outcodes and the plane pairs in double): filters/box_cast_filter.hpp, which the robust
 // tier runs first too. Stage 2 below: the same logic on exact signs.
 struct BoxExact {
   const Vec3<double> &src, &rt;
@@ -70,13 +70,13 @@ struct BoxExact {
     return sign(c);
   }
 };
-// The filter's signs, the plane pairs on double words (bounded/word_bounds.hpp, AabbWords), then
+// The filter's signs, the plane pairs on double words (filters/box_cast_words.hpp, AabbWords), then
 // the expansions. (The pairs on words: 2^-52 from grazing, a cast the filter left took about 500
 // ns a case, nine exact pairs at most, each a product of expansions.)
 template <class Mul>
 struct BoxStaged {
   BoxFilter f;
-  word_bounds::AabbWords<Mul> w;
+  filters::box_cast_words::AabbWords<Mul> w;
   BoxExact x;
   bool bounded;
   BoxStaged(const Vec3<double>& s, const Vec3<double>& t, const Box<double>& b, bool segment)
@@ -115,7 +115,7 @@ inline bool rational(const Ray<double>& s, const Box<double>& b, plain = {}) { r
 // Before the box casts' filter: the extents' signs and, for a ray, its direction (finite, not
 // zero), which the outcodes' range tests do not see (stages.hpp).
 inline bool unseen_valid(const Ray<double>& r, const Box<double>& b, plain) {
-  return signs_valid(b) && direction_valid(r.direction);
+  return filters::staged::signs_valid(b) && filters::staged::direction_valid(r.direction);
 }
 
 }  // namespace staged

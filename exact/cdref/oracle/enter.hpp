@@ -30,7 +30,7 @@
 #include <cdref/bounded/bounded2.hpp>
 #include <cdref/cdref.hpp>
 #include <cdref/bounded/word_bounds.hpp>
-#include <cdref/filter/obb_face.hpp>
+#include <cdref/filters/obb_face.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/eft.hpp>
@@ -46,6 +46,7 @@ namespace enter_detail {
 using robust::Pair;
 
 using namespace word_bounds;
+using namespace cdref::filters::obb_face;  // an oriented box's faces (shot_pairs: every shot's pairs)
 
 // w = x + l d for exact pairs x, d and a double l, as double words with their bounds.
 template <class Mul = SplitProduct>

@@ -15,14 +15,14 @@
 // linear in l: plane_parameter with the offset -+H_i. Rounding is monotone, so the largest of
 // the rounded parameters is the rounded largest. Range: robust::in_certified_range, every input
 // at most 2^200 (H_i is of degree 4).
-// First, though, the entering face alone (filter/obb_face.hpp: the classification's filter,
+// First, though, the entering face alone (filters/obb_face.hpp: the classification's filter,
 // kept, picks it from its certain signs, and that face's parameter alone on double words, about
 // 18 exact products instead of some 60 for three faces). Where the filter cannot tell (two
 // faces entered at nearly the same parameter, an outcode near 0) or the face's rounding is
 // uncertain, every face as above.
 #pragma once
 
-#include <cdref/filter/obb_face.hpp>
+#include <cdref/filters/obb_face.hpp>
 #include <cdref/oracle/enter.hpp>
 #include <cdref/oracle/separating_axes.hpp>
 
@@ -51,12 +51,12 @@ std::optional<double> face_entry(const Pair<double> (&sc)[3], const Pair<double>
   const Word U = dot_words<Mul>(sc, zero, n);
   // U + H < 0: outside the lower plane; U - H > 0: outside the upper one (sign_of is never 0)
   const int lower = sign_of(add_words(U, H, 1)), upper = sign_of(add_words(U, H, -1));
-  if (lower == staged::unknown || upper == staged::unknown) return std::nullopt;
+  if (lower == word_bounds::unknown || upper == word_bounds::unknown) return std::nullopt;
   if (lower > 0 && upper < 0) return 0.0;
   return plane_parameter<Mul>(sc, d, n, U, lower < 0 ? H : negated(H));
 }
 
-// The entering face's parameter alone (filter/obb_face.hpp), rounded; nothing where D's sign or
+// The entering face's parameter alone (filters/obb_face.hpp), rounded; nothing where D's sign or
 // the rounding is uncertain.
 template <class Mul>
 std::optional<double> one_face_entry(const Pair<double> (&sc)[3], const Pair<double> (&d)[3],
@@ -95,9 +95,9 @@ std::optional<double> obb_double(const Shot& x, const OrientedBox<double>& b, co
 // it does not), then on a hit the entering face from its signs.
 template <class Shot>
 Entry obb_enter(const Shot& x, const OrientedBox<double>& b, int det, bool* exact_used) {
-  staged::ObbFilter f = staged::obb_filter(x, b);
-  const int r = staged::filter(f);
-  const bool hit = r != staged::unknown ? r == 1 : sat::run(nullptr, x, b);
+  filters::staged::ObbFilter f = filters::staged::obb_filter(x, b);
+  const int r = filters::staged::filter(f);
+  const bool hit = r != filters::staged::unknown ? r == 1 : sat::run(nullptr, x, b);
   return entry_of(hit, x, b, exact_used, [&] { return solid_double(x, b, crossed_face(f, det, false)); });
 }
 }  // namespace enter_detail

@@ -58,8 +58,8 @@
 
 #include <cdref/cdref.hpp>
 #include <cdref/exact/rationals.hpp>
-#include <cdref/filter/box_cast_filter.hpp>
-#include <cdref/filter/sphere_filter.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
+#include <cdref/filters/sphere_filter.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/bounded/word_bounds.hpp>
@@ -73,8 +73,9 @@ namespace cdref::oracle {
 
 namespace staged {
 
-// (unknown, u, in_range and fsign: filter/box_cast_filter.hpp; le0, ge0, SphereFilter,
-// hit_sphere_logic and segment_sphere_logic: filter/sphere_filter.hpp)
+// The filters, the first stage: unknown, u, in_range and fsign (filters/box_cast_filter.hpp); le0,
+// ge0, SphereFilter, hit_sphere_logic and segment_sphere_logic (filters/sphere_filter.hpp).
+using namespace cdref::filters::staged;
 
 // ---- stage 2: expansions ----
 template <int N>

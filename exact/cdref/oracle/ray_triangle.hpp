@@ -3,10 +3,10 @@
 // CGAL::Gmpq, in three stages.
 //
 //   1. filter    the orientation form of the test (w0, w1, w2, Ns, Nt) in double with static
-//                error bounds (filter/triangle_filter.hpp derives them; the robust
+//                error bounds (filters/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
 //   2. double word  the signs stage 1 left, on double words with rigorous bounds
-//                (filter/triangle_words.hpp: a shot 2^-52 from an edge), then the book's hit()
+//                (filters/triangle_words.hpp: a shot 2^-52 from an edge), then the book's hit()
 //                run on double words (robust/words.hpp), certain when every comparison is
 //                (Stage::expansion names this stage here);
 //   3. rational  book::hit at CGAL::Gmpq (coplanar shots, shots through an edge or a vertex,
@@ -17,14 +17,16 @@
 #include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_words.hpp>
 #include <cdref/robust/ray_triangle.hpp>
 #include <cmath>
 
 namespace cdref::oracle {
 
 namespace ray_triangle {
+
+using namespace cdref::filters::ray_triangle;  // the filter and the double words (the first stages)
 
 inline int orientation_words(const Segment<double>& s, const Triangle<double>& t) {
   return orientation_on_words(s.source, &s.target, s.target, t);

@@ -12,7 +12,7 @@
 //                (two oriented boxes, a triangle and a box) Theorem 3.1 in B's face
 //                coordinates first (sat_filter.hpp, filter_face_coordinates);
 //                (sphere) a point of the box and a direction, each a certificate with a
-//                static bound (filter/sat_filter.hpp, with their derivations: the robust
+//                static bound (filters/sat_filter.hpp, with their derivations: the robust
 //                tier's certified decisions run them first too);
 //   2. double word  (a segment or a ray and an oriented box) Algorithm 3.3 in the box's face
 //                coordinates on double words, then the solid's cast decision on them; the axes
@@ -39,8 +39,8 @@
 #include <cdref/bounded/bounded.hpp>
 #include <cdref/oracle/sphere_box.hpp>
 #include <cdref/oracle/rational.hpp>
-#include <cdref/filter/sat_filter.hpp>
-#include <cdref/filter/sat_words.hpp>
+#include <cdref/filters/sat_filter.hpp>
+#include <cdref/filters/sat_words.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/robust/separating_axes.hpp>
 #include <cmath>
@@ -49,6 +49,8 @@ namespace cdref::oracle {
 
 namespace sat {
 
+using namespace cdref::filters::sat;  // the filter (the first stage), its axes and `unknown`
+
 // Stage 2: the double words: 1, 0 or unknown. (A segment or a ray and an oriented box: the
 // solid's cast decision first, as in the robust tier.) `open`: the axes stage 1 left open
 // (sat::filter); run on its own (at_stage), stage 2 asks stage 1 for them.
@@ -56,7 +58,7 @@ template <class A, class B>
 int double_word(const A& a, const B& b, unsigned open) {
   if constexpr (robust::detail::has_cast_decision<A, B, double>)
     if (const auto h = robust::detail::cast_decision_on_words(a, b)) return int(*h);
-  if (const int r = sat_words::decide(a, b, open); r != unknown) return r;
+  if (const int r = filters::sat_words::decide(a, b, open); r != unknown) return r;
   if (Separation<double> g; robust::detail::separation_on_grid(a, b, g)) return int(g.intersect);
   const auto [s, certain] = robust::detail::separation<double>(a, b);
   return certain ? int(s.intersect) : unknown;
@@ -143,7 +145,9 @@ inline bool classify(const OrientedBox<double>& a, const OrientedBox<double>& b,
 
 // ---- a sphere and an oriented box ----
 namespace sphere_obb {
-// (as_axis_aligned: filter/sat_filter.hpp)
+
+using namespace cdref::filters::sphere_obb;  // the filter (the first stage)
+// (as_axis_aligned: filters/sat_filter.hpp)
 // Stage 2: an axis-aligned box takes sphere-box's second stage and then its exact sign on
 // expansions (oracle/sphere_box.hpp: unknown only out of its scaled range); any other box the two
 // certificates on double words, then the robust tier's evaluation of the whole formulation.
@@ -152,7 +156,7 @@ inline int double_word(const Sphere<double>& s, const OrientedBox<double>& b) {
     if (const int r = staged::double_word(s, box); r != unknown) return r;
     if (const int r = staged::expansion(s, box); r != unknown) return r;
   }
-  if (const int r = sat_words::decide(s, b); r != unknown) return r;  // the two certificates
+  if (const int r = filters::sat_words::decide(s, b); r != unknown) return r;  // the two certificates
   const robust::Decision d = robust::decide(s, b);
   return d.certain ? int(d.value) : unknown;
 }

@@ -11,7 +11,7 @@
 
 #include <cdref/oracle/expansions.hpp>
 #include <cdref/oracle/stages.hpp>
-#include <cdref/filter/sphere_filter.hpp>
+#include <cdref/filters/sphere_filter.hpp>
 #include <cdref/robust/sphere_box.hpp>
 
 namespace cdref::oracle {
@@ -19,7 +19,7 @@ namespace cdref::oracle {
 namespace staged {
 
 // ======================= sphere-box =======================
-// The filter: filter/sphere_filter.hpp.
+// The filter: filters/sphere_filter.hpp.
 inline int expansion(const Sphere<double>& sp0, const Box<double>& box0, plain = {}) {
   Sphere<double> sp;
   Box<double> box;

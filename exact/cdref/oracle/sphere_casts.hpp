@@ -23,7 +23,7 @@
 
 #include <cdref/oracle/expansions.hpp>
 #include <cdref/oracle/stages.hpp>
-#include <cdref/filter/sphere_filter.hpp>
+#include <cdref/filters/sphere_filter.hpp>
 #include <cdref/robust/ray_sphere.hpp>
 #include <cdref/robust/segment_sphere.hpp>
 
@@ -32,7 +32,7 @@ namespace cdref::oracle {
 namespace staged {
 
 // ======================= ray / segment on a sphere =======================
-// The filter (SphereFilter) and the two algorithms' logic over signs: filter/sphere_filter.hpp.
+// The filter (SphereFilter) and the two algorithms' logic over signs: filters/sphere_filter.hpp.
 
 // Exact signs of the same polynomials (inputs already scaled into stage 2's range).
 struct SphereExact {

@@ -3,9 +3,9 @@
 // CGAL::Gmpq, in three stages.
 //
 //   1. filter    two certificates from one point of the triangle in double with static
-//                error bounds (filter/triangle_filter.hpp derives them; the robust
+//                error bounds (filters/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
-//   2. double word  stage 1's two certificates on double words (filter/triangle_words.hpp: a
+//   2. double word  stage 1's two certificates on double words (filters/triangle_words.hpp: a
 //                sphere 2^-52 from tangency), then the robust version's evaluation
 //                (robust/sphere_triangle.hpp), certain when every decisive comparison is
 //                (Stage::expansion names this stage here);
@@ -16,14 +16,16 @@
 #include <cdref/exact/rationals.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_words.hpp>
 #include <cdref/robust/sphere_triangle.hpp>
 #include <cmath>
 
 namespace cdref::oracle {
 
 namespace sphere_triangle {
+
+using namespace cdref::filters::sphere_triangle;  // the filter and the double words (the first stages)
 
 inline int double_word(const Sphere<double>& s, const Triangle<double>& t) {
   if (const int r = certificates_on_words(s, t); r != unknown) return r;

@@ -9,16 +9,26 @@
 // words where the query has them (`double_word`, reported as the expansion stage), the
 // expansions (`unknown` outside their range), then the rationals, which always decide. The
 // runner finds a query's functions by argument-dependent lookup through the tag it passes
-// (cdref/filter/stage_tags.hpp), so a query's file needs this file alone, and an edit to one
-// query's stages recompiles the units that use that query.
+// (below; the filters' own functions through the tag's base, cdref/filters/stage_tags.hpp), so a
+// query's file needs this file alone, and an edit to one query's stages recompiles the units
+// that use that query.
 #pragma once
 
-#include <cdref/filter/stage_tags.hpp>
+#include <cdref/filters/stage_tags.hpp>
 #include <cdref/oracle/expansions.hpp>
 #include <cdref/oracle/stage.hpp>
 #include <cdref/primitives.hpp>
 
 namespace cdref::oracle::staged {
+
+using namespace cdref::filters::staged;  // the filters (the first stage) and `unknown`
+
+// The tags that name a formulation to the stages (each stage function's last argument, passed
+// on by the runner): `plain`, the query's own algorithm, derived from the filters' tag so that
+// argument-dependent lookup finds the filters' functions too; `alg32`, Algorithm 3.2's
+// formulation of segment-sphere (book::intersect(Segment, Sphere); the cast's hit decides it too).
+struct plain : filters::staged::plain {};
+struct alg32 {};
 
 // One stage alone on validated inputs: 0 or 1, or `unknown` when that stage cannot decide
 // (the filter) or does not apply (expansion outside its range). For tests and benchmarks.
@@ -90,7 +100,7 @@ bool run(Stage* used, int filtered, const A& a, const B& b, Tag tag) {
 // Every input the filter leaves undecided, and every bad one, takes the checks
 // (cdref::invalid_input naming what is wrong, the same message as before) and then all the
 // stages, out of line.
-// (signs_valid(Box) and direction_valid: filter/box_cast_filter.hpp)
+// (signs_valid(Box) and direction_valid: filters/box_cast_filter.hpp)
 inline bool signs_valid(const Sphere<double>& s, plain = {}) { return s.radius >= 0; }
 inline bool signs_valid(const Segment<double>&, plain = {}) { return true; }
 inline bool signs_valid(const Ray<double>&, plain = {}) { return true; }  // a zero direction: sigma's range test

@@ -3,12 +3,12 @@
 // CGAL::Gmpq, in three stages.
 //
 //   1. filter    a separating plane, then the six edge-triangle casts, in double with
-//                static error bounds (filter/triangle_filter.hpp derives them; the robust
+//                static error bounds (filters/triangle_filter.hpp derives them; the robust
 //                tier runs the same stage first);
 //   2. double word  a separating plane, and the whole test of a coplanar pair, exactly on the
-//                inputs read as integers on a grid per coordinate axis (filter/triangle_grid.hpp);
+//                inputs read as integers on a grid per coordinate axis (filters/triangle_grid.hpp);
 //                stage 1's tests with the signs it leaves on double words
-//                (filter/triangle_words.hpp), then the robust version's evaluation
+//                (filters/triangle_words.hpp), then the robust version's evaluation
 //                (robust/triangle_triangle.hpp), certain when every comparison is
 //                (Stage::expansion names this stage here);
 //   3. rational  book::intersect at CGAL::Gmpq.
@@ -19,14 +19,16 @@
 #include <cdref/oracle/ray_triangle.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_grid.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_grid.hpp>
+#include <cdref/filters/triangle_words.hpp>
 #include <cdref/robust/triangle_triangle.hpp>
 
 namespace cdref::oracle {
 
 namespace triangle_triangle {
+
+using namespace cdref::filters::triangle_triangle;  // the filter and the double words (the first stages)
 
 inline int double_word(const Triangle<double>& a, const Triangle<double>& b) {
   // a pair that may be coplanar on the grid first: stage 1's tests on words took about 1,000 ns

@@ -183,7 +183,7 @@ constexpr bool cpu_fma() {
 // Flat: where the whole build is compiled for the extension, whether the fused path is still a
 // function of its own with every call flattened into it, as the run-time copy is. Only the paths
 // measured faster so ask for it: sphere-triangle's double-word certificates and its first look's
-// classification, triangle-triangle's double-word decisions (filter/triangle_words.hpp) and the
+// classification, triangle-triangle's double-word decisions (filters/triangle_words.hpp) and the
 // HotWords formulations (words.hpp); without it sphere-triangle's oracle took 1.4 times as long
 // near touching. Elsewhere a flattened copy measured no faster (the triangle casts', and
 // sphere-triangle's every-output path, slower) and costs compile time and code.

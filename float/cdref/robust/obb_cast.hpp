@@ -13,11 +13,11 @@
 //     face_parameter's hold there. A segment's parameters do not change, a ray's are multiplied
 //     by 2^(k - j) (lengths scaled by 2^-k, its direction by 2^-j), the point by 2^k; where a
 //     value scaled back leaves the normal range, or a scaled input would, the slower path.
-//  1. The classification: the cast filter (filter/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
+//  1. The classification: the cast filter (filters/box_cast_filter.hpp, ObbFilter: Algorithm 3.3
 //     in the box's unturned face coordinates with static bounds, tightened once). Where it
 //     decides, it is the solid's classification at an exact type; a miss has no values (every
 //     output 0, as the solid's cast leaves them). Undecided: the slower path.
-//  2. The faces (filter/obb_face.hpp, crossed_face): the entering one from the source's certain
+//  2. The faces (filters/obb_face.hpp, crossed_face): the entering one from the source's certain
 //     outcodes and the filter's certain order of the entering planes' parameters; the exiting
 //     one likewise (a segment: from its target's outcodes; a ray: from its direction's signs).
 //     None entered: the source lies in the box, lambda_enter = 0, the point is the source and the
@@ -49,8 +49,8 @@
 // filter refuses NaN and infinities (its range tests fail), which the input checks name first.
 #pragma once
 
-#include <cdref/filter/box_cast_filter.hpp>
-#include <cdref/filter/obb_face.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
+#include <cdref/filters/obb_face.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
@@ -63,8 +63,8 @@ namespace cdref::robust::detail {
 // Steps 1-6 (header) at double, on inputs in range; true where every value asked was kept.
 template <class Mul, bool Correct, class Shot>
 bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, int det, unsigned w, Cast<double>& out) {
-  namespace st = oracle::staged;
-  namespace wb = oracle::word_bounds;
+  namespace st = filters::staged;
+  namespace wb = filters::obb_face;
   constexpr double u = first_look_u;
   using std::fabs;
   // 1. the classification
@@ -142,8 +142,8 @@ bool obb_cast_first_look_in_range(const Shot& x, const OrientedBox<double>& b, i
   if ((w & want_normal) && out.enters) {
     const int i = enter->plane / 2;
     const Vec3<double>&aj = b.axis[(i + 1) % 3], &am = b.axis[(i + 2) % 3];
-    wb::Word n[3];
-    wb::cross_of_doubles<Mul>(aj, am, n);
+    word_bounds::Word n[3];
+    word_bounds::cross_of_doubles<Mul>(aj, am, n);
     double nh[3], nl[3], ne[3];
     for (int k = 0; k < 3; ++k) nh[k] = n[k].v.hi, nl[k] = n[k].v.lo, ne[k] = n[k].e;
     const Pair<double> len = sqrt_pair<Mul>(norm2_dw<Mul>(nh, nl));

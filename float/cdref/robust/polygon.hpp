@@ -114,7 +114,7 @@ bool polygon_sphere_first_look(const Sphere<double>& s, const Polygon<double>& p
   int b = 0;
   const int n = p.triangles();
   for (int k = 0; k < n; ++k) {
-    int f = oracle::sphere_triangle::unknown;
+    int f = filters::sphere_triangle::unknown;
     if ((sphere_triangle_fast<Mul, Correct>(s, p.triangle(k), f, all, r[k], key[k]) & all) != all) return false;
     meet = meet || f != 0;
     if (key[k][0] < key[b][0] || (key[k][0] == key[b][0] && key[k][1] < key[b][1])) b = k;
@@ -213,10 +213,10 @@ Decision decide(const Polygon<F>& a, const Polygon<F>& b) {
   check(a, "polygon A");
   check(b, "polygon B");
   // at double the pairs' first stage at once, the plane signs its static bound cannot tell on
-  // double words (filter/triangle_words.hpp, polygon_on_words): where it decides, its answer is
+  // double words (filters/triangle_words.hpp, polygon_on_words): where it decides, its answer is
   // the union's exact one
   if constexpr (std::is_same_v<F, double>)
-    if (const int f = oracle::triangle_triangle::polygon_on_words(a, b); f != oracle::triangle_triangle::unknown)
+    if (const int f = filters::triangle_triangle::polygon_on_words(a, b); f != filters::triangle_triangle::unknown)
       return {f != 0, true};
   const int nb = b.triangles();
   return detail::union_of(a.triangles() * nb, [&](int k) { return decide(a.triangle(k / nb), b.triangle(k % nb)); });

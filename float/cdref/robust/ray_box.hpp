@@ -128,11 +128,11 @@
 //     enters = false, lambda_enter = 0) is returned exactly.
 //     The normal is the book's unit vector of the entering face.
 //
-// At double the oracle's first stage runs first (filter/box_cast_filter.hpp: the outcodes and
+// At double the oracle's first stage runs first (filters/box_cast_filter.hpp: the outcodes and
 // the plane pairs in double against static bounds): where it decides, decide(), hit() and the
 // cast's classification take its answer, the book's at an exact type (the steps above give
 // the same wherever they are certain); the cast still computes its values by the steps above.
-// Where it cannot decide, the same signs on double words come next (bounded/word_bounds.hpp,
+// Where it cannot decide, the same signs on double words come next (filters/box_cast_words.hpp,
 // aabb_cast_words: certain except at exact zeros), before the steps above.
 //
 // decide(): value = the classification above; certain == false iff some comparison of
@@ -144,8 +144,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cdref/filter/box_cast_filter.hpp>
-#include <cdref/bounded/word_bounds.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
+#include <cdref/filters/box_cast_words.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
@@ -478,29 +478,29 @@ Eval<F> evaluate(const Vec3<F>& s, const Vec3<F>& t_or_d, const Box<F>& box, boo
   return out;
 }
 
-// At double, the oracle's first stage (filter/box_cast_filter.hpp: the outcodes and the plane
+// At double, the oracle's first stage (filters/box_cast_filter.hpp: the outcodes and the plane
 // pairs in double against static bounds) before the steps above: 1 (a hit), 0 (a miss) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it (decide(), hit() and the cast classify alike).
 template <class F>
 int first_stage(const Segment<F>& seg, const Box<F>& box) {
-  if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(seg, box);
-  else return oracle::staged::unknown;
+  if constexpr (std::is_same_v<F, double>) return filters::staged::filter(seg, box);
+  else return filters::staged::unknown;
 }
 template <class F>
 int first_stage(const Ray<F>& ray, const Box<F>& box) {
-  if constexpr (std::is_same_v<F, double>) return oracle::staged::filter(ray, box);
-  else return oracle::staged::unknown;
+  if constexpr (std::is_same_v<F, double>) return filters::staged::filter(ray, box);
+  else return filters::staged::unknown;
 }
 
 // At double, where the first stage cannot decide: Algorithm 3.3's signs on double words
-// (bounded/word_bounds.hpp, aabb_cast_words), certain except at exact zeros, before the steps
+// (filters/box_cast_words.hpp, aabb_cast_words), certain except at exact zeros, before the steps
 // above (2^-52 from grazing they take a few hundred nanoseconds where the steps above take
 // several times that). Where it decides, its answer is the book's at an exact type.
 template <class F, class Shot>
 int words_stage(const Shot& shot, const Box<F>& box) {
-  if constexpr (std::is_same_v<F, double>) return oracle::word_bounds::aabb_cast_words(shot, box);
-  else return oracle::staged::unknown;
+  if constexpr (std::is_same_v<F, double>) return filters::box_cast_words::aabb_cast_words(shot, box);
+  else return filters::staged::unknown;
 }
 
 }  // namespace box_detail
@@ -516,8 +516,8 @@ Cast<F> cast(const Segment<F>& seg, const Box<F>& box, unsigned w = want_cast) {
   // where the steps above are certain their classification is exact already
   if (!e.decision.certain) {
     int f = box_detail::first_stage(seg, box);
-    if (f == oracle::staged::unknown) f = box_detail::words_stage(seg, box);
-    if (f != oracle::staged::unknown) e.cast.hit = f != 0;
+    if (f == filters::staged::unknown) f = box_detail::words_stage(seg, box);
+    if (f != filters::staged::unknown) e.cast.hit = f != 0;
   }
   return e.cast;
 }
@@ -531,8 +531,8 @@ Cast<F> cast(const Ray<F>& ray, const Box<F>& box, unsigned w = want_cast) {
   // where the steps above are certain their classification is exact already
   if (!e.decision.certain) {
     int f = box_detail::first_stage(ray, box);
-    if (f == oracle::staged::unknown) f = box_detail::words_stage(ray, box);
-    if (f != oracle::staged::unknown) e.cast.hit = f != 0;
+    if (f == filters::staged::unknown) f = box_detail::words_stage(ray, box);
+    if (f != filters::staged::unknown) e.cast.hit = f != 0;
   }
   return e.cast;
 }
@@ -542,8 +542,8 @@ template <class F>
   check(seg, "segment");
   check(box, "box");
   if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(seg), detail::widened(box));
-  if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) return {f != 0, true};
-  if (const int f = box_detail::words_stage(seg, box); f != oracle::staged::unknown) return {f != 0, true};
+  if (const int f = box_detail::first_stage(seg, box); f != filters::staged::unknown) return {f != 0, true};
+  if (const int f = box_detail::words_stage(seg, box); f != filters::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(seg.source, seg.target, box, true, 0).decision;
 }
 // (at double the first stage before the input checks: its outcodes' range tests refuse every
@@ -552,8 +552,8 @@ template <class F>
 template <class F>
 Decision decide(const Segment<F>& seg, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>)
-    if (oracle::staged::signs_valid(box))
-      if (const int f = box_detail::first_stage(seg, box); f != oracle::staged::unknown) [[likely]]
+    if (filters::staged::signs_valid(box))
+      if (const int f = box_detail::first_stage(seg, box); f != filters::staged::unknown) [[likely]]
         return {f != 0, true};
   return decide_checked(seg, box);
 }
@@ -563,8 +563,8 @@ template <class F>
   check(ray, "ray");
   check(box, "box");
   if constexpr (std::is_same_v<F, float>) return decide_checked(detail::widened(ray), detail::widened(box));
-  if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) return {f != 0, true};
-  if (const int f = box_detail::words_stage(ray, box); f != oracle::staged::unknown) return {f != 0, true};
+  if (const int f = box_detail::first_stage(ray, box); f != filters::staged::unknown) return {f != 0, true};
+  if (const int f = box_detail::words_stage(ray, box); f != filters::staged::unknown) return {f != 0, true};
   return box_detail::evaluate(ray.source, ray.direction, box, false, 0).decision;
 }
 // (at double the first stage before the input checks: its outcodes' range tests refuse every
@@ -573,8 +573,8 @@ template <class F>
 template <class F>
 Decision decide(const Ray<F>& ray, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>)
-    if (oracle::staged::signs_valid(box) && oracle::staged::direction_valid(ray.direction))
-      if (const int f = box_detail::first_stage(ray, box); f != oracle::staged::unknown) [[likely]]
+    if (filters::staged::signs_valid(box) && filters::staged::direction_valid(ray.direction))
+      if (const int f = box_detail::first_stage(ray, box); f != filters::staged::unknown) [[likely]]
         return {f != 0, true};
   return decide_checked(ray, box);
 }

@@ -164,7 +164,7 @@
 // floats; float now runs the double version: 0.05% and 0.09% uncertain for the ray and segment
 // casts, `cdref campaign --impl robust-float --n 300 --seed 3`, 2026-11-24.)
 // The filter first (cast_filter: hit() and decide() try it before the double words). At double
-// the oracle's first stage runs before it (filter/sphere_filter.hpp: sigma = |r|^2 rho^2 -
+// the oracle's first stage runs before it (filters/sphere_filter.hpp: sigma = |r|^2 rho^2 -
 // |s x r|^2 with its error bounded component by component, no division; its band near
 // tangency is about u (5 rho + 9 |s|), within its own range tests), and this one only where
 // that leaves the case open. The same
@@ -209,7 +209,7 @@
 
 #include <limits>
 
-#include <cdref/filter/sphere_filter.hpp>
+#include <cdref/filters/sphere_filter.hpp>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -864,8 +864,8 @@ int cast_filter_own(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp,
 template <class F>
 int cast_filter(const Vec3<F>& from, const Vec3<F>& to, const Sphere<F>& sp, bool bounded) {
   if constexpr (std::is_same_v<F, double>) {
-    const int o = oracle::staged::sphere_cast_filter(from, to, sp, bounded);
-    if (o != oracle::staged::unknown) [[likely]]
+    const int o = filters::staged::sphere_cast_filter(from, to, sp, bounded);
+    if (o != filters::staged::unknown) [[likely]]
       return o ? 1 : -1;
   }
   return cast_filter_own(from, to, sp, bounded);

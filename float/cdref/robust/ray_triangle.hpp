@@ -24,8 +24,8 @@
 // one ulp of the truth's (the test holds it on every family of both casts).
 //
 // Classification and certificate. At double the oracle's first stage runs first (the
-// orientation form below in double against static error bounds, filter/triangle_filter.hpp, and
-// the signs those leave on double words, filter/triangle_words.hpp): where it decides, the answer
+// orientation form below in double against static error bounds, filters/triangle_filter.hpp, and
+// the signs those leave on double words, filters/triangle_words.hpp): where it decides, the answer
 // is exact and certain, and a miss returns at once. WBW's signs
 // are exact only for the rounded sheared coordinates, not for the inputs: on a shot in the
 // triangle's plane it reports a miss (the sheared triangle is not exactly flat), and near an
@@ -33,7 +33,7 @@
 // themselves: the book's cast (or its hit(), which decide() tries first) run on double words
 // (robust/words.hpp: exact inputs, rigorous bounds) is exact when it completes (certain, values
 // from the double words rounded to F, not claimed correctly rounded). Otherwise the signs of
-// the orientation form (w_k = d . (B x C), ..., Ns, Nt of filter/triangle_filter.hpp) are
+// the orientation form (w_k = d . (B x C), ..., Ns, Nt of filters/triangle_filter.hpp) are
 // taken on double words one by one, and a sign too close to call counts as met: two certain
 // opposite signs (or lambda certainly out of range) prove a miss (certain), and anything else
 // is reported as a hit, uncertain, with WBW's values in F. A false miss is therefore
@@ -44,8 +44,8 @@
 #pragma once
 
 #include <cdref/book/ray_triangle.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_words.hpp>
 #include <cdref/stable/ray_triangle.hpp>
 
 #include "rational.hpp"
@@ -64,28 +64,28 @@ TriangleCast<F> triangle_cast_value(const TriangleCast<W>& c) {
   return r;
 }
 
-// At double, the oracle's first stage (filter/triangle_filter.hpp: the orientation form in
+// At double, the oracle's first stage (filters/triangle_filter.hpp: the orientation form in
 // double against static bounds), and where it cannot decide the same signs on double words
-// (filter/triangle_words.hpp), before the book's test on double words: 1 (a hit), 0 (a miss)
+// (filters/triangle_words.hpp), before the book's test on double words: 1 (a hit), 0 (a miss)
 // or 2 (undecided; always at float and long double). Where it decides, its answer is the book's
 // at an exact type, so every entry point takes it (decide(), the predicate and the cast classify
 // alike); a miss has no values, so the cast then returns at once.
 template <class F>
 int triangle_first_stage(const Segment<F>& s, const Triangle<F>& t) {
   if constexpr (std::is_same_v<F, double>) {
-    const int f = oracle::ray_triangle::filter(s.source, &s.target, s.target, t);
-    return f != oracle::ray_triangle::unknown ? f : oracle::ray_triangle::orientation_on_words(s.source, &s.target, s.target, t);
+    const int f = filters::ray_triangle::filter(s.source, &s.target, s.target, t);
+    return f != filters::ray_triangle::unknown ? f : filters::ray_triangle::orientation_on_words(s.source, &s.target, s.target, t);
   } else {
-    return oracle::ray_triangle::unknown;
+    return filters::ray_triangle::unknown;
   }
 }
 template <class F>
 int triangle_first_stage(const Ray<F>& r, const Triangle<F>& t) {
   if constexpr (std::is_same_v<F, double>) {
-    const int f = oracle::ray_triangle::filter(r.source, nullptr, r.direction, t);
-    return f != oracle::ray_triangle::unknown ? f : oracle::ray_triangle::orientation_on_words(r.source, nullptr, r.direction, t);
+    const int f = filters::ray_triangle::filter(r.source, nullptr, r.direction, t);
+    return f != filters::ray_triangle::unknown ? f : filters::ray_triangle::orientation_on_words(r.source, nullptr, r.direction, t);
   } else {
-    return oracle::ray_triangle::unknown;
+    return filters::ray_triangle::unknown;
   }
 }
 
@@ -370,7 +370,7 @@ Decision triangle_cast_decide_words(const Shot& shot, const Triangle<F>& tri, bo
 // decide() on inputs already checked (the polygon's fan triangles: polygon.hpp).
 template <class Shot, class F>
 Decision triangle_decide_checked(const Shot& shot, const Triangle<F>& tri, bool bounded) {
-  if (const int f = triangle_first_stage(shot, tri); f != oracle::ray_triangle::unknown) return {f != 0, true};
+  if (const int f = triangle_first_stage(shot, tri); f != filters::ray_triangle::unknown) return {f != 0, true};
   return triangle_cast_decide_words(shot, tri, bounded);
 }
 

@@ -13,7 +13,7 @@
 //     deg its degree in lengths (a triangle's normal 2, an edge of a segment or a triangle 1, a
 //     ray's direction j/k, a box's axes 0). Where a value scaled back leaves the normal range,
 //     or a scaled input would: the slower path.
-//  1. The classification and the axis: filter/sat_filter.hpp's filter, every candidate axis in
+//  1. The classification and the axis: filters/sat_filter.hpp's filter, every candidate axis in
 //     the book's order (A's faces, B's faces, A's edges x B's edges, an exactly zero axis
 //     counted and skipped as the book does) against one static bound. Where it decides, the
 //     classification is the book's (the solid's) at an exact type; where they are apart and
@@ -34,7 +34,7 @@
 // (it refuses NaN and infinities, which the input checks name first).
 #pragma once
 
-#include <cdref/filter/sat_filter.hpp>
+#include <cdref/filters/sat_filter.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
@@ -95,7 +95,7 @@ inline PairVec sat_edge(const OrientedBox<double>& b, int k) { return pair_vec(b
 // x X y, each component kept (step 2); false where one is not, or a factor is out of range.
 template <class Mul, bool Correct>
 bool cross_kept(const PairVec& x, const PairVec& y, Vec3<double>& out) {
-  namespace wb = oracle::word_bounds;
+  namespace wb = word_bounds;
   for (int c = 0; c < 3; ++c)
     if (!(std::fabs(x.c[c].hi) <= 0x1p500 && std::fabs(y.c[c].hi) <= 0x1p500)) return false;
   for (int c = 0; c < 3; ++c) {
@@ -115,8 +115,8 @@ bool cross_kept(const PairVec& x, const PairVec& y, Vec3<double>& out) {
 template <class Mul, bool Correct, class A, class B>
 bool sat_first_look_in_range(const A& a, const B& b, Separation<double>& out) {
   int axis = -2;
-  const int r = oracle::sat::filter<A, B>(a, b, &axis);
-  if (r == oracle::sat::unknown) return false;
+  const int r = filters::sat::filter<A, B>(a, b, &axis);
+  if (r == filters::sat::unknown) return false;
   out = Separation<double>{};
   if (r == 1) {
     out.intersect = true;  // (axis -1, direction 0, as the book leaves them)

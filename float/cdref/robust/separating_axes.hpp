@@ -16,17 +16,17 @@
 // it certifies the classification and the first separating axis, with that axis's direction
 // proven within 3/4 of an ulp (sat_first_look.hpp), before the grids and the double words below.
 // Certificate: at double every entry point first runs the oracle's first stage
-// (filter/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
+// (filters/sat_filter.hpp: static bounds derived there), whose answer where it decides is the
 // solid's at an exact type; decide_separation(), the predicate and the full query all take it.
 // (For a segment or a ray and an oriented box that stage is Algorithm 3.3 in the box's face
 // coordinates, and after it the solid's cast decision on double words comes before the axes:
 // has_cast_decision below; for two oriented boxes and for a triangle and a box, Theorem 3.1 in
 // B's face coordinates first.) Where the first stage leaves a few axes open (every other axis
 // certainly not separating), those axes alone on double words with rigorous bounds come next
-// (filter/sat_words.hpp): where they decide, the classification is the solid's at an exact type
+// (filters/sat_words.hpp): where they decide, the classification is the solid's at an exact type
 // too. The order of these stages is stages_before_whole below, shared with the oracle.
 // A triangle, a segment or a ray and an axis-aligned box at float and double are first evaluated
-// exactly, the inputs read as integers on a grid per coordinate axis (filter/sat_grid.hpp):
+// exactly, the inputs read as integers on a grid per coordinate axis (filters/sat_grid.hpp):
 // where the inputs fit the grids (sat_grid.hpp: all but a triangle's vertex far from a small
 // box, or a ray's direction whose components' grids lie far apart), the full query's classification, first separating axis and direction are the
 // book's at an exact type (the direction rounded once), zero-area triangles and flat boxes
@@ -67,10 +67,10 @@
 // the full query's values come from F and its classification is the certain one.
 #pragma once
 
-#include <cdref/filter/sat_filter.hpp>
-#include <cdref/filter/sat_grid.hpp>
-#include <cdref/filter/sat_words.hpp>
-#include <cdref/bounded/word_bounds.hpp>
+#include <cdref/filters/sat_filter.hpp>
+#include <cdref/filters/sat_grid.hpp>
+#include <cdref/filters/sat_words.hpp>
+#include <cdref/filters/box_cast_words.hpp>
 #include <cdref/solid/obb.hpp>
 #include <bit>
 #include <type_traits>
@@ -129,19 +129,19 @@ std::pair<Separation<F>, bool> separation(const A& a, const B& b) {
 }  // namespace detail
 
 namespace detail {
-// At double, the oracle's first stage (filter/sat_filter.hpp: every candidate axis in double
+// At double, the oracle's first stage (filters/sat_filter.hpp: every candidate axis in double
 // against one static bound; for a sphere, two certificates from a point of the box) before the
 // double words: 1 (they meet), 0 (disjoint) or 2 (undecided; always at float and long double).
 // Where it decides, its answer is the solid's at an exact type, so every entry point takes it
 // (decide(), the predicate and the full query's classification stay alike).
-// `open` (at double): the axes it left open (filter/sat_filter.hpp). The certified decisions take
+// `open` (at double): the axes it left open (filters/sat_filter.hpp). The certified decisions take
 // stages_before_whole below instead, which puts the double words of what the cheapest filter
 // leaves open before the rest of the filters.
 template <class F, class A, class B>
 int first_stage(const A& a, const B& b, unsigned* open = nullptr) {
   if (open) *open = 0;
-  if constexpr (std::is_same_v<F, double>) return oracle::sat::filter(a, b, nullptr, open);
-  else return oracle::sat::unknown;
+  if constexpr (std::is_same_v<F, double>) return filters::sat::filter(a, b, nullptr, open);
+  else return filters::sat::unknown;
 }
 // (For a sphere, where the filter cannot decide: on an oriented box whose axes are signed
 // coordinate axes, the axis-aligned box it is, by sphere-box's certified decision (sphere_box.hpp),
@@ -151,10 +151,10 @@ int first_stage(const A& a, const B& b, unsigned* open = nullptr) {
 // aligned boxes' decision took 838-851 ns a case before sphere-box's decision came first, 199 ns
 // after: standalone loop, min of 15, 2026-11-29, README.)
 inline int sphere_obb_certificates(const Sphere<double>& s, const OrientedBox<double>& b) {
-  if (const int f = oracle::sphere_obb::filter(s, b); f != oracle::sat::unknown) return f;
-  if (Box<double> box; oracle::sphere_obb::as_axis_aligned(b, box))
+  if (const int f = filters::sphere_obb::filter(s, b); f != filters::sat::unknown) return f;
+  if (Box<double> box; filters::sphere_obb::as_axis_aligned(b, box))
     if (const Decision d = decide(s, box); d.certain) return int(d.value);
-  return oracle::sat_words::decide(s, b);
+  return filters::sat_words::decide(s, b);
 }
 // Last, the first look's classification (sphere_obb.hpp: the centre certainly inside, or g =
 // |x - q| - rho of certain sign), so that decide() and proximity() classify alike where the
@@ -162,15 +162,15 @@ inline int sphere_obb_certificates(const Sphere<double>& s, const OrientedBox<do
 template <class F>
 int first_stage(const Sphere<F>& s, const OrientedBox<F>& b) {
   if constexpr (std::is_same_v<F, double>) {
-    if (const int f = sphere_obb_certificates(s, b); f != oracle::sat::unknown) return f;
+    if (const int f = sphere_obb_certificates(s, b); f != filters::sat::unknown) return f;
     return with_products([&](auto mul) {
-      int cls = oracle::sat::unknown;
+      int cls = filters::sat::unknown;
       Proximity<double> r;
-      sphere_obb_fast<decltype(mul)>(s, b, cls, oracle::sat::unknown, 0u, r, [] { return oracle::sat::unknown; });
+      sphere_obb_fast<decltype(mul)>(s, b, cls, filters::sat::unknown, 0u, r, [] { return filters::sat::unknown; });
       return cls;
     });
   } else {
-    return oracle::sat::unknown;
+    return filters::sat::unknown;
   }
 }
 // A segment or a ray and an axis-aligned box meet exactly when Algorithm 3.3 hits, and its
@@ -190,17 +190,17 @@ template <class A, class B, class F>
 inline constexpr bool has_cast_decision =
     (std::is_same_v<A, Segment<F>> || std::is_same_v<A, Ray<F>>) && std::is_same_v<B, OrientedBox<F>>;
 // At double, Algorithm 3.3 in the box's face coordinates on bounded double words first
-// (bounded/word_bounds.hpp: tens of nanoseconds where the solid's cast on Bounded2 takes two
+// (filters/box_cast_words.hpp: tens of nanoseconds where the solid's cast on Bounded2 takes two
 // microseconds), then the solid's cast on double words where those leave the case open.
 template <class A, class B>
 std::optional<bool> cast_decision_on_words(const A& a, const B& b) {
   if constexpr (std::is_same_v<B, OrientedBox<double>>)
-    if (const int r = oracle::word_bounds::obb_cast_words(a, b); r != oracle::staged::unknown) return r != 0;
+    if (const int r = filters::box_cast_words::obb_cast_words(a, b); r != filters::staged::unknown) return r != 0;
   return on_words(a, b, [](const auto& x, const auto& y) { return solid::hit(x, y); });
 }
 
 // Two oriented boxes, a triangle and a box (axis-aligned or oriented): Theorem 3.1 in B's face
-// coordinates first (filter/sat_filter.hpp, filter_face_coordinates).
+// coordinates first (filters/sat_filter.hpp, filter_face_coordinates).
 template <class A, class B>
 inline constexpr bool has_face_coordinates =
     (std::is_same_v<B, OrientedBox<double>> && (std::is_same_v<A, OrientedBox<double>> || std::is_same_v<A, Triangle<double>>)) ||
@@ -233,14 +233,14 @@ int scaled_filters(const A& a, const B& b) {
   LengthScale s;
   A as;
   B bs;
-  if (scale_lengths(a, b, s, as, bs) != Scaling::scaled) return oracle::sat::unknown;
+  if (scale_lengths(a, b, s, as, bs) != Scaling::scaled) return filters::sat::unknown;
   if constexpr (has_cast_decision<A, B, double>)
-    if (const int f = oracle::staged::filter(as, bs); f != oracle::sat::unknown) return f;
-  return oracle::sat::filter<A, B>(as, bs);
+    if (const int f = filters::staged::filter(as, bs); f != filters::sat::unknown) return f;
+  return filters::sat::filter<A, B>(as, bs);
 }
 template <class F, class A, class B>
 int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
-  constexpr int unknown = oracle::sat::unknown;
+  constexpr int unknown = filters::sat::unknown;
   if (words) *words = false;
   if constexpr (!std::is_same_v<F, double>) {
     if constexpr (has_cast_decision<A, B, F>)
@@ -253,47 +253,47 @@ int stages_before_whole(const A& a, const B& b, bool* words = nullptr) {
     unsigned open = 0;
     int r;
     if constexpr (has_cast_decision<A, B, F>) {
-      if (const int f = oracle::staged::filter(a, b); f != unknown) return f;
+      if (const int f = filters::staged::filter(a, b); f != unknown) return f;
       if (const int f = scaled_filters(a, b); f != unknown) return f;
       if (const auto h = cast_decision_on_words(a, b)) {
         if (words) *words = true;
         return int(*h);
       }
-      r = oracle::sat::filter<A, B>(a, b, nullptr, &open);  // the world axes
+      r = filters::sat::filter<A, B>(a, b, nullptr, &open);  // the world axes
     } else if constexpr (has_face_coordinates<A, B>) {
       if constexpr (std::is_same_v<B, Box<double>>)
-        if (oracle::sat::apart_on_box_faces(a, b)) return 0;  // the outcodes' relative bounds
-      if (const int f = oracle::sat::filter_face_coordinates(a, b, &open); f != unknown) return f;
+        if (filters::sat::apart_on_box_faces(a, b)) return 0;  // the outcodes' relative bounds
+      if (const int f = filters::sat::filter_face_coordinates(a, b, &open); f != unknown) return f;
       if (const int f = scaled_filters(a, b); f != unknown) return f;
       // (a triangle and a box) more than one axis open, or none named (a degenerate triangle
-      // ties several): the exact evaluation on a grid (filter/sat_grid.hpp), about 145 ns, where
+      // ties several): the exact evaluation on a grid (filters/sat_grid.hpp), about 145 ns, where
       // the double words of each open axis took 1,000 ns a case on the degenerate family and
       // left 78% of it open (standalone loop, 2026-11-29); one open axis (a vertex near a face)
       // costs less on words
       if constexpr (std::is_same_v<A, Triangle<double>> && std::is_same_v<B, Box<double>>)
         if (std::popcount(open) != 1)
-          if (const oracle::sat_grid::TriangleBox g(a, b); g.ok) {
+          if (const filters::sat_grid::TriangleBox g(a, b); g.ok) {
             if (words) *words = true;
             return int(g.axis < 0);
           }
       if (open != 0)
-        if (const int w = oracle::sat_words::decide(a, b, open); w != unknown) {
+        if (const int w = filters::sat_words::decide(a, b, open); w != unknown) {
           if (words) *words = true;
           return w;
         }
-      r = oracle::sat::filter<A, B>(a, b, nullptr, &open);  // the world axes
+      r = filters::sat::filter<A, B>(a, b, nullptr, &open);  // the world axes
     } else {
-      r = oracle::sat::filter(a, b, nullptr, &open);
+      r = filters::sat::filter(a, b, nullptr, &open);
       if (r == unknown) r = scaled_filters(a, b);
     }
     if (r != unknown) return r;
     if (words) *words = true;
-    return oracle::sat_words::decide(a, b, open);
+    return filters::sat_words::decide(a, b, open);
   }
 }
 
 // A triangle, a segment or a ray and a box at float or double: the book's 13 or 6 axes exactly
-// on the inputs read as integers on a grid per coordinate axis (filter/sat_grid.hpp): whether
+// on the inputs read as integers on a grid per coordinate axis (filters/sat_grid.hpp): whether
 // they meet, the first separating axis and its direction rounded once, as the book gives them at
 // an exact type.
 // false where the inputs lie on no grid narrow enough (sat_grid.hpp), where a direction
@@ -306,7 +306,7 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
                 (std::is_same_v<F, double> || std::is_same_v<F, float>)) {
     const auto dv = [](const Vec3<F>& v) { return Vec3<double>(double(v[0]), double(v[1]), double(v[2])); };  // exact
     const Triangle<double> t{{dv(a.vertex[0]), dv(a.vertex[1]), dv(a.vertex[2])}};
-    const oracle::sat_grid::TriangleBox g(t, Box<double>{dv(b.center), dv(b.extent)});
+    const filters::sat_grid::TriangleBox g(t, Box<double>{dv(b.center), dv(b.extent)});
     if (!g.ok) return false;
     Separation<F> out;
     out.intersect = g.axis < 0;
@@ -321,7 +321,7 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
     const Vec3<F>& to = [&]() -> const Vec3<F>& {
       if constexpr (seg) return a.target; else return a.direction;
     }();
-    const oracle::sat_grid::ShotBox g(dv(a.source), dv(to), Box<double>{dv(b.center), dv(b.extent)}, seg);
+    const filters::sat_grid::ShotBox g(dv(a.source), dv(to), Box<double>{dv(b.center), dv(b.extent)}, seg);
     if (!g.ok) return false;
     Separation<F> out;
     out.intersect = g.axis < 0;
@@ -361,7 +361,7 @@ bool separation_on_grid(const A& a, const B& b, Separation<F>& s) {
       const Decision slab = decide(a, b); /* before the first stage: it costs less */       \
       if (slab.certain) return slab;                                                        \
     }                                                                                       \
-    if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
+    if (const int f = detail::stages_before_whole<F>(a, b); f != filters::sat::unknown) return {f != 0, true}; \
     if (Separation<F> g; detail::separation_on_grid(a, b, g)) return {g.intersect, true};      \
     const auto [s, certain] = detail::separation<F>(a, b);                                  \
     return {certain ? s.intersect : detail::separation_exact<F>(a, b).intersect, true};     \
@@ -615,7 +615,7 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
     /* the cast hits exactly when the segment or ray meets the solid; where */ \
     /* the double words are certain they are exact already */                 \
     if (!d.certain) /* the stages decide_cast() takes, so that both classify alike */ \
-      if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) c.hit = f != 0; \
+      if (const int f = detail::stages_before_whole<F>(a, b); f != filters::sat::unknown) c.hit = f != 0; \
     return c;                                                                 \
   }                                                                           \
   template <class F>                                                          \
@@ -625,7 +625,7 @@ std::pair<Proximity<F>, Decision> proximity_eval(const Sphere<F>& s, const Orien
     /* cast_eval(a, b, want_cast)'s classification without its values (the lenient ones): */ \
     /* the stages before the whole formulation (the decision on double words among them), */ \
     /* the cast's on double words, else the solid's in F */                   \
-    if (const int f = detail::stages_before_whole<F>(a, b); f != oracle::sat::unknown) return {f != 0, true}; \
+    if (const int f = detail::stages_before_whole<F>(a, b); f != filters::sat::unknown) return {f != 0, true}; \
     if (const auto c = detail::on_words(a, b, [](const auto& x, const auto& y) { return solid::cast(x, y, want_cast).hit; })) \
       return {*c, true};                                                      \
     return {solid::hit(a, b), false};                                         \
@@ -657,10 +657,10 @@ bool sphere_obb_first_look(const Sphere<double>& s, const OrientedBox<double>& b
                            ObbFeature* feature = nullptr, bool* certified = nullptr) {
   const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
   if (!asked) return false;
-  int cls = oracle::sat::unknown;
-  const unsigned done = sphere_obb_fast<Mul, Correct>(s, b, cls, oracle::sat::unknown, w, res,
+  int cls = filters::sat::unknown;
+  const unsigned done = sphere_obb_fast<Mul, Correct>(s, b, cls, filters::sat::unknown, w, res,
                                                       [&] { return sphere_obb_certificates(s, b); }, feature, certified);
-  if (cls == oracle::sat::unknown || (done & asked) != asked) return false;
+  if (cls == filters::sat::unknown || (done & asked) != asked) return false;
   res.intersect = cls != 0;
   return true;
 }
@@ -682,7 +682,7 @@ Proximity<F> proximity(const Sphere<F>& s, const OrientedBox<F>& b, unsigned w =
   detail::WordValues kv;
   auto [p, d] = with_fma([&] { return detail::proximity_eval(s, b, w, &kv); });
   if (!d.certain)  // (where the double words are certain they are exact already)
-    if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) p.intersect = f != 0;
+    if (const int f = detail::first_stage(s, b); f != filters::sat::unknown) p.intersect = f != 0;
   // the distance and the depth sharpened where the double words leave them loose (rational.hpp),
   // from the first look's certified feature where it has one, else from every feature (obb_xx:
   // at 2^-52 of the radius from touching 75.7 us a case, 6.1 us from the feature; README)
@@ -706,7 +706,7 @@ template <class F>
 Decision decide(const Sphere<F>& s, const OrientedBox<F>& b) {
   check(s, "sphere");
   check(b, "oriented box");
-  if (const int f = detail::first_stage(s, b); f != oracle::sat::unknown) return {f != 0, true};
+  if (const int f = detail::first_stage(s, b); f != filters::sat::unknown) return {f != 0, true};
   return detail::proximity_eval(s, b, want_proximity).second;
 }
 template <class F>

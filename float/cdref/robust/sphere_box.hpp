@@ -55,7 +55,7 @@
 //     terms formed.
 //
 // decide() and intersect() first try a filter on the stable tier's arithmetic (at double the
-// oracle's first stage before it, filter/sphere_filter.hpp; this one where that leaves the
+// oracle's first stage before it, filters/sphere_filter.hpp; this one where that leaves the
 // case open; the book's, in F): c_i = fl(centre_i - box centre_i), v_i = fl(-+h_i - c_i) where c_i is clamped (else 0),
 // q = fl(fl(v.v) - fl(rho^2)). With round to nearest c_i is off by at most u |c_i|, and the
 // clamp's offset is 1-Lipschitz in c, so the exact v_i differs from the computed one by at
@@ -85,7 +85,7 @@
 #include <cdref/results.hpp>
 #include <cmath>
 
-#include <cdref/filter/sphere_filter.hpp>
+#include <cdref/filters/sphere_filter.hpp>
 
 #include "decision.hpp"
 #include "eft.hpp"
@@ -234,13 +234,13 @@ int sphere_box_filter_own(const Sphere<F>& sp, const Box<F>& box) {
 }
 
 // The filter every entry point takes (header): at double the oracle's first stage
-// (filter/sphere_filter.hpp: |v| from max(0, |c_i| - h_i), its bound from sum (|c_i| + h_i)^2),
+// (filters/sphere_filter.hpp: |v| from max(0, |c_i| - h_i), its bound from sum (|c_i| + h_i)^2),
 // then the one above where that leaves the case open; at other types the one above.
 template <class F>
 int sphere_box_filter(const Sphere<F>& sp, const Box<F>& box) {
   if constexpr (std::is_same_v<F, double>) {
-    const int o = oracle::staged::filter(sp, box);
-    if (o != oracle::staged::unknown) [[likely]]
+    const int o = filters::staged::filter(sp, box);
+    if (o != filters::staged::unknown) [[likely]]
       return o ? -1 : 1;
   }
   return sphere_box_filter_own(sp, box);

@@ -157,8 +157,8 @@ bool sphere_obb_point(const Sphere<double>& sp, const OrientedBox<double>& b, Fi
     }
   };
   const auto face_normal = [&](int i, double (&nh)[3], double (&nl)[3], double (&En)[3]) {
-    oracle::word_bounds::Word nw[3];
-    oracle::word_bounds::cross_of_doubles<Mul>(b.axis[(i + 1) % 3], b.axis[(i + 2) % 3], nw);
+    word_bounds::Word nw[3];
+    word_bounds::cross_of_doubles<Mul>(b.axis[(i + 1) % 3], b.axis[(i + 2) % 3], nw);
     for (int c = 0; c < 3; ++c) nh[c] = nw[c].v.hi, nl[c] = nw[c].v.lo, En[c] = nw[c].e * grow;
   };
   double Ph[3], Pl[3], Pe[3];

@@ -1,7 +1,7 @@
 // cdref/robust/sphere_triangle.hpp - the robust sphere-triangle query (Section 3.4) at float,
 // double and long double: proximity, intersect and decide.
 //
-// At double the oracle's first stage runs first (filter/triangle_filter.hpp: two certificates
+// At double the oracle's first stage runs first (filters/triangle_filter.hpp: two certificates
 // from one point of the triangle, static error bounds): where it decides, the classification
 // is exact and certain, and decide() returns at once.
 //
@@ -72,8 +72,8 @@
 #pragma once
 
 #include <cdref/book/sphere_triangle.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_words.hpp>
 
 #include "first_look.hpp"
 #include "rational.hpp"
@@ -84,12 +84,12 @@ namespace cdref::robust {
 
 namespace detail {
 
-// The oracle's first stage (filter/triangle_filter.hpp: two certificates from one point of the
+// The oracle's first stage (filters/triangle_filter.hpp: two certificates from one point of the
 // triangle, static bounds), then the same two certificates on double words
-// (filter/triangle_words.hpp): 1 (they meet), 0 (disjoint) or 2 (undecided).
+// (filters/triangle_words.hpp): 1 (they meet), 0 (disjoint) or 2 (undecided).
 inline int sphere_triangle_certificates(const Sphere<double>& s, const Triangle<double>& t) {
-  const int f = oracle::sphere_triangle::filter(s, t);
-  return f != oracle::sphere_triangle::unknown ? f : oracle::sphere_triangle::certificates_on_words(s, t);
+  const int f = filters::sphere_triangle::filter(s, t);
+  return f != filters::sphere_triangle::unknown ? f : filters::sphere_triangle::certificates_on_words(s, t);
 }
 inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t);
 // At double, before the double words: the certificates, then the first look's g where its sign
@@ -102,9 +102,9 @@ template <class F>
 int sphere_triangle_first_stage(const Sphere<F>& s, const Triangle<F>& t) {
   if constexpr (std::is_same_v<F, double>) {
     const int f = sphere_triangle_certificates(s, t);
-    return f != oracle::sphere_triangle::unknown ? f : sphere_triangle_first_look_class(s, t);
+    return f != filters::sphere_triangle::unknown ? f : sphere_triangle_first_look_class(s, t);
   } else {
-    return oracle::sphere_triangle::unknown;
+    return filters::sphere_triangle::unknown;
   }
 }
 
@@ -224,7 +224,7 @@ std::pair<Proximity<F>, Decision> sphere_triangle_eval(const Sphere<F>& s, const
   WordValues& kv = kept ? *kept : local;
   auto r = sphere_triangle_words(s, t, w, &kv);
   if (!r.second.certain)
-    if (const int f = sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown) {
+    if (const int f = sphere_triangle_first_stage(s, t); f != filters::sphere_triangle::unknown) {
       r.first.intersect = f != 0;
       r.second = {f != 0, true};
     }
@@ -344,7 +344,7 @@ unsigned sphere_triangle_fast(const Sphere<double>& sp, const Triangle<double>& 
     }
     return false;
   };
-  return first_look_values<Mul, Correct>(sp, P, point, cls, oracle::sphere_triangle::unknown, w, res, key,
+  return first_look_values<Mul, Correct>(sp, P, point, cls, filters::sphere_triangle::unknown, w, res, key,
                                          [&] { return sphere_triangle_certificates(sp, t); }, exact);
 }
 
@@ -373,7 +373,7 @@ inline void feature_xx(const Sphere<double>& sp, const Triangle<double>& t, cons
 // refuses them by name).
 template <class Mul>
 bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t, Proximity<double>& res) {
-  int cls = oracle::sphere_triangle::unknown;
+  int cls = filters::sphere_triangle::unknown;
   if ((sphere_triangle_fast<Mul, true>(s, t, cls, want_proximity, res) & want_proximity) != want_proximity) return false;
   res.intersect = cls != 0;
   return true;
@@ -383,12 +383,12 @@ bool sphere_triangle_rounded(const Sphere<double>& s, const Triangle<double>& t,
 // (the certificates having left it: no other stage behind g)
 inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Triangle<double>& t) {
   return with_products<true>([&](auto mul) {
-    int cls = oracle::sphere_triangle::unknown;
+    int cls = filters::sphere_triangle::unknown;
     FirstLookPoint P;
     const bool point = first_look_point<decltype(mul)>(s, t, P);
     Proximity<double> r;
-    first_look_values<decltype(mul), false>(s, P, point, cls, oracle::sphere_triangle::unknown, 0u, r, nullptr,
-                                            [] { return oracle::sphere_triangle::unknown; },
+    first_look_values<decltype(mul), false>(s, P, point, cls, filters::sphere_triangle::unknown, 0u, r, nullptr,
+                                            [] { return filters::sphere_triangle::unknown; },
                                             [](int, double&) { return false; });
     return cls;
   });
@@ -399,12 +399,12 @@ inline int sphere_triangle_first_look_class(const Sphere<double>& s, const Trian
 template <class Mul>
 Proximity<double> sphere_triangle_proximity(const Sphere<double>& s, const Triangle<double>& t, unsigned w) {
   const unsigned asked = w & (want_distance | want_depth | want_witnesses | want_closest);
-  int cls = asked ? oracle::sphere_triangle::unknown : sphere_triangle_first_stage(s, t);
+  int cls = asked ? filters::sphere_triangle::unknown : sphere_triangle_first_stage(s, t);
   Proximity<double> res;
   FirstLookPoint P;
   bool certified = false;
   const unsigned done = asked ? sphere_triangle_fast<Mul>(s, t, cls, w, res, nullptr, &P, &certified) : 0u;
-  if (cls != oracle::sphere_triangle::unknown && (done & asked) == asked) {
+  if (cls != filters::sphere_triangle::unknown && (done & asked) == asked) {
     res.intersect = cls != 0;
     return res;
   }
@@ -442,7 +442,7 @@ template <class F>
 Decision decide(const Sphere<F>& s, const Triangle<F>& t) {
   check(s, "sphere");
   check(t, "triangle");
-  if (const int f = detail::sphere_triangle_first_stage(s, t); f != oracle::sphere_triangle::unknown)
+  if (const int f = detail::sphere_triangle_first_stage(s, t); f != filters::sphere_triangle::unknown)
     return {f != 0, true};
   return detail::sphere_triangle_words(s, t, want_proximity).second;
 }

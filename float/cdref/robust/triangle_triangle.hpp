@@ -1,12 +1,12 @@
 // cdref/robust/triangle_triangle.hpp - the robust triangle-triangle test (Section 3.4) at float,
 // double and long double: intersect, the intersection segment, and decide.
 //
-// At double the oracle's first stage runs first (filter/triangle_filter.hpp: a separating
+// At double the oracle's first stage runs first (filters/triangle_filter.hpp: a separating
 // plane, then the six edge-triangle casts, static error bounds): where it decides, the
 // classification is exact and certain, and disjoint triangles return at once.
 //
 // At float and double, next, a plane that separates them or a coplanar pair whole, exactly on
-// the inputs read as integers on a grid per coordinate axis (filter/triangle_grid.hpp): the
+// the inputs read as integers on a grid per coordinate axis (filters/triangle_grid.hpp): the
 // book's answer, classification, `coplanar` and p = q = 0 alike.
 //
 // Formulation: the book's (book/triangle_triangle.hpp: Moller's interval test with exact zero
@@ -25,9 +25,9 @@
 #pragma once
 
 #include <cdref/book/triangle_triangle.hpp>
-#include <cdref/filter/triangle_filter.hpp>
-#include <cdref/filter/triangle_grid.hpp>
-#include <cdref/filter/triangle_words.hpp>
+#include <cdref/filters/triangle_filter.hpp>
+#include <cdref/filters/triangle_grid.hpp>
+#include <cdref/filters/triangle_words.hpp>
 
 #include "words.hpp"
 
@@ -35,24 +35,24 @@ namespace cdref::robust {
 
 namespace detail {
 
-// At double, the oracle's first stage (filter/triangle_filter.hpp: a separating plane, then the
+// At double, the oracle's first stage (filters/triangle_filter.hpp: a separating plane, then the
 // six edge-triangle casts) before the double words: 1 (they meet), 0 (disjoint) or 2
 // (undecided; always at float and long double). Where it decides, its answer is the book's at
 // an exact type, so every entry point takes it; disjoint triangles have no values (coplanar is
 // false, p = q = 0), so intersect() then returns at once.
 // (Where the static bounds leave it, the same tests with those signs on double words:
-// filter/triangle_words.hpp.)
+// filters/triangle_words.hpp.)
 template <class F>
 int triangle_triangle_first_stage(const Triangle<F>& a, const Triangle<F>& b) {
   if constexpr (std::is_same_v<F, double>) {
-    const int f = oracle::triangle_triangle::filter(a, b);
-    if (f != oracle::triangle_triangle::unknown) return f;
+    const int f = filters::triangle_triangle::filter(a, b);
+    if (f != filters::triangle_triangle::unknown) return f;
     // a pair that may be coplanar exactly first (the oracle's order: oracle/triangle_triangle.hpp)
-    if (oracle::triangle_triangle::maybe_coplanar(a, b))
-      if (const int g = oracle::triangle_triangle::on_grid(a, b); g != oracle::triangle_triangle::unknown) return g;
-    return oracle::triangle_triangle::tests_on_words(a, b);
+    if (filters::triangle_triangle::maybe_coplanar(a, b))
+      if (const int g = filters::triangle_triangle::on_grid(a, b); g != filters::triangle_triangle::unknown) return g;
+    return filters::triangle_triangle::tests_on_words(a, b);
   } else {
-    return oracle::triangle_triangle::unknown;
+    return filters::triangle_triangle::unknown;
   }
 }
 
@@ -62,14 +62,14 @@ std::pair<TriangleIntersection<F>, Decision> triangle_triangle_eval(const Triang
                                                                     int first) {
   if (first == 0) return {TriangleIntersection<F>{}, {false, true}};
   if constexpr (std::is_same_v<F, double> || std::is_same_v<F, float>) {
-    // a separating plane, or a coplanar pair whole, exactly (filter/triangle_grid.hpp): the
+    // a separating plane, or a coplanar pair whole, exactly (filters/triangle_grid.hpp): the
     // book's answer, p = q = 0 (header)
     const auto dv = [](const Triangle<F>& t) {
       Triangle<double> d;
       for (int k = 0; k < 3; ++k) d.vertex[k] = Vec3<double>(t.vertex[k][0], t.vertex[k][1], t.vertex[k][2]);
       return d;
     };
-    const int g = oracle::triangle_triangle::on_grid(dv(a), dv(b), first == 1);
+    const int g = filters::triangle_triangle::on_grid(dv(a), dv(b), first == 1);
     if (g == 0) return {TriangleIntersection<F>{}, {false, true}};
     if (g == 1) {
       TriangleIntersection<F> r;
@@ -120,7 +120,7 @@ template <class F>
 Decision decide(const Triangle<F>& a, const Triangle<F>& b) {
   check(a, "triangle A");
   check(b, "triangle B");
-  if (const int f = detail::triangle_triangle_first_stage(a, b); f != oracle::triangle_triangle::unknown)
+  if (const int f = detail::triangle_triangle_first_stage(a, b); f != filters::triangle_triangle::unknown)
     return {f != 0, true};
   return detail::triangle_triangle_eval(a, b, 2).second;
 }

@@ -1,4 +1,4 @@
-// cdref/filter/grid.hpp - double inputs as integers on a grid, one grid a coordinate axis, and
+// cdref/filters/grid.hpp - double inputs as integers on a grid, one grid a coordinate axis, and
 // exact signs of polynomials in them: the exact looks of the oracles' first stages
 // (triangle_filter.hpp for the casts on a triangle, sat_grid.hpp for a triangle and a box).
 //
@@ -25,7 +25,7 @@
 
 #include <cdref/vec.hpp>
 
-namespace cdref::oracle::grid {
+namespace cdref::filters::grid {
 
 using Wide = __int128;
 using UWide = unsigned __int128;
@@ -164,4 +164,4 @@ struct Sum256 {
   }
 };
 
-}  // namespace cdref::oracle::grid
+}  // namespace cdref::filters::grid

@@ -1,4 +1,4 @@
-// cdref/filter/triangle_grid.hpp - two triangles (book/triangle_triangle.hpp) exactly on
+// cdref/filters/triangle_grid.hpp - two triangles (book/triangle_triangle.hpp) exactly on
 // integers, the inputs read as integers on a grid per coordinate axis (grid.hpp): a plane that
 // separates them, and the whole answer where they lie in one plane. Where it decides it gives
 // the book's answer at an exact type.
@@ -30,12 +30,12 @@
 // next stage too.
 #pragma once
 
-#include <cdref/filter/grid.hpp>
-#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/filters/grid.hpp>
+#include <cdref/filters/triangle_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cstdint>
 
-namespace cdref::oracle::triangle_triangle {
+namespace cdref::filters::triangle_triangle {
 
 // Every vertex of b within the first stage's bound of a's plane (triangle_filter.hpp), the
 // bound finite: the pair may be coplanar (it is not otherwise).
@@ -121,4 +121,4 @@ inline int on_grid(const Triangle<double>& a, const Triangle<double>& b, bool me
   return separated(A, B) || separated(B, A) ? 0 : 1;
 }
 
-}  // namespace cdref::oracle::triangle_triangle
+}  // namespace cdref::filters::triangle_triangle

@@ -1,4 +1,4 @@
-// cdref/filter/sphere_filter.hpp - the first stage of the classification oracle for a segment
+// cdref/filters/sphere_filter.hpp - the first stage of the classification oracle for a segment
 // or a ray cast on a sphere (Algorithm 3.1), for Algorithm 3.2 and for sphere-box (exact/cdref/oracle/
 // sphere_casts.hpp and sphere_box.hpp hold the other stages and the polynomials these signs
 // decide, expansions.hpp the model of the bounds: u = 2^-53, gamma_K, the range checks). Plain double arithmetic on the query's inputs,
@@ -9,11 +9,11 @@
 // exact stages too.
 #pragma once
 
-#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 
-namespace cdref::oracle::staged {
+namespace cdref::filters::staged {
 
 inline int le0(int s) { return s == unknown ? unknown : int(s <= 0); }
 inline int ge0(int s) { return s == unknown ? unknown : int(s >= 0); }
@@ -269,4 +269,4 @@ inline int filter(const Sphere<double>& sp, const Box<double>& box, plain = {}) 
   return positive_or_unknown(rho2 - vv, (9 * u) * m);  // le0(fsign(vv - rho2, ..)): fl(a - b) = -fl(b - a)
 }
 
-}  // namespace cdref::oracle::staged
+}  // namespace cdref::filters::staged

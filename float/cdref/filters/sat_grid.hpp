@@ -1,4 +1,4 @@
-// cdref/filter/sat_grid.hpp - a triangle, a segment or a ray and an axis-aligned box
+// cdref/filters/sat_grid.hpp - a triangle, a segment or a ray and an axis-aligned box
 // (book/triangle_box.hpp, Akenine-Moller's 13 axes; book/segment_box.hpp, 6 axes) evaluated
 // exactly on integers, the inputs read as integers on a grid per coordinate axis (grid.hpp).
 // Where it applies it gives the book's answer at an exact type: whether they meet and, if not,
@@ -34,13 +34,13 @@
 #pragma once
 
 #include <bit>
-#include <cdref/filter/grid.hpp>
+#include <cdref/filters/grid.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
-namespace cdref::oracle::sat_grid {
+namespace cdref::filters::sat_grid {
 
 using grid::Wide;
 
@@ -286,4 +286,4 @@ struct ShotBox {
   }
 };
 
-}  // namespace cdref::oracle::sat_grid
+}  // namespace cdref::filters::sat_grid

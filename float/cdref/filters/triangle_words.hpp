@@ -1,4 +1,4 @@
-// cdref/filter/triangle_words.hpp - the orientation form of a ray or segment cast on a triangle
+// cdref/filters/triangle_words.hpp - the orientation form of a ray or segment cast on a triangle
 // on double words: the second stage of the Section 3.4 cast oracles (exact/cdref/oracle/
 // ray_triangle.hpp, and through it the polygon casts), and of the robust tier's certified
 // decision on those casts (robust/ray_triangle.hpp), before the book's whole test on double words.
@@ -29,11 +29,11 @@
 // too: each product is homogeneous of degree 3 in the scaled inputs).
 #pragma once
 
-#include <cdref/filter/triangle_filter.hpp>
+#include <cdref/filters/triangle_filter.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 #include <cmath>
 
-namespace cdref::oracle::ray_triangle {
+namespace cdref::filters::ray_triangle {
 
 namespace words {
 
@@ -47,7 +47,7 @@ int triple_sign(const Pair<double> (&a)[3], const Pair<double> (&b)[3], const Pa
   Word x[3];
   word_bounds::cross_words<Mul>(b, c, x);
   const int s = word_bounds::sign_of(word_bounds::dot_words<Mul>(a, zero, x));
-  return s == staged::unknown ? 0 : s;
+  return s == word_bounds::unknown ? 0 : s;
 }
 
 template <class Mul>
@@ -111,9 +111,9 @@ inline int orientation_on_words(const Vec3<double>& s0, const Vec3<double>* t0, 
   return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(ray.source, nullptr, ray.direction, tri); });
 }
 
-}  // namespace cdref::oracle::ray_triangle
+}  // namespace cdref::filters::ray_triangle
 
-namespace cdref::oracle::sphere_triangle {
+namespace cdref::filters::sphere_triangle {
 
 // ---- A sphere and a triangle: the first stage's two certificates on double words ----------
 // The first stage (triangle_filter.hpp) takes the book's closest point x = v0 + u e1 + v e2 in
@@ -235,9 +235,9 @@ inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double
   return robust::with_products<true>([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
 }
 
-}  // namespace cdref::oracle::sphere_triangle
+}  // namespace cdref::filters::sphere_triangle
 
-namespace cdref::oracle::triangle_triangle {
+namespace cdref::filters::triangle_triangle {
 
 // ---- Two triangles: the first stage's tests with the signs on double words ----------------
 // The first stage (triangle_filter.hpp) proves two triangles disjoint when one's vertices lie
@@ -343,4 +343,4 @@ inline int polygon_on_words(const Polygon<double>& a, const Polygon<double>& b, 
   });
 }
 
-}  // namespace cdref::oracle::triangle_triangle
+}  // namespace cdref::filters::triangle_triangle

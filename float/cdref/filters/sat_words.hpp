@@ -1,4 +1,4 @@
-// cdref/filter/sat_words.hpp - Theorem 3.1 on double words, on the axes the first stage left
+// cdref/filters/sat_words.hpp - Theorem 3.1 on double words, on the axes the first stage left
 // open: the second stage of the Section 3.3 classification oracle for a segment, a triangle or an
 // oriented box against an axis-aligned or an oriented box (exact/cdref/oracle/separating_axes.hpp),
 // and of the robust tier's certified decision on those pairs (robust/separating_axes.hpp).
@@ -44,14 +44,14 @@
 // multiplied by a positive power of two (each is homogeneous in the lengths: of degree 1 on an
 // oriented box's face axes, 2 on an edge cross, 3 on a triangle's normal), and their signs stay. A ray's half-infinite projection (the sign of d . L,
 // exactly 0 on its own edge crosses) is not handled here: the casts on an oriented box have their
-// own second stage first (word_bounds.hpp, obb_cast_words), and a ray is left to the next stage.
+// own second stage first (box_cast_words.hpp, obb_cast_words), and a ray is left to the next stage.
 #pragma once
 
-#include <cdref/filter/sat_filter.hpp>
+#include <cdref/filters/sat_filter.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 #include <cmath>
 
-namespace cdref::oracle::sat_words {
+namespace cdref::filters::sat_words {
 
 using robust::Pair;
 using word_bounds::Word;
@@ -389,4 +389,4 @@ inline int decide(const Sphere<double>& sp, const OrientedBox<double>& b) {
   return robust::with_products([&](auto mul) { return sphere_obb_certificates<decltype(mul)>(s, bs); });
 }
 
-}  // namespace cdref::oracle::sat_words
+}  // namespace cdref::filters::sat_words

@@ -1,4 +1,4 @@
-// cdref/filter/obb_face.hpp - the face through which a shot enters (or leaves) an oriented box,
+// cdref/filters/obb_face.hpp - the face through which a shot enters (or leaves) an oriented box,
 // and that face's crossing parameter alone on double words, at double. The oracle's correctly
 // rounded lambda_enter takes the entering face (oracle/enter_obb.hpp, "An oriented box"); the robust
 // casts' first look takes both faces, with the entry point and the normal (robust/obb_cast.hpp).
@@ -50,13 +50,15 @@
 // unturned frame Y_i grows outward through the upper plane).
 #pragma once
 
-#include <cdref/filter/box_cast_filter.hpp>
+#include <cdref/filters/box_cast_filter.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cmath>
 #include <optional>
 
-namespace cdref::oracle::word_bounds {
+namespace cdref::filters::obb_face {
+
+using namespace cdref::word_bounds;  // the double words' operations and their bounds
 
 // s - o and the shot's direction (target - source, or the direction) as exact pairs.
 template <class Shot>
@@ -192,4 +194,4 @@ std::optional<FaceParameter> face_parameter(const Pair<double> (&sc)[3], const P
   return FaceParameter{robust::two_sum(l0, delta), err};
 }
 
-}  // namespace cdref::oracle::word_bounds
+}  // namespace cdref::filters::obb_face

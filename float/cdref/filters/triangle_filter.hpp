@@ -1,4 +1,4 @@
-// cdref/filter/triangle_filter.hpp - the first stage of the Section 3.4 classification oracles:
+// cdref/filters/triangle_filter.hpp - the first stage of the Section 3.4 classification oracles:
 // the orientation form of a ray or segment cast on a triangle, two certificates from one point
 // of a triangle for a sphere, and a plane and six edge casts for two triangles, each evaluated in
 // double against static error bounds. Plain double arithmetic on the query's inputs, so that both
@@ -99,12 +99,12 @@
 #include <bit>
 #include <cstdint>
 #include <cdref/cdref.hpp>
-#include <cdref/filter/grid.hpp>
-#include <cdref/filter/minmax.hpp>
+#include <cdref/filters/grid.hpp>
+#include <cdref/filters/minmax.hpp>
 #include <cmath>
 #include <limits>
 
-namespace cdref::oracle {
+namespace cdref::filters {
 
 namespace ray_triangle {
 
@@ -573,4 +573,4 @@ inline int polygon_filter(const Polygon<double>& a, const Polygon<double>& b) {
 }
 }  // namespace triangle_triangle
 
-}  // namespace cdref::oracle
+}  // namespace cdref::filters

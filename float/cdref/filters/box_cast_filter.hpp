@@ -1,4 +1,4 @@
-// cdref/filter/box_cast_filter.hpp - the first stage of the classification oracle for a
+// cdref/filters/box_cast_filter.hpp - the first stage of the classification oracle for a
 // segment or a ray cast on an axis-aligned box (Algorithm 3.3; exact/cdref/oracle/box_casts.hpp
 // holds the other stages, oracle/expansions.hpp the model of the bounds: u = 2^-53, gamma_K, the range checks),
 // with the helpers every stage-1 filter there uses. Plain double arithmetic on the query's
@@ -15,13 +15,13 @@
 // n_p d_q - n_q d_p <= 0 (n = -(s - c) -+ h, d = |target - source| or |direction|).
 #pragma once
 
-#include <cdref/filter/stage_tags.hpp>
+#include <cdref/filters/stage_tags.hpp>
 #include <cdref/primitives.hpp>
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
 
-namespace cdref::oracle::staged {
+namespace cdref::filters::staged {
 
 inline constexpr int unknown = 2;  // a sign (-1, 0, 1) or this; a decision (0, 1) or this
 inline constexpr double u = 0x1p-53;
@@ -501,4 +501,4 @@ inline int filter(const Ray<double>& ray, const Box<double>& box, plain = {}) {
   return f.ok ? hit_box_logic(f) : unknown;
 }
 
-}  // namespace cdref::oracle::staged
+}  // namespace cdref::filters::staged

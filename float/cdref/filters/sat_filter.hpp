@@ -1,4 +1,4 @@
-// cdref/filter/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
+// cdref/filters/sat_filter.hpp - the first stage of the Section 3.3 classification oracle:
 // every candidate separating axis of Theorem 3.1 evaluated in double against one static error
 // bound for the whole query, and for a sphere and an oriented box two certificates from one
 // point of the box; for a segment or a ray and an oriented box, Algorithm 3.3 in the box's
@@ -53,7 +53,7 @@
 #include "box_cast_filter.hpp"
 #include "minmax.hpp"
 
-namespace cdref::oracle {
+namespace cdref::filters {
 
 namespace sat {
 
@@ -709,4 +709,4 @@ inline bool as_axis_aligned(const OrientedBox<double>& b, Box<double>& out) {
 }
 }  // namespace sphere_obb
 
-}  // namespace cdref::oracle
+}  // namespace cdref::filters
