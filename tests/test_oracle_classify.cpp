@@ -993,8 +993,8 @@ void aabb_pairs_on_every_family(std::uint64_t& decided, std::uint64_t& left, std
           if constexpr (Ray) return a.direction; else return a.target;
         }();
         const staged::BoxExact x(a.source, to, b, !Ray);
-        const filters::box_cast_words::AabbWords<robust::SplitProduct> ws(a.source, to, b, !Ray);
-        const filters::box_cast_words::AabbWords<robust::FusedProduct> wf(a.source, to, b, !Ray);
+        const filters::box_cast_words::AabbWords<eft::SplitProduct> ws(a.source, to, b, !Ray);
+        const filters::box_cast_words::AabbWords<eft::FusedProduct> wf(a.source, to, b, !Ray);
         unsigned bs = 0, bt = 0;
         for (int j = 0; j < 3; ++j) {
           if (x.src_lo(j) < 0) bs |= 1u << (2 * j);
@@ -1123,15 +1123,15 @@ namespace {
 // Every axis's s1 = lo - r_B and s2 = -r_B - hi on double words (filters/sat_words.hpp) against the
 // same expressions at CGAL::Gmpq on the same exact pairs: each word within its bound.
 using Qn = CGAL::Gmpq;
-Qn qpair(const robust::Pair<double>& p) { return Qn(p.hi) + Qn(p.lo); }
-Qn qdot(const robust::Pair<double> (&x)[3], const Qn (&L)[3]) {
+Qn qpair(const eft::Pair<double>& p) { return Qn(p.hi) + Qn(p.lo); }
+Qn qdot(const eft::Pair<double> (&x)[3], const Qn (&L)[3]) {
   return qpair(x[0]) * L[0] + qpair(x[1]) * L[1] + qpair(x[2]) * L[2];
 }
-void qcross(const robust::Pair<double> (&a)[3], const robust::Pair<double> (&b)[3], Qn (&L)[3]) {
+void qcross(const eft::Pair<double> (&a)[3], const eft::Pair<double> (&b)[3], Qn (&L)[3]) {
   for (int i = 0; i < 3; ++i)
     L[i] = qpair(a[(i + 1) % 3]) * qpair(b[(i + 2) % 3]) - qpair(a[(i + 2) % 3]) * qpair(b[(i + 1) % 3]);
 }
-Qn qradius(const robust::Pair<double> (&g)[3][3], const double (&h)[3], const Qn (&L)[3]) {
+Qn qradius(const eft::Pair<double> (&g)[3][3], const double (&h)[3], const Qn (&L)[3]) {
   Qn r = 0;
   for (int k = 0; k < 3; ++k) r += Qn(h[k]) * CGAL::abs(qdot(g[k], L));
   return r;
@@ -1633,7 +1633,7 @@ TEST_CASE("a sphere and an oriented box: the first stage's certificates on doubl
         OrientedBox<double> b;
         REQUIRE(word_bounds::in_word_range(s0, b0, s, b));
         if (w == 1) {  // the certificate itself, at Gmpq: x in the box and |q - x| <= rho
-          robust::Pair<double> dp[3], g[3];
+          eft::Pair<double> dp[3], g[3];
           word_bounds::Word ww[3];
           filters::sat_words::sphere_obb_point<word_bounds::SplitProduct>(s, b, dp, g, ww);
           Qn dist2 = 0;
@@ -1858,7 +1858,7 @@ int first_look_graded(const Inputs& in, const std::string& where) {
   // the closest point's offset v = x - c (and in the face region the normal n) within the
   // bounds the first look derives, against x at Gmpq (the book's closest point is the truth)
   robust::detail::FirstLookPoint P;
-  if (robust::detail::first_look_point<robust::SplitProduct>(s, t, P)) {
+  if (robust::detail::first_look_point<eft::SplitProduct>(s, t, P)) {
     using Q = CGAL::Gmpq;
     const Sphere<Q> sq = oracle::rational_inputs::toq(s);
     const Triangle<Q> tq = oracle::rational_inputs::toq(t);
@@ -1880,7 +1880,7 @@ int first_look_graded(const Inputs& in, const std::string& where) {
   // the classification from g's certain sign, or the first stage's
   Proximity<double> r;
   int c = oracle::sphere_triangle::unknown;
-  const unsigned done = robust::detail::sphere_triangle_fast<robust::SplitProduct>(s, t, c, want_proximity, r);
+  const unsigned done = robust::detail::sphere_triangle_fast<eft::SplitProduct>(s, t, c, want_proximity, r);
   if (c == oracle::sphere_triangle::unknown) return 0;
   const Answer truth = fuzz::truth(q, in, 53);
   REQUIRE(truth.cls == (c != 0));
@@ -1976,7 +1976,7 @@ TEST_CASE("sphere-triangle's first look: every value it answers within an ulp of
     const auto [s, t] = queries::SphereTriangle::make<double>(in);
     Proximity<double> r;
     int c = oracle::sphere_triangle::unknown;
-    robust::detail::sphere_triangle_fast<robust::SplitProduct>(s, t, c, want_proximity, r);
+    robust::detail::sphere_triangle_fast<eft::SplitProduct>(s, t, c, want_proximity, r);
     ++touching;
     if (c == oracle::sphere_triangle::unknown) continue;
     ++classified;
@@ -2008,7 +2008,7 @@ TEST_CASE("sphere-triangle's first look for the oracle: every value it answers t
       for (int i = 0; i < 3; ++i) in[4 + 3 * m + i] = v[m][i];
     const auto [s, t] = queries::SphereTriangle::make<double>(in);
     Proximity<double> r;
-    if (!robust::detail::sphere_triangle_rounded<robust::SplitProduct>(s, t, r)) {
+    if (!robust::detail::sphere_triangle_rounded<eft::SplitProduct>(s, t, r)) {
       ++refused;
       continue;
     }
@@ -2041,7 +2041,7 @@ bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rou
   INFO(where);
   robust::detail::FirstLookPoint P;
   robust::detail::ObbFeature feature;
-  if (robust::detail::sphere_obb_point<robust::SplitProduct>(s, b, P, feature)) {
+  if (robust::detail::sphere_obb_point<eft::SplitProduct>(s, b, P, feature)) {
     using Q = CGAL::Gmpq;
     const Sphere<Q> sq = oracle::rational_inputs::toq(s);
     const OrientedBox<Q> bq = oracle::rational_inputs::toq(b);
@@ -2072,9 +2072,9 @@ bool obb_first_look_graded(const Inputs& in, const std::string& where, bool* rou
   Proximity<double> r, rc;
   int c = oracle::sat::unknown, cc = oracle::sat::unknown;
   const auto stage = [&] { return robust::detail::first_stage(s, b); };
-  const unsigned done = robust::detail::sphere_obb_fast<robust::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r, stage);
+  const unsigned done = robust::detail::sphere_obb_fast<eft::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r, stage);
   const unsigned kept =
-      robust::detail::sphere_obb_fast<robust::SplitProduct, true>(s, b, cc, oracle::sat::unknown, want_proximity, rc, stage);
+      robust::detail::sphere_obb_fast<eft::SplitProduct, true>(s, b, cc, oracle::sat::unknown, want_proximity, rc, stage);
   if (rounded_all) *rounded_all = false;
   if (c == oracle::sat::unknown) return false;
   const Answer truth = fuzz::truth(q, in, 53);
@@ -2220,7 +2220,7 @@ TEST_CASE("sphere-obb's first look: every value it answers within an ulp of the 
     const auto [s, b] = Spec::make<double>(in);
     Proximity<double> r;
     int c = oracle::sat::unknown;
-    robust::detail::sphere_obb_fast<robust::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r,
+    robust::detail::sphere_obb_fast<eft::SplitProduct>(s, b, c, oracle::sat::unknown, want_proximity, r,
                                                           [&] { return robust::detail::first_stage(s, b); });
     if (c == oracle::sat::unknown) continue;
     ++classified;
@@ -2244,8 +2244,8 @@ bool obb_cast_first_look_graded(const Inputs& in, const std::string& where, bool
   INFO(where);
   const int det = det3_sign(b.axis[0], b.axis[1], b.axis[2]);
   Cast<double> r, rc;
-  const bool done = robust::detail::obb_cast_first_look<robust::SplitProduct, false>(a, b, det, want_cast, r);
-  const bool kept = robust::detail::obb_cast_first_look<robust::SplitProduct, true>(a, b, det, want_cast, rc);
+  const bool done = robust::detail::obb_cast_first_look<eft::SplitProduct, false>(a, b, det, want_cast, r);
+  const bool kept = robust::detail::obb_cast_first_look<eft::SplitProduct, true>(a, b, det, want_cast, rc);
   if (kept_all) *kept_all = kept;
   if (!done && !kept) return false;
   const Answer truth = fuzz::truth(q, in, 53);
@@ -2346,8 +2346,8 @@ bool sat_first_look_graded(const Inputs& in, const std::string& where, bool* kep
   const auto [a, b] = Spec::template make<double>(in);
   INFO(where);
   Separation<double> r, rc;
-  const bool done = robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, r);
-  const bool kept = robust::detail::sat_first_look<robust::SplitProduct, true>(a, b, rc);
+  const bool done = robust::detail::sat_first_look<eft::SplitProduct, false>(a, b, r);
+  const bool kept = robust::detail::sat_first_look<eft::SplitProduct, true>(a, b, rc);
   if (kept_all) *kept_all = kept;
   if (!done && !kept) return false;
   using oracle::rational_inputs::toq;
@@ -2384,7 +2384,7 @@ TEST_CASE("the separating-axis queries' first look: the classification and the f
       if (done) {
         const auto [a, b] = Spec::template make<double>(in);
         Separation<double> s;
-        robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
+        robust::detail::sat_first_look<eft::SplitProduct, false>(a, b, s);
         apart[fam] += !s.intersect;
       }
     });
@@ -2404,7 +2404,7 @@ TEST_CASE("the separating-axis queries' first look: the classification and the f
   // double word is 0): the first look must refuse it rather than give 0.
   const robust::detail::PairVec x{{{0.0, 0.0}, {1.0, 0x1p-54}, {1.0, 0.0}}}, y{{{0.0, 0.0}, {1.0, 0x1p-53}, {1.0, 0x1p-54}}};
   Vec3<double> dir;
-  const bool given = robust::detail::cross_kept<robust::SplitProduct, false>(x, y, dir);
+  const bool given = robust::detail::cross_kept<eft::SplitProduct, false>(x, y, dir);
   CHECK((!given || (dir[0] == 0x1p-108 && dir[1] == 0 && dir[2] == 0)));
 }
 
@@ -2432,7 +2432,7 @@ int separate_exactly(std::uint64_t n) {
     REQUIRE(x.axis == exact.axis);
     for (int c = 0; c < 3; ++c) CHECK(x.direction[c] == round_to<double>(exact.direction[c]));
     Separation<double> first, grid;
-    fallback += !robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, first) &&
+    fallback += !robust::detail::sat_first_look<eft::SplitProduct, false>(a, b, first) &&
                 !robust::detail::separation_on_grid(a, b, grid) && !robust::detail::separation<double>(a, b).second;
   });
   return fallback;
@@ -2499,10 +2499,10 @@ void scaled_far_from_one(std::uint64_t n) {
           }
           if constexpr (requires { robust::separate(a, b); }) {
             Separation<double> s;
-            first[lopsided] += robust::detail::sat_first_look<robust::SplitProduct, false>(a, b, s);
+            first[lopsided] += robust::detail::sat_first_look<eft::SplitProduct, false>(a, b, s);
           } else {
             Cast<double> c;
-            first[lopsided] += robust::detail::obb_cast_first_look<robust::SplitProduct, false>(
+            first[lopsided] += robust::detail::obb_cast_first_look<eft::SplitProduct, false>(
                 a, b, det3_sign(b.axis[0], b.axis[1], b.axis[2]), want_cast, c);
           }
         }
@@ -2537,7 +2537,7 @@ TEST_CASE("polygon-sphere's first look: where it answers, every value within an 
   const auto graded = [&](const Inputs& in, const std::string& where) {
     const auto [s, p] = Q::make<double>(in);
     Proximity<double> r;
-    if (!robust::detail::polygon_sphere_first_look<robust::SplitProduct>(s, p, r)) return false;
+    if (!robust::detail::polygon_sphere_first_look<eft::SplitProduct>(s, p, r)) return false;
     const Answer truth = fuzz::truth(q, in, 53);
     INFO(where);
     REQUIRE(truth.cls == r.intersect);
@@ -2908,7 +2908,7 @@ TEST_CASE("sphere-box on double words decides only with the exact sign, down to 
     const int got = staged::sphere_box_words(sp, box);
     // ... the same decisions from split products (both exact, the same sums)
     if (staged::sphere_box_words_range(sp, box))
-      REQUIRE(staged::sphere_box_words_with<robust::SplitProduct>(sp, box) == got);
+      REQUIRE(staged::sphere_box_words_with<eft::SplitProduct>(sp, box) == got);
     touching += exact_touch;
     if (got == staged::unknown) {
       ++left;
@@ -2957,7 +2957,7 @@ TEST_CASE("sigma on double words decides only with the exact sign, within about 
     const staged::SphereWords words(src, to, Sphere<double>{c, rho}, segment);
     const int got = staged::sigma_words(words.s, words.r, words.rho);  // fused products where the CPU has them
     // ... and split ones: the same decisions (both exact products, the same sums)
-    REQUIRE(staged::sigma_words_with<robust::SplitProduct>(words.s, words.r, words.rho) == got);
+    REQUIRE(staged::sigma_words_with<eft::SplitProduct>(words.s, words.r, words.rho) == got);
     if (got == staged::unknown) {
       ++left;
       continue;

@@ -98,14 +98,14 @@ inline int expansion(const Segment<double>& seg0, const Box<double>& box0, plain
   Segment<double> seg;
   Box<double> box;
   if (!scaled(seg0, box0, seg, box)) return unknown;
-  return robust::with_products(
+  return eft::with_products(
       [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(seg.source, seg.target, box, true)); });
 }
 inline int expansion(const Ray<double>& ray0, const Box<double>& box0, plain = {}) {
   Ray<double> ray;
   Box<double> box;
   if (!scaled(ray0, box0, ray, box)) return unknown;
-  return robust::with_products(
+  return eft::with_products(
       [&](auto mul) { return hit_box_logic(BoxStaged<decltype(mul)>(ray.source, ray.direction, box, false)); });
 }
 

@@ -33,7 +33,7 @@
 #include <cdref/filters/obb_face.hpp>
 #include <cdref/oracle/rational.hpp>
 #include <cdref/oracle/stage.hpp>
-#include <cdref/robust/eft.hpp>
+#include <cdref/bounded/eft.hpp>
 #include <cdref/solid/obb.hpp>
 #include <cmath>
 #include <limits>
@@ -43,7 +43,7 @@ namespace cdref::oracle {
 
 namespace enter_detail {
 
-using robust::Pair;
+using eft::Pair;
 
 using namespace word_bounds;
 using namespace cdref::filters::obb_face;  // an oriented box's faces (shot_pairs: every shot's pairs)
@@ -55,9 +55,9 @@ inline void affine_words(const Pair<double> (&x)[3], double l, const Pair<double
   using std::fabs;
   for (int i = 0; i < 3; ++i) {
     const Pair<double> P = Mul::prod(l, d[i].hi);
-    const Pair<double> T = robust::two_sum(x[i].hi, P.hi);
+    const Pair<double> T = eft::two_sum(x[i].hi, P.hi);
     const double zl = l * d[i].lo;
-    w[i] = robust::two_sum(T.hi, ((T.lo + x[i].lo) + P.lo) + zl);
+    w[i] = eft::two_sum(T.hi, ((T.lo + x[i].lo) + P.lo) + zl);
     ew[i] = 4 * uu * (((fabs(T.lo) + fabs(x[i].lo)) + fabs(P.lo)) + fabs(zl)) + 8 * eta;
   }
 }
@@ -82,14 +82,14 @@ inline std::optional<double> plane_parameter(const Pair<double> (&x)[3], const P
   affine_words<Mul>(x, l0, d, w, ew);
   const Word G = dot_words<Mul>(w, ew, n);
   // g = G + off: one two_sum of the highs, the rest in double
-  const Pair<double> S = robust::two_sum(G.v.hi, off.v.hi);
+  const Pair<double> S = eft::two_sum(G.v.hi, off.v.hi);
   const double rest = S.lo + (G.v.lo + off.v.lo);
   const double g = S.hi + rest;
   const double eg = (G.e + off.e + 2 * uu * (fabs(rest) + fabs(g))) * (1 + 4 * uu);
   // delta = -g / D, off from -g_exact / D_exact by (eg + |g| eD / |D|) / D_lo + u |delta|
   const double delta = -g / Dv;
   const double err = 2 * ((eg + fabs(g) * D.e / fabs(Dv)) / D_lo + uu * fabs(delta)) + eta;
-  const Pair<double> z = robust::two_sum(l0, delta);
+  const Pair<double> z = eft::two_sum(l0, delta);
   double v;
   if (!std::isfinite(err) || !Bounded2::within(z.hi, z.lo, err).try_rounded(v)) return std::nullopt;
   return v;
@@ -146,11 +146,11 @@ std::optional<double> first_double(const Shot& x, const Solid& y, const Face&...
     return obb_double<Mul>(x, y, face...);
 }
 
-// The double path with fused products where the CPU has them (robust::with_products: on x86-64
+// The double path with fused products where the CPU has them (eft::with_products: on x86-64
 // a copy compiled for the FMA extension, every call inside it inlined, chosen at run time; a
 // build with -mfma or on another architecture: the split copy, or std::fma as the compiler
 // provides it). fused_double is that copy alone (the tests compare it with the split one).
-using robust::cpu_fma;
+using eft::cpu_fma;
 // The copy's answer crosses the call as one double, NaN for "cannot tell" (a value is finite):
 // returned as std::optional<double>, g++ stored its flag byte and reloaded the pair as one
 // word, a store the load could not take forwarded, and that stall was 9% of a hit's time
@@ -163,12 +163,12 @@ inline std::optional<double> nan_to_none(double v) {
 template <class Shot, class Solid, class... Face>
 std::optional<double> fused_double(const Shot& x, const Solid& y, const Face&... face) {
   return nan_to_none(
-      robust::fused_call([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
+      eft::fused_call([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
 }
 template <class Shot, class Solid, class... Face>
 std::optional<double> solid_double(const Shot& x, const Solid& y, const Face&... face) {
   return nan_to_none(
-      robust::with_products([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
+      eft::with_products([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
 }
 
 // The classification's answer, then on a hit the double path (a value, or nothing when it

@@ -36,8 +36,8 @@ std::optional<double> box_double(const Shot& x, const Box<double>& box) {
   double best = 0.0;
   for (int i = 0; i < 3; ++i) {
     // n = (c_i - source_i) -+ h_i = m + t exactly, t = me + pe rounded once (|t - t^| <= u |t^|)
-    const Pair<double> p = robust::two_sum(box.center[i], -x.source[i]);
-    const Pair<double> lower = robust::two_sum(p.hi, -box.extent[i]), upper = robust::two_sum(p.hi, box.extent[i]);
+    const Pair<double> p = eft::two_sum(box.center[i], -x.source[i]);
+    const Pair<double> lower = eft::two_sum(p.hi, -box.extent[i]), upper = eft::two_sum(p.hi, box.extent[i]);
     const double tl = lower.lo + p.lo, tu = upper.lo + p.lo;
     // the source's outcode bits: the signs of n (certain when m dominates, or m = 0: then t
     // is exact and its rounding keeps its sign)
@@ -54,7 +54,7 @@ std::optional<double> box_double(const Shot& x, const Box<double>& box) {
     // d = dh + dl exactly (a ray: dl = 0)
     Pair<double> d;
     if constexpr (std::is_same_v<Shot, Segment<double>>)
-      d = robust::two_sum(x.target[i], -x.source[i]);
+      d = eft::two_sum(x.target[i], -x.source[i]);
     else
       d = {x.direction[i], 0.0};
     if (!(fabs(m) >= lo_lim && fabs(m) <= hi_lim && fabs(d.hi) >= lo_lim && fabs(d.hi) <= hi_lim))
@@ -62,14 +62,14 @@ std::optional<double> box_double(const Shot& x, const Box<double>& box) {
     // q1 = m / dh; the residual R = n - q1 d: m - P exact (P = fl(q1 dh) is within 2u of m),
     // the small terms summed with three roundings
     const double q1 = m / d.hi;
-    const Pair<double> P = robust::two_prod_split(q1, d.hi);
+    const Pair<double> P = eft::two_prod_split(q1, d.hi);
     const double r0 = m - P.hi, qd = q1 * d.lo;
     const double R = ((r0 - P.lo) + tn) - qd;
     const double eR = 4 * u * (((fabs(r0) + fabs(P.lo)) + fabs(tn)) + fabs(qd)) * (1 + 8 * u);
     // z = q1 + R_exact / d: q2 = R / dh off by eR / |d| + 2.1 u |q2| (dl, and q2's rounding)
     const double q2 = R / d.hi;
     const double E = 2 * (eR / (fabs(d.hi) * (1 - u)) + 2.1 * u * fabs(q2)) + under;
-    const Pair<double> z = robust::two_sum(q1, q2);
+    const Pair<double> z = eft::two_sum(q1, q2);
     double v;
     if (!(fabs(q1) >= lo_lim && fabs(q1) <= hi_lim) || !Bounded2::within(z.hi, z.lo, E).try_rounded(v))
       return std::nullopt;

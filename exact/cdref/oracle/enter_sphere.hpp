@@ -124,7 +124,7 @@ inline int sphere_step(const Pair<double> (&s)[3], const Pair<double> (&r)[3], d
   if (!(kappa <= 0.5)) return 2;
   const double delta = P0 / g;
   const double E = 2 * ((eP + fabs(P0) * eg * inv) * inv + u * fabs(delta) + 0.6 * kappa * P_up * inv) + eta;
-  const Pair<double> z = robust::two_sum(z0, delta);
+  const Pair<double> z = eft::two_sum(z0, delta);
   out = Bounded2::within(z.hi, z.lo, E);
   return std::isfinite(E) ? 1 : 2;
 }
@@ -165,10 +165,10 @@ int sphere_words(const Shot& x, const Sphere<double>& sp, const Pair<double> (&s
   const double delta = err_b / a_lo + fabs(Q.f.hi) * (1 + 4 * u) * (err_a / a_lo + 8 * u * u);
   const double err_D = 56 * u * u * (rho2 + L2) + 2 * (nl + e) * e + e * e + delta * delta * R2 + 64 * E;
   // step 4 of that header: q = |b| + X, X = sqrt(a D), z = c / q
-  const Pair<double> X = robust::sqrt_pair(robust::mul_pair(Q.a, Q.D));
-  const Pair<double> qs = robust::two_sum(-Q.b.hi, X.hi);
-  const Pair<double> q = robust::fast_two_sum(qs.hi, qs.lo + (X.lo - Q.b.lo));
-  const Pair<double> z = robust::div_pair(A.c, q);
+  const Pair<double> X = eft::sqrt_pair(eft::mul_pair(Q.a, Q.D));
+  const Pair<double> qs = eft::two_sum(-Q.b.hi, X.hi);
+  const Pair<double> q = eft::fast_two_sum(qs.hi, qs.lo + (X.lo - Q.b.lo));
+  const Pair<double> z = eft::div_pair(A.c, q);
   // item B: |X^ - X| (X exact on the right-hand sides: solved for it, 1 / (1 - k) <= 1 + 2k)
   const double rel_a = err_a / a_lo;
   const double sq = std::sqrt(R2 * err_D) * (1 + 4 * u);
@@ -189,7 +189,7 @@ int sphere_words(const Shot& x, const Sphere<double>& sp, const Pair<double> (&s
   const double rel_q = (err_b + eX) / q_lo + 3.1 * u * u, rel_c = err_c / c_lo;
   if (!(rel_q <= 0.1 && rel_c <= 0.1)) return 2;
   const double rel_z = (rel_c + rel_q) / (1 - rel_q) + 10 * u * u;
-  const Pair<double> zn = robust::fast_two_sum(z.hi, z.lo);
+  const Pair<double> zn = eft::fast_two_sum(z.hi, z.lo);
   const double bound = 2 * 1.35 * rel_z * fabs(zn.hi) + E;  // |z| <= 1.35 |zn.hi|; x 2: the bound's own rounding
   if (!std::isfinite(bound) || !(fabs(zn.hi) >= 0x1p-960)) return 2;
   out = Bounded2::within(zn.hi, zn.lo, bound);

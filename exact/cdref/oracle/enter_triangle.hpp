@@ -40,8 +40,8 @@ std::optional<double> triangle_double(const Shot& x, const Triangle<double>& tri
   Pair<double> e1[3], e2[3], sv[3], d[3];
   shot_pairs(x, v0, sv, d);
   for (int i = 0; i < 3; ++i) {
-    e1[i] = robust::two_sum(tri.vertex[1][i], -v0[i]);
-    e2[i] = robust::two_sum(tri.vertex[2][i], -v0[i]);
+    e1[i] = eft::two_sum(tri.vertex[1][i], -v0[i]);
+    e2[i] = eft::two_sum(tri.vertex[2][i], -v0[i]);
   }
   if (!(std::max({largest(e1), largest(e2), largest(sv), largest(d)}) <= 0x1p250)) return std::nullopt;
   Word n[3];

@@ -320,11 +320,11 @@ bool scaled(const A& a, const B& b, A& a2, B& b2) {
 // 1 + 64u for the rounding of the bounds themselves (a few dozen nonnegative terms, each
 // rounded a few times). Returns +1, -1 or `unknown` (every |X_k| at most 2^500, so that no
 // square overflows and two_prod's split is exact; otherwise, and on a non-finite bound,
-// unknown). Mul: the exact products' policy (robust/eft.hpp).
+// unknown). Mul: the exact products' policy (bounded/eft.hpp).
 template <class Mul, int N>
 int signed_squares(const double (&X)[N], const double (&L)[N], const double (&eps)[N], const double (&sg)[N]) {
   using std::fabs;
-  using P2 = robust::Pair<double>;
+  using P2 = eft::Pair<double>;
   constexpr double u = 0x1p-53, eta = 0x1p-1074;
   static_assert(N <= 6, "the small terms' bound is written for at most 6 squares");
   double H = 0, small[3 * N], err = 0;
@@ -339,7 +339,7 @@ int signed_squares(const double (&X)[N], const double (&L)[N], const double (&ep
     if (k == 0) {
       H = sg[k] * Z.hi;
     } else {
-      const P2 t = robust::two_sum(H, sg[k] * Z.hi);
+      const P2 t = eft::two_sum(H, sg[k] * Z.hi);
       H = t.hi;
       small[ns++] = t.lo;
     }

@@ -78,12 +78,12 @@ inline bool sphere_box_words_range(const Sphere<double>& sp, const Box<double>& 
 template <class Mul>
 int sphere_box_words_with(const Sphere<double>& sp, const Box<double>& box) {
   using std::fabs;
-  using P2 = robust::Pair<double>;
+  using P2 = eft::Pair<double>;
   constexpr double u = 0x1p-53, eta = 0x1p-1074;
   double X[4] = {0, 0, 0, sp.radius}, L[4] = {0, 0, 0, 0}, eps[4] = {0, 0, 0, 0}, sg[4] = {1, 1, 1, -1};
   bool outside = false;
   for (int i = 0; i < 3; ++i) {
-    const P2 c = robust::two_sum(sp.center[i], -box.center[i]);
+    const P2 c = eft::two_sum(sp.center[i], -box.center[i]);
     const double h = box.extent[i];
     double side;
     if (c.hi < -h || (c.hi == -h && c.lo < 0))
@@ -93,10 +93,10 @@ int sphere_box_words_with(const Sphere<double>& sp, const Box<double>& box) {
     else
       continue;  // v_i = 0
     outside = true;
-    const P2 p = robust::two_sum(side, -c.hi);
-    const P2 q = robust::two_sum(p.hi, -c.lo);
+    const P2 p = eft::two_sum(side, -c.hi);
+    const P2 q = eft::two_sum(p.hi, -c.lo);
     const double lo = q.lo + p.lo;
-    const P2 v = robust::two_sum(q.hi, lo);
+    const P2 v = eft::two_sum(q.hi, lo);
     X[i] = v.hi, L[i] = v.lo, eps[i] = u * fabs(lo) + eta;
   }
   if (!outside) return 1;
@@ -108,7 +108,7 @@ inline int sphere_box_words(const Sphere<double>& sp0, const Box<double>& box0) 
   Box<double> box = box0;
   if (!sphere_box_words_range(sp, box) && !(scaled(sp0, box0, sp, box) && sphere_box_words_range(sp, box)))
     return unknown;
-  return robust::with_products([&](auto mul) { return sphere_box_words_with<decltype(mul)>(sp, box); });
+  return eft::with_products([&](auto mul) { return sphere_box_words_with<decltype(mul)>(sp, box); });
 }
 // After the robust tier's own filter (robust/sphere_box.hpp: it decides to within about u^2 of
 // the scale from touching, for less), before its decision (2^-52 from touching it took about

@@ -155,9 +155,9 @@ struct SphereStaged {
 // sigma_words below takes the fused products where the CPU has the instruction (the split
 // products were half of this stage's time).
 template <class Mul>
-int sigma_words_with(const robust::Pair<double> (&s)[3], const robust::Pair<double> (&r)[3], double rho) {
+int sigma_words_with(const eft::Pair<double> (&s)[3], const eft::Pair<double> (&r)[3], double rho) {
   using std::fabs;
-  using P2 = robust::Pair<double>;
+  using P2 = eft::Pair<double>;
   constexpr double u = 0x1p-53, eta = 0x1p-1074;
   const auto in_range = [](double x) { return int(x == 0 || (fabs(x) >= 0x1p-300 && fabs(x) <= 0x1p200)); };
   int ok = in_range(rho);
@@ -167,32 +167,32 @@ int sigma_words_with(const robust::Pair<double> (&s)[3], const robust::Pair<doub
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const P2 Pk = Mul::prod(s[i].hi, r[j].hi), Qk = Mul::prod(s[j].hi, r[i].hi);
-    const P2 xy = robust::two_sum(Pk.hi, -Qk.hi);
+    const P2 xy = eft::two_sum(Pk.hi, -Qk.hi);
     const double m = (s[i].hi * r[j].lo + s[i].lo * r[j].hi) - (s[j].hi * r[i].lo + s[j].lo * r[i].hi);
-    const P2 C = robust::two_sum(xy.hi, ((xy.lo + Pk.lo) - Qk.lo) + m);
+    const P2 C = eft::two_sum(xy.hi, ((xy.lo + Pk.lo) - Qk.lo) + m);
     X[k] = C.hi, L[k] = C.lo, eps[k] = 32 * u * u * (fabs(Pk.hi) + fabs(Qk.hi)) + 8 * eta, sg[k] = -1;
     const P2 ab = Mul::prod(r[k].hi, rho);
-    const P2 D = robust::two_sum(ab.hi, ab.lo + r[k].lo * rho);
+    const P2 D = eft::two_sum(ab.hi, ab.lo + r[k].lo * rho);
     X[3 + k] = D.hi, L[3 + k] = D.lo, eps[3 + k] = 4 * u * u * fabs(ab.hi) + 4 * eta, sg[3 + k] = 1;
   }
   return signed_squares<Mul>(X, L, eps, sg);
 }
-inline int sigma_words(const robust::Pair<double> (&s)[3], const robust::Pair<double> (&r)[3], double rho) {
-  return robust::with_products([&](auto mul) { return sigma_words_with<decltype(mul)>(s, r, rho); });
+inline int sigma_words(const eft::Pair<double> (&s)[3], const eft::Pair<double> (&r)[3], double rho) {
+  return eft::with_products([&](auto mul) { return sigma_words_with<decltype(mul)>(s, r, rho); });
 }
 
 // The filter's signs, and sigma on double words where the filter leaves it open (the second
 // stage's first try; the other signs open: unknown, for the robust tier's double words).
 struct SphereWords {
   SphereFilter f;
-  robust::Pair<double> s[3], r[3];
+  eft::Pair<double> s[3], r[3];
   double rho;
   bool rzero;
   SphereWords(const Vec3<double>& src, const Vec3<double>& rt, const Sphere<double>& sp, bool segment)
       : f(src, rt, sp, segment), rho(sp.radius), rzero(f.rzero) {
     for (int i = 0; i < 3; ++i) {
-      s[i] = robust::two_sum(src[i], -sp.center[i]);
-      r[i] = segment ? robust::two_sum(rt[i], -src[i]) : robust::Pair<double>{rt[i], 0.0};
+      s[i] = eft::two_sum(src[i], -sp.center[i]);
+      r[i] = segment ? eft::two_sum(rt[i], -src[i]) : eft::Pair<double>{rt[i], 0.0};
     }
   }
   int ss_rho2() const { return f.ss_rho2(); }

@@ -27,13 +27,13 @@
 
 #include <algorithm>
 #include <cdref/primitives.hpp>
-#include <cdref/robust/eft.hpp>
-#include <cdref/robust/words.hpp>
+#include <cdref/bounded/eft.hpp>
+#include <cdref/bounded/scaling.hpp>
 #include <cmath>
 
 namespace cdref::word_bounds {
 
-using robust::Pair;
+using eft::Pair;
 
 // sign_of's answer where the sign is not certain: the filters' `unknown` (cdref/filters/).
 inline constexpr int unknown = 2;
@@ -53,15 +53,15 @@ struct Word {
   double e;
 };
 
-// The exact products as a policy (robust/eft.hpp: Dekker's split, or one fused multiply-add;
+// The exact products as a policy (bounded/eft.hpp: Dekker's split, or one fused multiply-add;
 // where the operands lie in [2^-600, 2^600] or one is zero, as in the oracle's enter paths, both
 // give the same pair; the oriented-box casts' ObbWords has no lower range guard, and a product whose error term
 // underflows may differ between the two by less than the 2^-1022 each bound allows for it). A build without -mfma has std::fma as a library call, so the paths built on these
 // (oracle/enter_sphere.hpp, enter_obb.hpp and enter_triangle.hpp, about 7, 60 and 20 products a
 // call; the oriented-box casts' classification, filters/box_cast_words.hpp) are compiled twice and the fused copy is
-// taken where the CPU has the instruction (robust::cpu_fma).
-using robust::FusedProduct;
-using robust::SplitProduct;
+// taken where the CPU has the instruction (eft::cpu_fma).
+using eft::FusedProduct;
+using eft::SplitProduct;
 
 // a_j b_k - a_k b_j for exact pairs: the products of the high parts exact, the four cross
 // terms and the lows in double (7 terms, 6 additions, 4 rounded products: 8u of their
@@ -70,11 +70,11 @@ template <class Mul = SplitProduct>
 inline Word cross_term(const Pair<double>& aj, const Pair<double>& bk, const Pair<double>& ak, const Pair<double>& bj) {
   using std::fabs;
   const Pair<double> P1 = Mul::prod(aj.hi, bk.hi), P2 = Mul::prod(ak.hi, bj.hi);
-  const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
+  const Pair<double> S = eft::two_sum(P1.hi, -P2.hi);
   const double a1 = aj.hi * bk.lo, b1 = aj.lo * bk.hi, a2 = ak.hi * bj.lo, b2 = ak.lo * bj.hi;
   const double lo = ((S.lo + P1.lo) - P2.lo) + ((a1 + b1) - (a2 + b2));
   const double M = fabs(P1.hi) + fabs(P2.hi);
-  return {robust::two_sum(S.hi, lo),
+  return {eft::two_sum(S.hi, lo),
           8 * uu * ((fabs(S.lo) + fabs(P1.lo) + fabs(P2.lo)) + ((fabs(a1) + fabs(b1)) + (fabs(a2) + fabs(b2)))) +
               2 * uu * uu * M * (1 + 4 * uu) + 16 * eta};
 }
@@ -87,9 +87,9 @@ inline void cross_of_doubles(const Vec3<double>& a, const Vec3<double>& b, Word 
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const Pair<double> P1 = Mul::prod(a[j], b[k]), P2 = Mul::prod(a[k], b[j]);
-    const Pair<double> S = robust::two_sum(P1.hi, -P2.hi);
+    const Pair<double> S = eft::two_sum(P1.hi, -P2.hi);
     const double lo = (S.lo + P1.lo) - P2.lo;
-    n[i] = {robust::two_sum(S.hi, lo), 3 * uu * ((fabs(S.lo) + fabs(P1.lo)) + fabs(P2.lo)) + 4 * eta};
+    n[i] = {eft::two_sum(S.hi, lo), 3 * uu * ((fabs(S.lo) + fabs(P1.lo)) + fabs(P2.lo)) + 4 * eta};
   }
 }
 template <class Mul = SplitProduct>
@@ -108,7 +108,7 @@ inline Word dot_words(const Pair<double> (&x)[3], const double (&ex)[3], const W
   using std::fabs;
   const Pair<double> Q0 = Mul::prod(x[0].hi, y[0].v.hi), Q1 = Mul::prod(x[1].hi, y[1].v.hi),
                      Q2 = Mul::prod(x[2].hi, y[2].v.hi);
-  const Pair<double> H1 = robust::two_sum(Q0.hi, Q1.hi), H2 = robust::two_sum(H1.hi, Q2.hi);
+  const Pair<double> H1 = eft::two_sum(Q0.hi, Q1.hi), H2 = eft::two_sum(H1.hi, Q2.hi);
   double lows = (Q0.lo + Q1.lo) + (Q2.lo + (H1.lo + H2.lo));
   double lows_abs = fabs(Q0.lo) + fabs(Q1.lo) + fabs(Q2.lo) + fabs(H1.lo) + fabs(H2.lo);
   double prop = 0, dropped = 0;
@@ -119,7 +119,7 @@ inline Word dot_words(const Pair<double> (&x)[3], const double (&ex)[3], const W
     dropped += fabs(x[i].lo) * fabs(y[i].v.lo);
     prop += (fabs(x[i].hi) + fabs(x[i].lo)) * y[i].e + (fabs(y[i].v.hi) + fabs(y[i].v.lo) + y[i].e) * ex[i];
   }
-  return {robust::two_sum(H2.hi, lows), (12 * uu * lows_abs + 1.01 * (dropped + prop)) * (1 + 8 * uu) + 64 * eta};
+  return {eft::two_sum(H2.hi, lows), (12 * uu * lows_abs + 1.01 * (dropped + prop)) * (1 + 8 * uu) + 64 * eta};
 }
 
 // A lower bound of |x| for the word x (0 when its sign is not certain), and its sign.
@@ -132,13 +132,13 @@ inline Word scale_word(const Word& x, double h) {
   using std::fabs;
   const Pair<double> P = Mul::prod(x.v.hi, h);
   const double hl = x.v.lo * h;
-  return {robust::two_sum(P.hi, P.lo + hl), (x.e * fabs(h) + 2 * uu * (fabs(P.lo) + fabs(hl))) * (1 + 4 * uu) + 4 * eta};
+  return {eft::two_sum(P.hi, P.lo + hl), (x.e * fabs(h) + 2 * uu * (fabs(P.lo) + fabs(hl))) * (1 + 4 * uu) + 4 * eta};
 }
 inline Word add_words(const Word& x, const Word& y, double sg) {
   using std::fabs;
-  const Pair<double> S = robust::two_sum(x.v.hi, sg * y.v.hi);
+  const Pair<double> S = eft::two_sum(x.v.hi, sg * y.v.hi);
   const double t = x.v.lo + sg * y.v.lo, r = S.lo + t;
-  return {robust::two_sum(S.hi, r), (x.e + y.e + 2 * uu * (fabs(t) + fabs(r))) * (1 + 4 * uu)};
+  return {eft::two_sum(S.hi, r), (x.e + y.e + 2 * uu * (fabs(t) + fabs(r))) * (1 + 4 * uu)};
 }
 template <class Mul = SplitProduct>
 inline Word mul_words(const Word& x, const Word& y) {
@@ -148,7 +148,7 @@ inline Word mul_words(const Word& x, const Word& y) {
   const double ax = fabs(x.v.hi) + fabs(x.v.lo), ay = fabs(y.v.hi) + fabs(y.v.lo);
   const double e = 2 * uu * (((fabs(a) + fabs(b)) + fabs(c)) + fabs(l)) + fabs(x.v.lo) * fabs(y.v.lo) + ax * y.e +
                    (ay + y.e) * x.e;
-  return {robust::two_sum(P.hi, l), e * (1 + 8 * uu) + 8 * eta};
+  return {eft::two_sum(P.hi, l), e * (1 + 8 * uu) + 8 * eta};
 }
 inline int sign_of(const Word& x) { return magnitude_lo(x) > 0 ? (x.v.hi > 0 ? 1 : -1) : unknown; }
 inline Word negated(const Word& x) { return {{-x.v.hi, -x.v.lo}, x.e}; }
@@ -162,30 +162,30 @@ inline Word max_word(const Word& a, const Word& b) { return {pair_less(a.v, b.v)
 // The pair of primitives as the double-word stages take it (sat_words.hpp, triangle_words.hpp):
 // where the largest input (a length: points, centres, extents, radii; an oriented box's axes are
 // not scaled) lies beyond [2^-100, 2^100], both scaled by the power of two that brings it to
-// [1, 2) (robust/words.hpp, scale_of: kept only where scaling back gives the inputs again, so
+// [1, 2) (bounded/scaling.hpp, scale_of: kept only where scaling back gives the inputs again, so
 // the scaling is exact); false where an input is still beyond 2^100 after it, or not finite (an
 // oriented box's axes included), and the stage then leaves the case to the next.
 template <class A, class B>
 bool in_word_range(const A& a, const B& b, A& as, B& bs) {
   double m = 0;
-  robust::detail::largest(a, m);
-  robust::detail::largest(b, m);
+  scaling::largest(a, m);
+  scaling::largest(b, m);
   double big = 0;
   if (m >= 0x1p-100 && m <= 0x1p100) {  // no scaling: the lengths are in range as they are
     as = a;
     bs = b;
     big = m;
   } else {
-    const robust::detail::Scale sc = robust::detail::scale_of(a, b);
-    as = robust::detail::scaled(a, sc);
-    bs = robust::detail::scaled(b, sc);
-    robust::detail::largest(as, big);
-    robust::detail::largest(bs, big);
+    const scaling::Scale sc = scaling::scale_of(a, b);
+    as = scaling::scaled(a, sc);
+    bs = scaling::scaled(b, sc);
+    scaling::largest(as, big);
+    scaling::largest(bs, big);
   }
   if constexpr (std::is_same_v<B, OrientedBox<double>>)
-    for (int k = 0; k < 3; ++k) robust::detail::largest(bs.axis[k], big);
+    for (int k = 0; k < 3; ++k) scaling::largest(bs.axis[k], big);
   if constexpr (std::is_same_v<A, OrientedBox<double>>)
-    for (int k = 0; k < 3; ++k) robust::detail::largest(as.axis[k], big);
+    for (int k = 0; k < 3; ++k) scaling::largest(as.axis[k], big);
   return big <= 0x1p100;  // NaN and infinities fail
 }
 

@@ -26,7 +26,7 @@
 #include <cdref/bounded/word_bounds.hpp>
 #include <cdref/filters/box_cast_filter.hpp>
 #include <cdref/primitives.hpp>
-#include <cdref/robust/eft.hpp>
+#include <cdref/bounded/eft.hpp>
 #include <cmath>
 
 namespace cdref::filters::box_cast_words {
@@ -60,10 +60,10 @@ struct AabbWords {
   Word sL[3], sU[3], d[3];
   AabbWords(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool segment) {
     for (int i = 0; i < 3; ++i) {
-      const Word y{robust::two_sum(src[i], -b.center[i]), 0.0}, h{{b.extent[i], 0.0}, 0.0};
+      const Word y{eft::two_sum(src[i], -b.center[i]), 0.0}, h{{b.extent[i], 0.0}, 0.0};
       sL[i] = add_words(y, h, 1);
       sU[i] = add_words(y, h, -1);
-      d[i] = segment ? Word{robust::two_sum(rt[i], -src[i]), 0.0} : Word{{rt[i], 0.0}, 0.0};
+      d[i] = segment ? Word{eft::two_sum(rt[i], -src[i]), 0.0} : Word{{rt[i], 0.0}, 0.0};
     }
   }
   int compare(int a, int b) const { return entering_order<Mul>(sL, sU, d, a, b); }
@@ -97,8 +97,8 @@ struct ObbWords {
         for (auto& c : ni) c = negated(c);
     }
     for (int c = 0; c < 3; ++c) {
-      xs[c] = robust::two_sum(src[c], -b.center[c]);
-      xt[c] = segment ? robust::two_sum(rt[c], -b.center[c]) : Pair<double>{rt[c], 0.0};
+      xs[c] = eft::two_sum(src[c], -b.center[c]);
+      xt[c] = segment ? eft::two_sum(rt[c], -b.center[c]) : Pair<double>{rt[c], 0.0};
     }
     for (int i = 0; i < 3; ++i) {
       const Word H = scale_word<Mul>(delta, b.extent[i]);
@@ -131,7 +131,7 @@ int obb_cast(const Vec3<double>& src, const Vec3<double>& rt, const OrientedBox<
 // 1 a hit, 0 a miss, unknown: the next stage.
 [[gnu::noinline]] inline int obb_cast_any(const Vec3<double>& src, const Vec3<double>& rt,
                                           const OrientedBox<double>& b, bool segment) {
-  return robust::with_products([&](auto mul) { return obb_cast<decltype(mul)>(src, rt, b, segment); });
+  return eft::with_products([&](auto mul) { return obb_cast<decltype(mul)>(src, rt, b, segment); });
 }
 inline int obb_cast_words(const Segment<double>& s, const OrientedBox<double>& b) {
   return obb_cast_any(s.source, s.target, b, true);
@@ -159,7 +159,7 @@ struct AabbCastWords {
   AabbCastWords(const Vec3<double>& src, const Vec3<double>& rt, const Box<double>& b, bool segment)
       : w(src, rt, b, segment), bounded(segment) {
     for (int i = 0; i < 3; ++i) {
-      const Word y{segment ? robust::two_sum(rt[i], -b.center[i]) : Pair<double>{0.0, 0.0}, 0.0};
+      const Word y{segment ? eft::two_sum(rt[i], -b.center[i]) : Pair<double>{0.0, 0.0}, 0.0};
       const Word h{{b.extent[i], 0.0}, 0.0};
       tL[i] = add_words(y, h, 1);
       tU[i] = add_words(y, h, -1);
@@ -186,7 +186,7 @@ int aabb_cast_words(const Shot& shot, const Box<double>& box) {
   const Vec3<double>* rt;
   if constexpr (segment) rt = &s.target;
   else rt = &s.direction;
-  return robust::with_products(
+  return eft::with_products(
       [&](auto mul) { return hit_box_logic(AabbCastWords<decltype(mul)>(s.source, *rt, b, segment)); });
 }
 

@@ -64,9 +64,9 @@ using namespace cdref::word_bounds;  // the double words' operations and their b
 template <class Shot>
 void shot_pairs(const Shot& x, const Vec3<double>& o, Pair<double> (&so)[3], Pair<double> (&d)[3]) {
   for (int i = 0; i < 3; ++i) {
-    so[i] = robust::two_sum(x.source[i], -o[i]);
+    so[i] = eft::two_sum(x.source[i], -o[i]);
     if constexpr (std::is_same_v<Shot, Segment<double>>)
-      d[i] = robust::two_sum(x.target[i], -x.source[i]);
+      d[i] = eft::two_sum(x.target[i], -x.source[i]);
     else
       d[i] = {x.direction[i], 0.0};
   }
@@ -178,10 +178,10 @@ std::optional<FaceParameter> face_parameter(const Pair<double> (&sc)[3], const P
   double ew[3];
   for (int k = 0; k < 3; ++k) {
     const Pair<double> P = Mul::prod(l0, d[k].hi), Q = Mul::prod(tau, ai[k]);
-    const Pair<double> T1 = robust::two_sum(sc[k].hi, P.hi), T2 = robust::two_sum(T1.hi, Q.hi);
+    const Pair<double> T1 = eft::two_sum(sc[k].hi, P.hi), T2 = eft::two_sum(T1.hi, Q.hi);
     const double zl = l0 * d[k].lo;
     const double lows = ((T1.lo + T2.lo) + sc[k].lo) + ((P.lo + Q.lo) + zl);
-    w[k] = robust::two_sum(T2.hi, lows);
+    w[k] = eft::two_sum(T2.hi, lows);
     ew[k] = 7 * uu * ((fabs(T1.lo) + fabs(T2.lo)) + fabs(sc[k].lo) + ((fabs(P.lo) + fabs(Q.lo)) + fabs(zl))) +
             8 * eta;
   }
@@ -191,7 +191,7 @@ std::optional<FaceParameter> face_parameter(const Pair<double> (&sc)[3], const P
   const double delta = -g / D;
   const double err = 2 * ((eg + fabs(g) * eD / fabs(D)) / D_lo + uu * fabs(delta)) + eta;
   if (!std::isfinite(err)) return std::nullopt;
-  return FaceParameter{robust::two_sum(l0, delta), err};
+  return FaceParameter{eft::two_sum(l0, delta), err};
 }
 
 }  // namespace cdref::filters::obb_face

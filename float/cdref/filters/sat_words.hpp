@@ -53,7 +53,7 @@
 
 namespace cdref::filters::sat_words {
 
-using robust::Pair;
+using eft::Pair;
 using word_bounds::Word;
 using word_bounds::abs_word;
 using word_bounds::max_word;
@@ -82,11 +82,11 @@ inline void check_range(Shapes& s, double x) { s.ok = s.ok && std::fabs(x) <= 0x
 inline void relative(Shapes& s, Pair<double> (&X)[3], const Vec3<double>& p, const Vec3<double>& c) {
   for (int i = 0; i < 3; ++i) {
     check_range(s, p[i]);
-    X[i] = robust::two_sum(p[i], -c[i]);
+    X[i] = eft::two_sum(p[i], -c[i]);
   }
 }
 inline void difference(Pair<double> (&e)[3], const Vec3<double>& p, const Vec3<double>& q) {
-  for (int i = 0; i < 3; ++i) e[i] = robust::two_sum(p[i], -q[i]);
+  for (int i = 0; i < 3; ++i) e[i] = eft::two_sum(p[i], -q[i]);
 }
 
 inline void set_b(Shapes& s, const Box<double>& b) {
@@ -289,7 +289,7 @@ int decide(const A& a, const B& b, unsigned open) {
     constexpr int a_faces = std::is_same_v<A, Triangle<double>> ? 1 : std::is_same_v<A, OrientedBox<double>> ? 3 : 0;
     const Shapes s = shapes(as, bs, (open >> (a_faces + 3)) != 0);
     if (!s.ok) return unknown;
-    return robust::with_products([&](auto mul) { return decide_open<decltype(mul)>(s, open); });
+    return eft::with_products([&](auto mul) { return decide_open<decltype(mul)>(s, open); });
   }
 }
 
@@ -334,7 +334,7 @@ void sphere_obb_point(const Sphere<double>& sp, const OrientedBox<double>& b, Pa
   Pair<double> a[3][3];
   bool free_axis[3];
   for (int c = 0; c < 3; ++c) {
-    d[c] = robust::two_sum(sp.center[c], -b.center[c]);
+    d[c] = eft::two_sum(sp.center[c], -b.center[c]);
     for (int i = 0; i < 3; ++i) a[i][c] = input(b.axis[i][c]);
   }
   for (int i = 0; i < 3; ++i) {
@@ -350,7 +350,7 @@ void sphere_obb_point(const Sphere<double>& sp, const OrientedBox<double>& b, Pa
       g1[i] = g[i];
       if (!free_axis[i]) continue;
       const Word step = dot_words<Mul>(a[i], zero, w);
-      const Pair<double> t = robust::two_sum(g[i].hi, step.v.hi), h{b.extent[i], 0}, mh{-b.extent[i], 0};
+      const Pair<double> t = eft::two_sum(g[i].hi, step.v.hi), h{b.extent[i], 0}, mh{-b.extent[i], 0};
       g1[i] = pair_less(h, t) ? h : (pair_less(t, mh) ? mh : t);
     }
     sphere_obb_offset<Mul>(d, g1, b, w);
@@ -386,7 +386,7 @@ inline int decide(const Sphere<double>& sp, const OrientedBox<double>& b) {
   Sphere<double> s;
   OrientedBox<double> bs;
   if (!word_bounds::in_word_range(sp, b, s, bs)) return unknown;
-  return robust::with_products([&](auto mul) { return sphere_obb_certificates<decltype(mul)>(s, bs); });
+  return eft::with_products([&](auto mul) { return sphere_obb_certificates<decltype(mul)>(s, bs); });
 }
 
 }  // namespace cdref::filters::sat_words

@@ -37,7 +37,7 @@ namespace cdref::filters::ray_triangle {
 
 namespace words {
 
-using robust::Pair;
+using eft::Pair;
 using word_bounds::Word;
 
 // The sign of a . (b x c) on exact pairs: 1, -1, or 0 when the bound does not decide it.
@@ -56,12 +56,12 @@ int decide(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir
   double a[3][3], dd[3], f1[3], f2[3];  // the same in double, for the static signs
   for (int i = 0; i < 3; ++i) {
     for (int k = 0; k < 3; ++k) {
-      A[k][i] = robust::two_sum(tri.vertex[k][i], -s[i]);
+      A[k][i] = eft::two_sum(tri.vertex[k][i], -s[i]);
       a[k][i] = A[k][i].hi;
     }
-    d[i] = t ? robust::two_sum((*t)[i], -s[i]) : Pair<double>{dir[i], 0.0};
-    e1[i] = robust::two_sum(tri.vertex[1][i], -tri.vertex[0][i]);
-    e2[i] = robust::two_sum(tri.vertex[2][i], -tri.vertex[0][i]);
+    d[i] = t ? eft::two_sum((*t)[i], -s[i]) : Pair<double>{dir[i], 0.0};
+    e1[i] = eft::two_sum(tri.vertex[1][i], -tri.vertex[0][i]);
+    e2[i] = eft::two_sum(tri.vertex[2][i], -tri.vertex[0][i]);
     dd[i] = d[i].hi, f1[i] = e1[i].hi, f2[i] = e2[i].hi;
   }
   bool finite = true;
@@ -84,7 +84,7 @@ int decide(const Vec3<double>& s, const Vec3<double>* t, const Vec3<double>& dir
     Pair<double> T0[3];
     double tt[3];
     for (int i = 0; i < 3; ++i) {
-      T0[i] = robust::two_sum(tri.vertex[0][i], -(*t)[i]);
+      T0[i] = eft::two_sum(tri.vertex[0][i], -(*t)[i]);
       tt[i] = T0[i].hi;
     }
     int nt = ray_triangle::triple_sign(tt, f1, f2, finite);
@@ -104,11 +104,11 @@ inline int orientation_on_words(const Vec3<double>& s0, const Vec3<double>* t0, 
   if (t0) {
     Segment<double> seg;
     if (!word_bounds::in_word_range(Segment<double>{s0, *t0}, tri0, seg, tri)) return unknown;
-    return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(seg.source, &seg.target, seg.target, tri); });
+    return eft::with_products([&](auto mul) { return words::decide<decltype(mul)>(seg.source, &seg.target, seg.target, tri); });
   }
   Ray<double> ray;
   if (!word_bounds::in_word_range(Ray<double>{s0, dir0}, tri0, ray, tri)) return unknown;
-  return robust::with_products([&](auto mul) { return words::decide<decltype(mul)>(ray.source, nullptr, ray.direction, tri); });
+  return eft::with_products([&](auto mul) { return words::decide<decltype(mul)>(ray.source, nullptr, ray.direction, tri); });
 }
 
 }  // namespace cdref::filters::ray_triangle
@@ -138,7 +138,7 @@ namespace cdref::filters::sphere_triangle {
 // lengths; every input at most 2^100 after it).
 namespace words {
 
-using robust::Pair;
+using eft::Pair;
 using word_bounds::Word;
 
 template <class Mul>
@@ -149,12 +149,12 @@ int certificates(const Sphere<double>& sp, const Triangle<double>& t) {
   double Xd[3][3];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) {
-      X[k][i] = robust::two_sum(t.vertex[k][i], -sp.center[i]);
+      X[k][i] = eft::two_sum(t.vertex[k][i], -sp.center[i]);
       Xd[k][i] = X[k][i].hi;
     }
   for (int i = 0; i < 3; ++i) {
-    E1[i] = robust::two_sum(t.vertex[1][i], -t.vertex[0][i]);
-    E2[i] = robust::two_sum(t.vertex[2][i], -t.vertex[0][i]);
+    E1[i] = eft::two_sum(t.vertex[1][i], -t.vertex[0][i]);
+    E2[i] = eft::two_sum(t.vertex[2][i], -t.vertex[0][i]);
   }
   double u, v;
   closest_barycentric(Xd, u, v);
@@ -232,7 +232,7 @@ inline int certificates_on_words(const Sphere<double>& sp, const Triangle<double
   Sphere<double> s;
   Triangle<double> t;
   if (!word_bounds::in_word_range(sp, t0, s, t)) return unknown;
-  return robust::with_products<true>([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
+  return eft::with_products<true>([&](auto mul) { return words::certificates<decltype(mul)>(s, t); });
 }
 
 }  // namespace cdref::filters::sphere_triangle
@@ -254,12 +254,12 @@ namespace words {
 // The sides of q's vertices against p's plane, certain (1 or -1) or 0 (static bound, then words).
 template <class Mul>
 bool plane_separates(const Triangle<double>& p, const Triangle<double>& q, bool& finite) {
-  using robust::Pair;
+  using eft::Pair;
   Pair<double> e1[3], e2[3];
   double f1[3], f2[3];
   for (int i = 0; i < 3; ++i) {
-    e1[i] = robust::two_sum(p.vertex[1][i], -p.vertex[0][i]);
-    e2[i] = robust::two_sum(p.vertex[2][i], -p.vertex[0][i]);
+    e1[i] = eft::two_sum(p.vertex[1][i], -p.vertex[0][i]);
+    e2[i] = eft::two_sum(p.vertex[2][i], -p.vertex[0][i]);
     f1[i] = e1[i].hi, f2[i] = e2[i].hi;
   }
   int first = 0;
@@ -267,7 +267,7 @@ bool plane_separates(const Triangle<double>& p, const Triangle<double>& q, bool&
     Pair<double> x[3];
     double xd[3];
     for (int i = 0; i < 3; ++i) {
-      x[i] = robust::two_sum(q.vertex[k][i], -p.vertex[0][i]);
+      x[i] = eft::two_sum(q.vertex[k][i], -p.vertex[0][i]);
       xd[i] = x[i].hi;
     }
     int sg = ray_triangle::triple_sign(xd, f1, f2, finite);
@@ -310,7 +310,7 @@ int decide(const Triangle<double>& a, const Triangle<double>& b) {
 inline int tests_on_words(const Triangle<double>& a0, const Triangle<double>& b0) {
   Triangle<double> a, b;
   if (!word_bounds::in_word_range(a0, b0, a, b)) return unknown;
-  return robust::with_products<true>([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
+  return eft::with_products<true>([&](auto mul) { return words::decide<decltype(mul)>(a, b); });
 }
 
 // Two polygons: the pairs' first stage at once (triangle_filter.hpp, polygon_pairs) with each
@@ -325,16 +325,16 @@ inline int polygon_on_words(const Polygon<double>& a, const Polygon<double>& b, 
   if (words) *words = false;
   Polygon<double> as, bs;  // far from 1 in magnitude, scaled by one power of two: no sign changes
   if (!word_bounds::in_word_range(a, b, as, bs)) return polygon_filter(a, b);
-  return robust::with_products<true>([&](auto mul) {
+  return eft::with_products<true>([&](auto mul) {
     using Mul = decltype(mul);
     return polygon_pairs(a, b, [&](int w, int i, int k) {
       const Polygon<double>& p = w == 0 ? as : bs;
       const Polygon<double>& q = w == 0 ? bs : as;
-      robust::Pair<double> e1[3], e2[3], x[3];
+      eft::Pair<double> e1[3], e2[3], x[3];
       for (int c = 0; c < 3; ++c) {
-        e1[c] = robust::two_sum(p.vertex[i + 1][c], -p.vertex[0][c]);
-        e2[c] = robust::two_sum(p.vertex[i + 2][c], -p.vertex[0][c]);
-        x[c] = robust::two_sum(q.vertex[k][c], -p.vertex[0][c]);
+        e1[c] = eft::two_sum(p.vertex[i + 1][c], -p.vertex[0][c]);
+        e2[c] = eft::two_sum(p.vertex[i + 2][c], -p.vertex[0][c]);
+        x[c] = eft::two_sum(q.vertex[k][c], -p.vertex[0][c]);
       }
       const int sg = ray_triangle::words::triple_sign<Mul>(x, e1, e2);
       if (words && sg != 0) *words = true;

@@ -32,9 +32,11 @@
 #include <limits>
 
 #include "decision.hpp"
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 
 namespace cdref::robust {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 namespace detail {
 

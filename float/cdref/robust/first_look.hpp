@@ -28,15 +28,18 @@
 #pragma once
 
 #include <algorithm>
+#include <cdref/bounded/bounded2.hpp>
 #include <cdref/bounded/word_bounds.hpp>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
 #include <cmath>
 
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 #include "sphere_sphere.hpp"
 
 namespace cdref::robust::detail {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 // A dot product of two vectors of normalized pairs (x = xh + xl, |xl| <= u |xh|; y alike) as a
 // double word, with a bound on its error: the three products of the highs exact (Mul), summed

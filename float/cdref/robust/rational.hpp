@@ -16,6 +16,7 @@
 //     once to F: within an ulp of the truth wherever it lies in F's normal range.
 #pragma once
 
+#include <cstdint>  // before mpfr.h: its intmax_t functions (MPFR_USE_INTMAX_T)
 #include <gmp.h>
 #include <mpfr.h>
 
@@ -27,9 +28,11 @@
 #include <optional>
 #include <type_traits>
 
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 
 namespace cdref::robust::detail {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 struct Rational {
   mpq_t q;

@@ -212,10 +212,12 @@
 #include <cdref/filters/sphere_filter.hpp>
 
 #include "decision.hpp"
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 #include "rational.hpp"
 
 namespace cdref::robust {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 namespace detail {
 

@@ -100,12 +100,14 @@
 #include <cmath>
 
 #include "decision.hpp"
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 #include "rational.hpp"
 #include "ray_sphere.hpp"
 #include "sphere_sphere.hpp"
 
 namespace cdref::robust {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 namespace detail {
 

@@ -88,11 +88,13 @@
 #include <cdref/filters/sphere_filter.hpp>
 
 #include "decision.hpp"
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 #include "ray_sphere.hpp"
 #include "sphere_sphere.hpp"
 
 namespace cdref::robust {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 namespace detail {
 

@@ -19,6 +19,7 @@
 
 #include <bit>
 #include <cdref/bounded/bounded2.hpp>
+#include <cdref/bounded/scaling.hpp>
 #include <cstdint>
 #include <cdref/primitives.hpp>
 #include <cdref/results.hpp>
@@ -29,9 +30,11 @@
 #include <utility>
 
 #include "decision.hpp"
-#include "eft.hpp"
+#include <cdref/bounded/eft.hpp>
 
 namespace cdref::robust {
+
+using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
 namespace detail {
 
@@ -114,50 +117,11 @@ bool sharp(const W& x) {
   return x.bound() <= std::fabs(x.hi()) * f;
 }
 
-// Every length scaled by 2^k (see the header).
-struct Scale {
-  int k = 0;
-  // x 2^k: at double a product with 2^k when that is a normal number (the same correctly
-  // rounded value as std::ldexp, underflow and overflow included, without the library call)
-  template <class F>
-  F len(F x) const {
-    if constexpr (std::is_same_v<F, double>)
-      if (k >= -1022 && k <= 1023) return x * exp2_of<double>(k);
-    return std::ldexp(x, k);
-  }
-  template <class F>
-  Vec3<F> len(const Vec3<F>& v) const { return Vec3<F>(len(v[0]), len(v[1]), len(v[2])); }
-};
-template <class F>
-void largest(F x, F& m) { m = std::max(m, F(std::fabs(x))); }
-template <class F>
-void largest(const Vec3<F>& v, F& m) { for (int i = 0; i < 3; ++i) largest(v[i], m); }
-// ... the largest magnitude among a primitive's lengths (fields.hpp's for_each_length; an
-// oriented box's axes are not lengths)
-template <template <class> class P, class F>
-void largest(const P<F>& p, F& m) {
-  for_each_length(p, [&](const auto& x) { largest(x, m); });
-}
-// A primitive with every length scaled by 2^k.
-template <template <class> class P, class F>
-P<F> scaled(P<F> p, const Scale& c) {
-  for_each_length(p, [&](auto& x) { x = c.len(x); });
-  return p;
-}
-template <class A, class B>
-Scale scale_of(const A& a, const B& b) {
-  using F = std::decay_t<decltype(scalar_of(a))>;
-  F m = F(0);
-  largest(a, m);
-  largest(b, m);
-  Scale sc;
-  if (m > F(0) && std::isfinite(m)) {
-    sc.k = -exponent_of(m);
-    const Scale back{-sc.k};
-    if (!same_lengths(scaled(scaled(a, sc), back), a) || !same_lengths(scaled(scaled(b, sc), back), b)) sc.k = 0;
-  }
-  return sc;
-}
+// Every length scaled by 2^k (see the header; bounded/scaling.hpp).
+using scaling::Scale;
+using scaling::largest;
+using scaling::scale_of;
+using scaling::scaled;
 
 // A formulation whose double words are its main path, not a fallback (the sphere queries'
 // proximity at float and long double, which always ends there) derives from HotWords, and is a

@@ -1,5 +1,6 @@
-// cdref/robust/eft.hpp - error-free transformations and a compensated dot product, for the
-// robust float formulations (float, double, long double; never with -ffast-math).
+// cdref/bounded/eft.hpp - error-free transformations and a compensated dot product (namespace
+// cdref::eft), for the double words with bounds (word_bounds.hpp), the filters' double-word
+// stages and the robust float formulations (float, double, long double; never with -ffast-math).
 //
 //   two_sum(a, b) = (s, e) with s = fl(a + b) and a + b = s + e exactly (Knuth; 6 flops);
 //   two_prod(a, b) = (p, e) with p = fl(a b) and a b = p + e exactly (one std::fma),
@@ -18,7 +19,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace cdref::robust {
+namespace cdref::eft {
 
 template <class F>
 struct Pair {
@@ -276,4 +277,4 @@ Pair<F> sqrt_pair(const Pair<F>& x) {
   return fast_two_sum(y, F(e / F(2 * y)));
 }
 
-}  // namespace cdref::robust
+}  // namespace cdref::eft
