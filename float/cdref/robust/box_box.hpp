@@ -6,7 +6,7 @@
 // and the sum round: at large offsets (cA - cB rounds) or large extents (eA + eB rounds,
 // as at 2^53 + 3 in double) a pair 1 ulp apart is called touching, or touching ones apart.
 // Here both sides are kept as exact pairs, d = cA - cB = dh + dl and e = eA + eB = eh + el
-// (two_sum, eft.hpp: dh = fl(d), eh = fl(e), exact also in the subnormal range, where an
+// (two_sum, bounded/eft.hpp: dh = fl(d), eh = fl(e), exact also in the subnormal range, where an
 // addition never rounds), and compared exactly:
 //   * rounding to nearest is monotone: x <= y implies fl(x) <= fl(y). So |dh| < eh proves
 //     |d| < e and |dh| > eh proves |d| > e (|dh| = fl(|d|));

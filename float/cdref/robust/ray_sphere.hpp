@@ -17,7 +17,7 @@
 //     below the largest: eta per value), lambda is unchanged, and no square or product can
 //     overflow (the 1e160 and 1e-160 cases). Below, quantities are in these units.
 //  2. a, b, c as double-words: the exact products sh_i rh_i (one fused multiply-add each
-//     where the CPU has it, else Dekker's two_prod_split: eft.hpp, with_products; the same
+//     where the CPU has it, else Dekker's two_prod_split: bounded/eft.hpp, with_products; the same
 //     pair wherever the product does not underflow; the full ray cast on 2,000 uniform
 //     cases 40.3 -> 34.2 ns against the split products, standalone loop, 2026-11-29)
 //     summed by a two_sum chain, and the products' low parts, the chain's
@@ -117,7 +117,7 @@
 // Certificates (decide(), decision.hpp). dot2_cert (used by sphere_sphere.hpp, sphere_box.hpp,
 // segment_sphere.hpp): a decisive sign is taken from a value q^ with
 // a computed bound E, |q^ - q| <= E, and is certain iff |q^| > E. For dot2 over N terms
-// (eft.hpp) with S = sum |x_i y_i|: |q^ - q| <= u|q| + gamma_N^2 S, hence (solving for |q|)
+// (bounded/eft.hpp) with S = sum |x_i y_i|: |q^ - q| <= u|q| + gamma_N^2 S, hence (solving for |q|)
 // |q^ - q| <= (u|q^| + gamma_N^2 S)/(1 - u). dot2_cert() returns
 //   E = 2u|q^| + 2 N^2 u^2 S^ + K eta,
 // S^ the float sum of |x_i||y_i|, eta the smallest subnormal: the factor 2 covers 1/(1-u),
@@ -793,7 +793,7 @@ Decision decide_cast_with(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sp
   return out;
 }
 
-// With the products cast() takes (eft.hpp, with_products), so that both classify alike where
+// With the products cast() takes (bounded/eft.hpp, with_products), so that both classify alike where
 // a product underflows (fused and split products differ only there).
 template <class F>
 Decision decide_cast(const Pair<F> (&s)[3], const Pair<F> (&r)[3], const Sphere<F>& sp, bool bounded) {

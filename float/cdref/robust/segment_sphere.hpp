@@ -22,7 +22,7 @@
 //     size of |s| is subtracted, and normwise
 //       |x^ - x| <= 4.02u |x| + 226 u^2 max|s_i|     (w: u|x|; r x w: u; |r|^2: u; division: u),
 //     and Q^ = |x^|^2 - rho^2 by dot2 with the bound below (decide_closest).
-//  5. The values, from double words (eft.hpp, sphere_sphere.hpp): x is the endpoint's exact
+//  5. The values, from double words (bounded/eft.hpp, sphere_sphere.hpp): x is the endpoint's exact
 //     pair, or the foot l = s - f r, f = s.r / |r|^2, of ray_sphere.hpp's quantities(), each
 //     l_i a double word. Its step A: l^ = s - f^ r + e, |e| <= 33u^2 |s|, and f^ r is off by
 //     |f^ - f| |r| <= 51u^2 |s| + 60u^2 |f||r| <= 111u^2 |s| along r, so the foot's position
@@ -69,7 +69,7 @@
 // not the centre (x != 0, step 3's exact test skipped). The branch is then step 2's exact one,
 // and the values below are those of the same branch: only the classification's work is saved
 // (it is the filter's). The full query on 2,000 uniform cases (standalone loop, 2026-11-29):
-// 514 ns a case, 348 in the FMA copy (eft.hpp, with_fma), 239 with this and the powers of two
+// 514 ns a case, 348 in the FMA copy (bounded/eft.hpp, with_fma), 239 with this and the powers of two
 // written into the bits (Pow2, exp2_of); at 10^12 radii 646, 437, 311. With every exact
 // product of the double words one fused multiply-add in that copy (with_products, where
 // Dekker's split had still run inside it): 197 ns, and 264 at 10^12 radii (2026-11-29).

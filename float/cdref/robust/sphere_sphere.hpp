@@ -48,7 +48,7 @@
 //     rounding), then along_dw as in item 5: within half an ulp plus 37u^2 max(|p_i|, rho
 //     |n_i|), one ulp unless the witness cancels to below 74u rho |n_i| (one division where
 //     three div_pairs took six). Where the CPU has fused
-//     multiply-adds the exact products here are fma's (eft.hpp, with_products), else
+//     multiply-adds the exact products here are fma's (bounded/eft.hpp, with_products), else
 //     Dekker's: the same pairs. On 2,000 uniform cases this first look took the full query
 //     from 210 to 76 ns a case (standalone loop, 2026-11-29); near touching (the filter
 //     undecided, or |g| within 520u of |v| + s) items 2-5 run as before.

@@ -130,12 +130,12 @@ using scaling::scaled;
 struct HotWords {};
 
 // f(a, b) on the double words, a function of its own: a caller that flattens its calls into
-// the copy compiled for the FMA extension (eft.hpp, fused_call) calls this one instead of
+// the copy compiled for the FMA extension (bounded/eft.hpp, fused_call) calls this one instead of
 // taking the formulation at W into its body. (Taken in, each such caller of a sphere query held
 // its formulation at W two or three times over, at float, double and long double: 1.2 MB of
 // code each for sphere-triangle and sphere-obb, and two thirds of their groups' compile time.)
 // Where the CPU has the FMA extension (CDREF_FMA_CLONES) a copy compiled for it runs, so that
-// std::fma in the double-word products is the instruction: eft.hpp's with_fma (every call
+// std::fma in the double-word products is the instruction: bounded/eft.hpp's with_fma (every call
 // flattened into it, as inside the caller before) for a HotWords formulation, a copy with the
 // compiler's usual inlining for the others. In a build compiled for the extension throughout
 // (CDREF_FMA_COMPILED) a HotWords formulation keeps its flattened function (with_fma<true>);
