@@ -92,6 +92,18 @@ inline void cross_of_doubles(const Vec3<double>& a, const Vec3<double>& b, Word 
     n[i] = {eft::two_sum(S.hi, lo), 3 * uu * ((fabs(S.lo) + fabs(P1.lo)) + fabs(P2.lo)) + 4 * eta};
   }
 }
+// x . y for doubles: the three products exact, summed by two_sum; their five low terms (the
+// products' and the two sums') summed in double (4 additions: gamma_4 < 5u of their
+// magnitudes; a product whose low term underflows is off by at most 2^-1075).
+template <class Mul = SplitProduct>
+inline Word dot_of_doubles(const double (&x)[3], const double (&y)[3]) {
+  using std::fabs;
+  const Pair<double> p0 = Mul::prod(x[0], y[0]), p1 = Mul::prod(x[1], y[1]), p2 = Mul::prod(x[2], y[2]);
+  const Pair<double> s1 = eft::two_sum(p0.hi, p1.hi), s2 = eft::two_sum(s1.hi, p2.hi);
+  const double lo = ((p0.lo + p1.lo) + (p2.lo + s1.lo)) + s2.lo;
+  return {eft::two_sum(s2.hi, lo),
+          5 * uu * (((fabs(p0.lo) + fabs(p1.lo)) + (fabs(p2.lo) + fabs(s1.lo))) + fabs(s2.lo)) + 4 * eta};
+}
 template <class Mul = SplitProduct>
 inline void cross_words(const Pair<double> (&a)[3], const Pair<double> (&b)[3], Word (&n)[3]) {
   for (int i = 0; i < 3; ++i) {

@@ -6,8 +6,8 @@
 //
 // Each query certifies x's feature by its normal cone and computes v there in its own header;
 // the pieces below are the ones they share:
-//   dot_words            a dot product of vectors of normalized pairs, as a double word with a
-//                        bound (48u^2 of the products' magnitudes);
+//   dot_pairs            a dot product of vectors of exact normalized pairs, as a double word with
+//                        a bound (word_bounds::dot_words, cdref/bounded/word_bounds.hpp);
 //   first_look_edge      v = P + t E, t = -(P . E) / (E . E): the foot of the perpendicular from
 //                        c on the line through the point P + c (P = its offset from c) along E;
 //   first_look_face      v = n s / n.n, s = P . n: the foot on the plane through P + c normal
@@ -41,28 +41,19 @@ namespace cdref::robust::detail {
 
 using namespace cdref::eft;  // the error-free transformations (bounded/eft.hpp)
 
-// A dot product of two vectors of normalized pairs (x = xh + xl, |xl| <= u |xh|; y alike) as a
-// double word, with a bound on its error: the three products of the highs exact (Mul), summed
-// by a two_sum chain; their lows, the chain's errors and the six cross products xh yl, xl yh
-// summed in double; xl yl dropped. With S = sum |xh_i yh_i|: dropped <= u^2 S (1 + u); the
-// cross products total <= 2u S (1 + u) and their 6 products and 5 sums err by <= 12u^2 S; the
-// lows' eleven terms total <= 5.05u S and their sums err by <= 25.5u^2 S; the last two_sum is
-// exact. Below 39u^2 S (1 + 3u): 48u^2 S~ (S~ the computed S, >= S (1 - 2u)) plus `tiny` for
-// products whose lows fall below the normal range (each off by at most 2^-1074).
-struct WordDot {
-  Pair<double> v;
-  double err;
-};
+// The unit roundoff; the allowance for a rounded product whose low part falls below the normal
+// range (each off by at most 2^-1074); the factor that covers a bound's own roundings.
 inline constexpr double first_look_u = 0x1p-53, first_look_tiny = 0x1p-800, first_look_grow = 1 + 64 * 0x1p-53;
+
+// x . y for vectors of normalized pairs (x_i = xh_i + xl_i exactly, |xl_i| <= u |xh_i|; y
+// alike): word_bounds::dot_words on exact operands (its derivation: the highs' products exact,
+// the lows in double, the lows' products dropped).
 template <class Mul>
-WordDot dot_words(const double (&xh)[3], const double (&xl)[3], const double (&yh)[3], const double (&yl)[3]) {
-  constexpr double u = first_look_u;
-  const Pair<double> p0 = Mul::prod(xh[0], yh[0]), p1 = Mul::prod(xh[1], yh[1]), p2 = Mul::prod(xh[2], yh[2]);
-  const Pair<double> s1 = two_sum(p0.hi, p1.hi), s2 = two_sum(s1.hi, p2.hi);
-  const double cross = (xh[0] * yl[0] + xl[0] * yh[0]) + (xh[1] * yl[1] + xl[1] * yh[1]) + (xh[2] * yl[2] + xl[2] * yh[2]);
-  const double low = ((p0.lo + p1.lo) + (p2.lo + s1.lo)) + (s2.lo + cross);
-  const double S = (std::fabs(p0.hi) + std::fabs(p1.hi)) + std::fabs(p2.hi);
-  return {two_sum(s2.hi, low), 48 * u * u * S + first_look_tiny};
+word_bounds::Word dot_pairs(const double (&xh)[3], const double (&xl)[3], const double (&yh)[3], const double (&yl)[3]) {
+  static constexpr double exact[3] = {0, 0, 0};
+  const Pair<double> x[3] = {{xh[0], xl[0]}, {xh[1], xl[1]}, {xh[2], xl[2]}};
+  const word_bounds::Word y[3] = {{{yh[0], yl[0]}, 0.0}, {{yh[1], yl[1]}, 0.0}, {{yh[2], yl[2]}, 0.0}};
+  return word_bounds::dot_words<Mul>(x, exact, y);
 }
 
 // The closest point's offset from the centre, v = x - c, in units of 2^scale: pairs with a
@@ -80,21 +71,21 @@ struct FirstLookPoint {
   bool inside = false;  // the centre lies inside the solid, v to the nearest face's foot
 };
 
-// v = P + t E with t = -(P . E) / (E . E) (header): t from double-word dots (dot_words), div_pair
+// v = P + t E with t = -(P . E) / (E . E) (header): t from double-word dots (dot_pairs), div_pair
 // (8u^2) and mul_pair (5u^2), the sum with P by two_sum (4u^2 of the terms); each component's
 // bound follows every error through (the quotient's by (E_num + |t| E_den) / den_lo).
 template <class Mul>
 bool first_look_edge(const double (&Ph)[3], const double (&Pl)[3], const double (&Perr)[3], const double (&Eh)[3],
                      const double (&El)[3], FirstLookPoint& out) {
   constexpr double u = first_look_u, tiny = first_look_tiny, grow = first_look_grow;
-  WordDot a = dot_words<Mul>(Ph, Pl, Eh, El), d = dot_words<Mul>(Eh, El, Eh, El);
+  word_bounds::Word a = dot_pairs<Mul>(Ph, Pl, Eh, El), d = dot_pairs<Mul>(Eh, El, Eh, El);
   a.v = {-a.v.hi, -a.v.lo};
-  a.err += ((Perr[0] * std::fabs(Eh[0]) + Perr[1] * std::fabs(Eh[1])) + Perr[2] * std::fabs(Eh[2])) * grow;
-  const double den = d.v.hi * (1 - 2 * u) - d.err;
+  a.e += ((Perr[0] * std::fabs(Eh[0]) + Perr[1] * std::fabs(Eh[1])) + Perr[2] * std::fabs(Eh[2])) * grow;
+  const double den = d.v.hi * (1 - 2 * u) - d.e;
   if (!(den > 0)) return false;
   const Pair<double> tt = div_pair<Mul>(a.v, d.v);
   const double at = std::fabs(tt.hi) * (1 + u);
-  const double Et = ((a.err + at * d.err) / den + 8 * u * u * at) * grow;
+  const double Et = ((a.e + at * d.e) / den + 8 * u * u * at) * grow;
   for (int i = 0; i < 3; ++i) {
     const Pair<double> te = mul_pair<Mul>(tt, Pair<double>{Eh[i], El[i]});
     const Pair<double> s = two_sum(Ph[i], te.hi);
@@ -105,15 +96,15 @@ bool first_look_edge(const double (&Ph)[3], const double (&Pl)[3], const double 
   return true;
 }
 
-// v = n s / n.n with s = P . n (header), n = nh + nl within En: s by dot_words, n.n by norm2_dw,
+// v = n s / n.n with s = P . n (header), n = nh + nl within En: s by dot_pairs, n.n by norm2_dw,
 // the quotient by div_pair and each component by mul_pair, every bound followed through. The
 // direction's sign is set where s's sign is certain.
 template <class Mul>
 bool first_look_face(const double (&Ph)[3], const double (&Pl)[3], const double (&Perr)[3], const double (&nh)[3],
                      const double (&nl)[3], const double (&En)[3], FirstLookPoint& out) {
   constexpr double u = first_look_u, tiny = first_look_tiny, grow = first_look_grow;
-  const WordDot s = dot_words<Mul>(Ph, Pl, nh, nl);
-  double Es = s.err + (1 + 2 * u) * ((std::fabs(Ph[0]) * En[0] + std::fabs(Ph[1]) * En[1]) + std::fabs(Ph[2]) * En[2]);
+  const word_bounds::Word s = dot_pairs<Mul>(Ph, Pl, nh, nl);
+  double Es = s.e + (1 + 2 * u) * ((std::fabs(Ph[0]) * En[0] + std::fabs(Ph[1]) * En[1]) + std::fabs(Ph[2]) * En[2]);
   for (int i = 0; i < 3; ++i) Es += Perr[i] * ((std::fabs(nh[i]) * (1 + u) + En[i]) * (1 + 2 * u));
   Es *= grow;
   const Pair<double> nn = norm2_dw<Mul>(nh, nl);

@@ -41,8 +41,9 @@
 //       |n_i|^2, strictly below every other (compared cross-multiplied; a tie, where the solid
 //       takes the first, is left to the path below), and the side of U_i certain.
 //  3. v = x - q in double words with a bound on each component (first_look.hpp): x0 - q = D +
-//     sum_F o_n h_n a_n by dot_words and a two_sum (a vertex: v itself); an edge's foot from x0
-//     - q along a_i (first_look_edge); a face's foot on the plane through x0 normal to n_i
+//     sum_F o_n h_n a_n by word_bounds::dot_of_doubles and a two_sum (a vertex: v itself); an
+//     edge's foot from x0 - q along a_i (first_look_edge); a face's foot on the plane through x0
+//     normal to n_i
 //     (first_look_face, n_i a cross product of the exact axes: word_bounds::cross_of_doubles);
 //     inside, the foot on the nearest face's plane through q's side of it, x0 = c + s h_i a_i
 //     with s the sign of U_i: then |v| = (H_i - |U_i|) / |n_i|, the depth is |v| + rho, the
@@ -146,14 +147,14 @@ bool sphere_obb_point(const Sphere<double>& sp, const OrientedBox<double>& b, Fi
   }
   // x0 - q = D + sum o_n h_n a_n (item 3), for the fixed axes' signs s
   const auto base = [&](const int (&s)[3], double (&Ph)[3], double (&Pl)[3], double (&Pe)[3]) {
-    const double sh[3] = {s[0] * h[0], s[1] * h[1], s[2] * h[2]}, zero[3] = {0, 0, 0};
+    const double sh[3] = {s[0] * h[0], s[1] * h[1], s[2] * h[2]};
     for (int c = 0; c < 3; ++c) {
       const double col[3] = {b.axis[0][c], b.axis[1][c], b.axis[2][c]};
-      const WordDot t = dot_words<Mul>(sh, zero, col, zero);
+      const word_bounds::Word t = word_bounds::dot_of_doubles<Mul>(sh, col);
       const Pair<double> x = two_sum(Dh[c], t.v.hi);
       const Pair<double> y = two_sum(x.hi, double(x.lo + double(Dl[c] + t.v.lo)));
       Ph[c] = y.hi, Pl[c] = y.lo;
-      Pe[c] = (t.err + 6 * u * u * (std::fabs(Dh[c]) + std::fabs(t.v.hi))) * grow + tiny;
+      Pe[c] = (t.e + 6 * u * u * (std::fabs(Dh[c]) + std::fabs(t.v.hi))) * grow + tiny;
     }
   };
   const auto face_normal = [&](int i, double (&nh)[3], double (&nl)[3], double (&En)[3]) {
