@@ -55,11 +55,12 @@ struct Word {
 
 // The exact products as a policy (bounded/eft.hpp: Dekker's split, or one fused multiply-add;
 // where the operands lie in [2^-600, 2^600] or one is zero, as in the oracle's enter paths, both
-// give the same pair; the oriented-box casts' ObbWords has no lower range guard, and a product whose error term
-// underflows may differ between the two by less than the 2^-1022 each bound allows for it). A build without -mfma has std::fma as a library call, so the paths built on these
-// (oracle/enter_sphere.hpp, enter_obb.hpp and enter_triangle.hpp, about 7, 60 and 20 products a
-// call; the oriented-box casts' classification, filters/box_cast_words.hpp) are compiled twice and the fused copy is
-// taken where the CPU has the instruction (eft::cpu_fma).
+// give the same pair; the oriented-box casts' ObbWords has no lower range guard, and a product
+// whose error term underflows may differ between the two by less than the 2^-1022 each bound
+// allows for it). A build without -mfma has std::fma as a library call, so the paths built on
+// these (oracle/enter_sphere.hpp, enter_obb.hpp and enter_triangle.hpp, about 7, 60 and 20
+// products a call; the oriented-box casts' classification, filters/box_cast_words.hpp) are
+// compiled twice and the fused copy is taken where the CPU has the instruction (eft::cpu_fma).
 using eft::FusedProduct;
 using eft::SplitProduct;
 
