@@ -168,7 +168,7 @@ std::optional<double> fused_double(const Shot& x, const Solid& y, const Face&...
 template <class Shot, class Solid, class... Face>
 std::optional<double> solid_double(const Shot& x, const Solid& y, const Face&... face) {
   return nan_to_none(
-      eft::with_products([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
+      eft::with_products<true>([&](auto mul) { return value_or_nan(first_double<decltype(mul)>(x, y, face...)); }));
 }
 
 // The classification's answer, then on a hit the double path (a value, or nothing when it

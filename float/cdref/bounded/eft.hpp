@@ -184,10 +184,14 @@ constexpr bool cpu_fma() {
 // Flat: where the whole build is compiled for the extension, whether the fused path is still a
 // function of its own with every call flattened into it, as the run-time copy is. Only the paths
 // measured faster so ask for it: sphere-triangle's double-word certificates and its first look's
-// classification, triangle-triangle's double-word decisions (filters/triangle_words.hpp) and the
-// HotWords formulations (words.hpp); without it sphere-triangle's oracle took 1.4 times as long
-// near touching. Elsewhere a flattened copy measured no faster (the triangle casts', and
-// sphere-triangle's every-output path, slower) and costs compile time and code.
+// classification, triangle-triangle's double-word decisions (filters/triangle_words.hpp), the
+// HotWords formulations (words.hpp), the box casts' double-word classification
+// (filters/box_cast_words.hpp) and the oracle's first double on a hit (oracle/enter.hpp). Without
+// it sphere-triangle's oracle took 1.4 times as long near touching, ray-obb-cast's grazing
+// classification 1.23 times and the fan and polygon casts' lambda_enter near edges 1.09-1.10
+// times (the latter two against a build with the FMA copies flattened everywhere, each query
+// group in a unit of its own: `cdref report`, three runs alternated, 2026-12-05). Elsewhere a
+// flattened copy measured no faster, and it costs compile time and code.
 #if CDREF_FMA_CLONES
 template <class Fn>
 [[gnu::target("fma"), gnu::flatten, gnu::noinline]] auto fused_call(const Fn& f) {

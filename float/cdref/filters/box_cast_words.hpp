@@ -131,7 +131,7 @@ int obb_cast(const Vec3<double>& src, const Vec3<double>& rt, const OrientedBox<
 // 1 a hit, 0 a miss, unknown: the next stage.
 [[gnu::noinline]] inline int obb_cast_any(const Vec3<double>& src, const Vec3<double>& rt,
                                           const OrientedBox<double>& b, bool segment) {
-  return eft::with_products([&](auto mul) { return obb_cast<decltype(mul)>(src, rt, b, segment); });
+  return eft::with_products<true>([&](auto mul) { return obb_cast<decltype(mul)>(src, rt, b, segment); });
 }
 inline int obb_cast_words(const Segment<double>& s, const OrientedBox<double>& b) {
   return obb_cast_any(s.source, s.target, b, true);
@@ -186,7 +186,7 @@ int aabb_cast_words(const Shot& shot, const Box<double>& box) {
   const Vec3<double>* rt;
   if constexpr (segment) rt = &s.target;
   else rt = &s.direction;
-  return eft::with_products(
+  return eft::with_products<true>(
       [&](auto mul) { return hit_box_logic(AabbCastWords<decltype(mul)>(s.source, *rt, b, segment)); });
 }
 
