@@ -13,6 +13,7 @@ namespace cdref::fuzz::queries {
 struct BoxBox {
   static constexpr int id = 4;
   static constexpr const char* name = "box-box";
+  static constexpr CaseDigest case_digest{45, 0x81d39b50d613a8d4u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect-min-max";
   static constexpr const char* describe =

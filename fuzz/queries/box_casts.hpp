@@ -16,6 +16,7 @@ template <bool Ray>
 struct BoxCast {
   static constexpr int id = Ray ? 6 : 5;
   static constexpr const char* name = Ray ? "ray-box-cast" : "segment-box-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{46, 0x06b01d20a59c3d14u} : CaseDigest{46, 0xb2d3aab6ed195352u};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe = Ray ? "Algorithm 3.3 on the infinite ray: book::cast and book::hit"

@@ -20,6 +20,7 @@ template <bool Ray>
 struct FanCastQuery {
   static constexpr int id = Ray ? 20 : 21;
   static constexpr const char* name = Ray ? "ray-fan-cast" : "segment-fan-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{9, 0xbd005970964baa1cu} : CaseDigest{9, 0x5e7c6bff6d375d61u};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe =

@@ -16,6 +16,7 @@ template <bool Ray>
 struct ObbCast {
   static constexpr int id = Ray ? 15 : 14;
   static constexpr const char* name = Ray ? "ray-obb-cast" : "segment-obb-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{46, 0xab237d9ead7435f5u} : CaseDigest{46, 0xb95b971cf243b1dau};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe =

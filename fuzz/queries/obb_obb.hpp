@@ -13,6 +13,7 @@ namespace cdref::fuzz::queries {
 struct ObbObb {
   static constexpr int id = 11;
   static constexpr const char* name = "obb-obb";
+  static constexpr CaseDigest case_digest{73, 0xce5d16f281acc470u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "Theorem 3.1 with the true face normals";
   static constexpr const char* describe =

@@ -166,6 +166,7 @@ inline std::vector<Family> list() {
 struct PointTriangle {
   static constexpr int id = 28;
   static constexpr const char* name = "point-triangle";
+  static constexpr CaseDigest case_digest{73, 0x1f52eda1acb0cf14u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

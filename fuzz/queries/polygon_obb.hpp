@@ -17,6 +17,7 @@ namespace cdref::fuzz::queries {
 struct PolygonObb {
   static constexpr int id = 29;
   static constexpr const char* name = "polygon-obb";
+  static constexpr CaseDigest case_digest{45, 0x9b5d0098206d6848u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "Theorem 3.1 with the box's true face normals";
   static constexpr const char* describe =

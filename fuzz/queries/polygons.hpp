@@ -56,6 +56,7 @@ template <bool Ray>
 struct PolygonCast {
   static constexpr int id = Ray ? 23 : 24;
   static constexpr const char* name = Ray ? "ray-polygon-cast" : "segment-polygon-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{45, 0xc4f2835a7cbb433au} : CaseDigest{45, 0x284537f00a075f3du};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe =
@@ -116,6 +117,7 @@ struct PolygonCast {
 struct PolygonPolygon {
   static constexpr int id = 25;
   static constexpr const char* name = "polygon-polygon";
+  static constexpr CaseDigest case_digest{45, 0x1f81512a574ca674u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =
@@ -175,6 +177,7 @@ struct PolygonPolygon {
 struct PolygonBox {
   static constexpr int id = 26;
   static constexpr const char* name = "polygon-box";
+  static constexpr CaseDigest case_digest{45, 0xd73b4b5dbd8c1783u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =
@@ -244,6 +247,7 @@ struct PolygonBox {
 struct PolygonSphere {
   static constexpr int id = 27;
   static constexpr const char* name = "polygon-sphere";
+  static constexpr CaseDigest case_digest{45, 0xdeec5f72e74bfe80u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

@@ -15,6 +15,7 @@ template <bool Ray>
 struct SegmentBox {
   static constexpr int id = Ray ? 9 : 8;
   static constexpr const char* name = Ray ? "ray-box" : "segment-box";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{59, 0xe72b9537eb51d086u} : CaseDigest{59, 0xac574917cad1deb4u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "hit (Algorithm 3.3)";
   static constexpr const char* describe =

@@ -13,6 +13,7 @@ namespace cdref::fuzz::queries {
 struct SegmentSphere {
   static constexpr int id = 3;
   static constexpr const char* name = "segment-sphere";
+  static constexpr CaseDigest case_digest{58, 0xc1375228bd2b12f8u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

@@ -15,6 +15,7 @@ template <bool Tri>
 struct ShapeObb {
   static constexpr int id = Tri ? 13 : 12;
   static constexpr const char* name = Tri ? "triangle-obb" : "segment-obb";
+  static constexpr CaseDigest case_digest = Tri ? CaseDigest{73, 0x94b21a12af452957u} : CaseDigest{59, 0xba6e050d161acaa3u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "Theorem 3.1 with the box's true face normals";
   static constexpr const char* describe =

@@ -12,6 +12,7 @@ namespace cdref::fuzz::queries {
 struct SphereBox {
   static constexpr int id = 7;
   static constexpr const char* name = "sphere-box";
+  static constexpr CaseDigest case_digest{45, 0x9012485dd99872a2u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

@@ -17,6 +17,7 @@ template <bool Ray>
 struct SphereCast {
   static constexpr int id = Ray ? 2 : 1;
   static constexpr const char* name = Ray ? "ray-sphere-cast" : "segment-sphere-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{58, 0xa6c17de0a632fac8u} : CaseDigest{58, 0xfa3c988542bd5a06u};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe =

@@ -14,6 +14,7 @@ namespace cdref::fuzz::queries {
 struct SphereObb {
   static constexpr int id = 16;
   static constexpr const char* name = "sphere-obb";
+  static constexpr CaseDigest case_digest{45, 0x1ef55cf64a22a3f3u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

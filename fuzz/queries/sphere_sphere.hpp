@@ -12,6 +12,7 @@ namespace cdref::fuzz::queries {
 struct SphereSphere {
   static constexpr int id = 0;
   static constexpr const char* name = "sphere-sphere";
+  static constexpr CaseDigest case_digest{45, 0xf9733b8eefc3f067u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe = "Section 3.1.1: book::proximity(A, B) and book::intersect(A, B)";

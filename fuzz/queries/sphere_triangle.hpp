@@ -14,6 +14,7 @@ namespace cdref::fuzz::queries {
 struct SphereTriangle {
   static constexpr int id = 17;
   static constexpr const char* name = "sphere-triangle";
+  static constexpr CaseDigest case_digest{45, 0xefa4af5b63b66545u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

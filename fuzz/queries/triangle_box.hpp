@@ -13,6 +13,7 @@ namespace cdref::fuzz::queries {
 struct TriangleBox {
   static constexpr int id = 10;
   static constexpr const char* name = "triangle-box";
+  static constexpr CaseDigest case_digest{73, 0x7dce537c19ce1839u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "Theorem 3.1 on the polytopes";
   static constexpr const char* describe =

@@ -19,6 +19,7 @@ template <bool Ray>
 struct TriangleCast {
   static constexpr int id = Ray ? 18 : 19;
   static constexpr const char* name = Ray ? "ray-triangle-cast" : "segment-triangle-cast";
+  static constexpr CaseDigest case_digest = Ray ? CaseDigest{61, 0x8f9e5b5b2a05b159u} : CaseDigest{61, 0x7347b8178c28d613u};
   static constexpr const char* cls_name = "hit";
   static constexpr const char* pred_name = "hit";
   static constexpr const char* describe =

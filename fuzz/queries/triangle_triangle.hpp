@@ -18,6 +18,7 @@ namespace cdref::fuzz::queries {
 struct TriangleTriangle {
   static constexpr int id = 22;
   static constexpr const char* name = "triangle-triangle";
+  static constexpr CaseDigest case_digest{61, 0xa5f6e1ce8ca2e5a2u};
   static constexpr const char* cls_name = "intersect";
   static constexpr const char* pred_name = "intersect";
   static constexpr const char* describe =

@@ -172,6 +172,14 @@ struct Implementation {
 };
 enum class Exact { gmpq, epeck };  // the exact number types the fuzz checks compare
 
+// What pins a query's cases: the number of its (family, scale) cells and a digest (FNV-1a over
+// the bit patterns) of the first 16 cases of every cell at seed 1, as tests/test_campaign.cpp
+// computes it. A spec states its own (fuzz/cdref/fuzz/spec.hpp); cells 0: none stated.
+struct CaseDigest {
+  std::size_t cells = 0;
+  std::uint64_t digest = 0;
+};
+
 struct QueryInfo {
   Query q;
   const char* name;
@@ -186,6 +194,7 @@ struct QueryInfo {
   bool mesh_level = false;    // a shot against several triangles: a false negative is a leak
   bool book_is_truth = true;  // the book at an exact type is the truth (false: the book
                               // assumes what the inputs do not give, e.g. orthonormal axes)
+  CaseDigest case_digest{};   // the spec's pin of its cases (none: {})
   // Evaluations on double inputs, each converting them itself (precision 24: float, 53:
   // double, 64: long double; values reported in that type).
   std::function<Answer(int precision, const Inputs&)> book;

@@ -294,6 +294,7 @@ QueryInfo describe() {
   qi.families = Spec::families();
   qi.book_is_truth = Spec::book_is_truth;
   if constexpr (requires { Spec::mesh_level; }) qi.mesh_level = Spec::mesh_level;
+  if constexpr (requires { Spec::case_digest; }) qi.case_digest = Spec::case_digest;
   qi.book = [](int precision, const Inputs& in) {
     return at_precision(precision, [&in]<class F>(F*) { return book_at<Spec, F, F>(in, true); });
   };

@@ -1,4 +1,4 @@
-// tests/test_point_triangle.cpp - point-triangle (Section 3.4), the query on the generic path:
+// tests/queries/test_point_triangle.cpp - point-triangle (Section 3.4), the query on the generic path:
 // its answers checked against CGAL's own exact squared distance from a point to a triangle
 // (CGAL::Simple_cartesian<CGAL::Gmpq>: CGAL's code, exact arithmetic), on every family and
 // scale. The truth API's classification is "the squared distance is 0"; its distance is the
