@@ -111,9 +111,9 @@ inline bool direction_on_grid(const Vec3<double>& dir, int (&grid)[3], std::int6
 // A sum of products, each x a (x a signed 128-bit integer below 2^127 in magnitude, a an int64:
 // below 2^190, a 192-bit magnitude from two 64 x 64 -> 128-bit products) or x y (both 128-bit:
 // below 2^254, from four), added to or subtracted from a 256-bit two's-complement sum, exact
-// while the sum stays below 2^255. add and add_product are always inlined: in a unit where many
-// grid evaluations call them, g++ kept them out of line, and the triangle casts' grid decision
-// (ray_triangle's exact_eval::settle) took 1.2 times as long.
+// while the sum stays below 2^255. add, add_product and the accumulation beneath them are always
+// inlined: in a unit where many grid evaluations call them, g++ kept them out of line, and the
+// triangle casts' grid decision (ray_triangle's exact_eval::settle) took 1.2 times as long.
 struct Sum256 {
   std::uint64_t acc[4] = {0, 0, 0, 0};
   // + x a
@@ -150,7 +150,7 @@ struct Sum256 {
 
  private:
   // acc +- m, limb by limb with the carry or borrow
-  void accumulate(const std::uint64_t (&m)[4], bool neg) {
+  [[gnu::always_inline]] void accumulate(const std::uint64_t (&m)[4], bool neg) {
     UWide carry = 0;
     for (int l = 0; l < 4; ++l) {
       if (!neg) {
