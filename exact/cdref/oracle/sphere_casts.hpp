@@ -178,7 +178,7 @@ int sigma_words_with(const eft::Pair<double> (&s)[3], const eft::Pair<double> (&
   return signed_squares<Mul>(X, L, eps, sg);
 }
 inline int sigma_words(const eft::Pair<double> (&s)[3], const eft::Pair<double> (&r)[3], double rho) {
-  return eft::with_products([&](auto mul) { return sigma_words_with<decltype(mul)>(s, r, rho); });
+  return eft::with_products<true>([&](auto mul) { return sigma_words_with<decltype(mul)>(s, r, rho); });
 }
 
 // The filter's signs, and sigma on double words where the filter leaves it open (the second
