@@ -186,13 +186,15 @@ constexpr bool cpu_fma() {
 // measured faster so ask for it: sphere-triangle's double-word certificates and its first look's
 // classification, triangle-triangle's double-word decisions (filters/triangle_words.hpp), the
 // HotWords formulations (words.hpp), the box casts' double-word classification
-// (filters/box_cast_words.hpp), the sphere casts' double-word sigma (oracle/sphere_casts.hpp) and
-// the oracle's first double on a hit (oracle/enter.hpp). Without it sphere-triangle's oracle took
-// 1.4 times as long near touching, ray-obb-cast's grazing classification 1.23 times, the sphere
-// casts' near-tangent classification 1.08 times and the fan and polygon casts' lambda_enter near
-// edges 1.09-1.10 times (the last three against a build with the FMA copies flattened
-// everywhere, each query group in a unit of its own: `cdref report`, three runs alternated,
-// 2026-12-05). Elsewhere a flattened copy measured no faster, and it costs compile time and code.
+// (filters/box_cast_words.hpp: measured on the oriented box; the axis-aligned box's is flattened
+// alike and was not measured apart), the sphere casts' double-word sigma
+// (oracle/sphere_casts.hpp) and the oracle's first double on a hit (oracle/enter.hpp). Without it
+// sphere-triangle's oracle took 1.4 times as long near touching, ray-obb-cast's grazing
+// classification 1.23 times, the sphere casts' near-tangent classification 1.08 times and the fan
+// and polygon casts' lambda_enter near edges 1.09-1.10 times (the last three against a build with
+// the FMA copies flattened everywhere, each query group in a unit of its own: `cdref report`,
+// three runs alternated, 2026-12-05). Elsewhere a flattened copy measured no faster, and it costs
+// compile time and code.
 #if CDREF_FMA_CLONES
 template <class Fn>
 [[gnu::target("fma"), gnu::flatten, gnu::noinline]] auto fused_call(const Fn& f) {
