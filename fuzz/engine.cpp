@@ -229,6 +229,9 @@ struct Cell {
 };
 
 std::vector<Cell> cells_of(const Spec& spec) {
+  // (a fingerprint read from a file may name families with no query; the checks below name
+  // a family through the first query)
+  if (spec.queries.empty()) throw std::invalid_argument("the campaign names no query");
   std::vector<Cell> cells;
   for (Query q : spec.queries) {
     std::vector<const Family*> fams;

@@ -299,6 +299,17 @@ TEST_CASE("the text form round-trips, and a malformed file is refused by line", 
   REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.rfind("end\n")), "cut.txt"), Catch::Contains("truncated"));
   REQUIRE_THROWS_WITH(deserialize(text.substr(0, text.size() / 2), "cut.txt"), Catch::Contains("cut.txt:"));
   REQUIRE_THROWS_WITH(deserialize("hello\n", "x.txt"), Catch::Contains("x.txt:1: not a cdref results file"));
+
+  // a file's fingerprint may name families and no query: the campaign it describes is refused
+  // by name (Work, and merge_shards behind `cdref merge`), not read through an empty list
+  Saved none = back;
+  none.fingerprint = "seed=3;n=300;queries=;impls=book-float,;families=near-touching,;scales=24,";
+  none.results = {};
+  none.items_done = none.items_total = 0;
+  const Spec described = spec_of_fingerprint(none.fingerprint);
+  REQUIRE(described.queries.empty());
+  REQUIRE_THROWS_WITH(Work(described), Catch::Contains("names no query"));
+  REQUIRE_THROWS_WITH(merge_shards({none}), Catch::Contains("names no query"));
 }
 
 TEST_CASE("an implementation's convention cases are set apart by the engine: counted per cell, never run, never graded",
